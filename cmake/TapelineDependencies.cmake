@@ -1,0 +1,22 @@
+# Dependencies of the header-only modules, shared by the build tree and the installed package
+# config. Everything comes from Debian 12 packages; nothing is downloaded.
+include(CMakeFindDependencyMacro)
+find_dependency(CGAL 5.5)
+find_dependency(Eigen3 3.3 NO_MODULE)
+include(CGAL_Eigen3_support)
+if(NOT TARGET CGAL::Eigen3_support)
+  message(FATAL_ERROR "tapeline: Eigen 3 not found (Debian package libeigen3-dev)")
+endif()
+
+# Debian's libgeographiclib-dev ships a find module but no config file; wrap it in a target.
+if(NOT TARGET tapeline::GeographicLib)
+  find_path(TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR GeographicLib/GeodesicExact.hpp)
+  find_library(TAPELINE_GEOGRAPHICLIB_LIBRARY GeographicLib)
+  if(NOT TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR OR NOT TAPELINE_GEOGRAPHICLIB_LIBRARY)
+    message(FATAL_ERROR "tapeline: GeographicLib not found (Debian package libgeographiclib-dev)")
+  endif()
+  add_library(tapeline::GeographicLib UNKNOWN IMPORTED)
+  set_target_properties(tapeline::GeographicLib PROPERTIES
+    IMPORTED_LOCATION "${TAPELINE_GEOGRAPHICLIB_LIBRARY}"
+    INTERFACE_INCLUDE_DIRECTORIES "${TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR}")
+endif()

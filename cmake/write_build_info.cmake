@@ -1,0 +1,17 @@
+execute_process(COMMAND git describe --always --dirty --abbrev=12
+                WORKING_DIRECTORY ${SOURCE_DIR} OUTPUT_VARIABLE rev
+                OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET RESULT_VARIABLE res)
+if(NOT res EQUAL 0 OR rev STREQUAL "")
+  set(rev "unknown")
+endif()
+set(content "#pragma once\n#define TAPELINE_GIT_REVISION \"${rev}\"\n#define TAPELINE_COMPILER_FLAGS \"${FLAGS}\"\n")
+set(file ${OUT_DIR}/tapeline_build_info.h)
+if(EXISTS ${file})
+  file(READ ${file} old)
+else()
+  set(old "")
+endif()
+if(NOT old STREQUAL content)
+  file(MAKE_DIRECTORY ${OUT_DIR})
+  file(WRITE ${file} "${content}")
+endif()
