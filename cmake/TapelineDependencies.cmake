@@ -1,6 +1,7 @@
 # Dependencies of the header-only modules, shared by the build tree and the installed package
 # config. Everything comes from Debian 12 packages; nothing is downloaded.
 include(CMakeFindDependencyMacro)
+find_dependency(Threads)
 find_dependency(CGAL 5.5)
 find_dependency(Eigen3 3.3 NO_MODULE)
 include(CGAL_Eigen3_support)
