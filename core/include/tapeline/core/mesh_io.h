@@ -1,0 +1,183 @@
+// Reading triangle meshes from OFF, OBJ, PLY and STL with precise rejections and reported repairs.
+//
+// Small format readers produce a polygon soup and say which line or element is broken (CGAL's
+// readers only return a bool). The soup-to-mesh work uses CGAL Polygon Mesh Processing:
+// orient_polygon_soup splits non-manifold vertices and edges (Guéziec, Taubin, Lazarus, Horn,
+// "Cutting and stitching: converting sets of polygons to manifold surfaces", IEEE TVCG 2001),
+// triangulate_faces cuts polygons, connected_components and extract_boundary_cycles measure the
+// result. Every mesh vertex remembers the input vertex it came from, because users address
+// vertices by their index in the file. See core/README.md for every check and what happens.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/core/internal/build_mesh.h>
+#include <tapeline/core/internal/read_obj.h>
+#include <tapeline/core/internal/read_off.h>
+#include <tapeline/core/internal/read_ply.h>
+#include <tapeline/core/internal/read_stl.h>
+#include <tapeline/core/internal/soup_repair.h>
+#include <tapeline/core/internal/text_scan.h>
+#include <tapeline/core/mesh_io_types.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tapeline {
+
+/// A mesh read from a file or a soup, with the map back to the input's vertex numbering.
+/// Input vertices and faces are numbered from 0 in file order (OBJ's vertex `1` is vertex 0; for
+/// STL, vertex i is the i-th distinct point in order of first appearance, face i is facet i).
+/// LoadedMesh<CGAL::Polyhedron_3<...>> must not be copied: a Polyhedron copy has new handles.
+template <class TriangleMesh>
+struct LoadedMesh {
+    using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+    using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+    TriangleMesh mesh;
+    std::vector<vertex_descriptor> vertices;  // all mesh vertices, in mesh order
+    std::vector<std::size_t> input_index;     // parallel to `vertices`: input vertex each came from
+    std::size_t input_vertex_count = 0;
+    std::vector<face_descriptor> faces;         // all mesh faces, in mesh order
+    std::vector<std::size_t> face_input_index;  // parallel to `faces`: input face each came from
+    /// Positions in `vertices` of the mesh vertices representing input vertex i are
+    /// copies[copies_begin[i]] .. copies[copies_begin[i + 1] - 1]; a duplicate vertex that was
+    /// merged shares those of the vertex it was merged into. Filled by the loader.
+    std::vector<std::size_t> copies_begin, copies;
+    MeshReport report;
+
+    /// Mesh vertices that represent input vertex i (several after a non-manifold split, none if
+    /// it was unreferenced, those of its twin if it was merged as a duplicate); throws InvalidInput
+    /// naming the file if i >= input_vertex_count.
+    std::vector<vertex_descriptor> mesh_vertices_of(std::size_t input_vertex) const {
+        if (input_vertex >= input_vertex_count) {
+            throw InvalidInput(report.file + ": vertex " + std::to_string(input_vertex) +
+                               " does not exist (the input has " +
+                               std::to_string(input_vertex_count) + " vertices)");
+        }
+        std::vector<vertex_descriptor> out;
+        if (copies_begin.size() == input_vertex_count + 1) {
+            for (std::size_t k = copies_begin[input_vertex]; k < copies_begin[input_vertex + 1];
+                 ++k) {
+                out.push_back(vertices[copies[k]]);
+            }
+        } else {
+            for (std::size_t k = 0; k < input_index.size(); ++k) {
+                if (input_index[k] == input_vertex) {
+                    out.push_back(vertices[k]);
+                }
+            }
+        }
+        return out;
+    }
+
+    /// Per-mesh-vertex values (indexed like `vertices`) -> per-input-vertex values: minimum over
+    /// the copies, +infinity for input vertices with no mesh vertex.
+    std::vector<double> to_input_order(const std::vector<double>& per_mesh_vertex) const {
+        if (per_mesh_vertex.size() != vertices.size()) {
+            throw InvalidInput(report.file + ": to_input_order needs one value per mesh vertex (" +
+                               std::to_string(vertices.size()) + "), got " +
+                               std::to_string(per_mesh_vertex.size()));
+        }
+        std::vector<double> out(input_vertex_count, std::numeric_limits<double>::infinity());
+        // A NaN copy wins over finite ones: hiding a failed value would be worse.
+        auto take = [](double& slot, double v) {
+            if (std::isnan(v) || v < slot) {
+                slot = v;
+            }
+        };
+        if (copies_begin.size() == input_vertex_count + 1) {
+            for (std::size_t i = 0; i < input_vertex_count; ++i) {
+                for (std::size_t k = copies_begin[i]; k < copies_begin[i + 1]; ++k) {
+                    take(out[i], per_mesh_vertex[copies[k]]);
+                }
+            }
+        } else {
+            for (std::size_t k = 0; k < per_mesh_vertex.size(); ++k) {
+                take(out[input_index[k]], per_mesh_vertex[k]);
+            }
+        }
+        return out;
+    }
+};
+
+/// Reads a mesh file into a polygon soup with the file's own numbering; the format comes from the
+/// extension (.off, .obj, .ply, .stl, any case). Rejects (InvalidInput, naming the file and the
+/// line or element) missing, empty, truncated or unparsable files, NaN/Inf coordinates, faces
+/// with fewer than 3 vertices and out-of-range indices.
+inline PolygonSoup read_polygon_soup(const std::string& path) {
+    const std::string ext = internal::lower_extension(path);
+    if (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") {
+        throw InvalidInput(path + ": unknown mesh format '" + ext +
+                           "' (expected .off, .obj, .ply or .stl)");
+    }
+    const std::string bytes = internal::load_file(path);
+    if (ext == ".off") {
+        return internal::read_off(path, bytes);
+    }
+    if (ext == ".obj") {
+        return internal::read_obj(path, bytes);
+    }
+    if (ext == ".ply") {
+        return internal::read_ply(path, bytes);
+    }
+    return internal::read_stl(path, bytes);
+}
+
+namespace internal {
+
+inline void check_options(const std::string& name, const MeshLoadOptions& options) {
+    if (!(options.needle_angle_degrees >= 0.0 && options.needle_angle_degrees <= 60.0)) {
+        throw InvalidInput(name + ": needle_angle_degrees must be between 0 and 60, got " +
+                           std::to_string(options.needle_angle_degrees));
+    }
+}
+
+template <class TriangleMesh>
+void load_soup_into(const PolygonSoup& soup, const MeshLoadOptions& options,
+                    LoadedMesh<TriangleMesh>& result) {
+    result.report.file = soup.file;
+    result.report.format = soup.format;
+    result.report.input_vertices = soup.points.size();
+    result.report.input_faces = soup.faces.size();
+    result.input_vertex_count = soup.points.size();
+    PreparedSoup prepared = prepare_soup(soup, options, result.report);
+    build_loaded_mesh(std::move(prepared), soup, options, result);
+}
+
+}  // namespace internal
+
+/// Reads a triangle mesh (CGAL MutableFaceGraph, e.g. CGAL::Surface_mesh) from OFF, OBJ, PLY or
+/// STL; validates, repairs (or, strict, rejects) and reports as described in core/README.md.
+template <class TriangleMesh>
+LoadedMesh<TriangleMesh> read_triangle_mesh(const std::string& path,
+                                            const MeshLoadOptions& options = {}) {
+    internal::check_options(path, options);
+    LoadedMesh<TriangleMesh> result;  // filled in place: Polyhedron handles do not survive a copy
+    const PolygonSoup soup = read_polygon_soup(path);
+    internal::load_soup_into(soup, options, result);
+    return result;
+}
+
+/// Same validation and repair on an in-memory polygon soup (`name` is used in messages).
+template <class TriangleMesh>
+LoadedMesh<TriangleMesh> triangle_mesh_from_soup(const std::vector<std::array<double, 3>>& points,
+                                                 const std::vector<std::vector<std::size_t>>& faces,
+                                                 const std::string& name,
+                                                 const MeshLoadOptions& options = {}) {
+    internal::check_options(name, options);
+    LoadedMesh<TriangleMesh> result;
+    PolygonSoup soup;
+    soup.file = name;
+    soup.format = "soup";
+    soup.points = points;
+    soup.faces = faces;
+    internal::load_soup_into(soup, options, result);
+    return result;
+}
+
+}  // namespace tapeline
