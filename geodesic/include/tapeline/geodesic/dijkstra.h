@@ -1,0 +1,128 @@
+// Graph distances along mesh edges: E. W. Dijkstra, "A note on two problems in connexion with
+// graphs", Numerische Mathematik 1, 1959, run with Boost.Graph on the mesh's own
+// boost::graph_traits (CGAL's BGL adaptors), with Euclidean edge lengths as weights.
+//
+// An edge path is a path on the surface, so these distances are upper bounds of the exact
+// polyhedral ones (on a regular triangulation they overestimate by a few percent, and the error
+// does not vanish under refinement). Face-location sources seed the three corners of their face
+// with the straight-line distance from the point, which is exact within the face.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/geodesic/geodesic_types.h>
+#include <tapeline/geodesic/internal/mesh_checks.h>
+#include <tapeline/geodesic/internal/named_parameters.h>
+#include <tapeline/geodesic/sources.h>
+
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+#include <boost/property_map/function_property_map.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+namespace tapeline::geodesic {
+
+/// Dijkstra distances on the edge graph from a source set into `distances` (+infinity when
+/// unreachable). report.query_seconds is the whole run; there is no pre-computation.
+template <class TriangleMesh, class VertexDistanceMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+DistanceReport dijkstra_distances(const TriangleMesh& tm, const SourceSet<TriangleMesh>& sources,
+                                  VertexDistanceMap distances, const DijkstraOptions& = {},
+                                  const NamedParameters& np = CGAL::parameters::default_values()) {
+    using P = internal::MeshParameters<TriangleMesh, NamedParameters>;
+    using GT = boost::graph_traits<TriangleMesh>;
+    using vertex_descriptor = typename GT::vertex_descriptor;
+    using edge_descriptor = typename GT::edge_descriptor;
+    const char* w = "dijkstra";
+
+    const auto vpm = P::vertex_point_map(tm, np);
+    const internal::MeshIndex<TriangleMesh, typename P::VertexIndexMap, typename P::FaceIndexMap>
+        index(tm, P::vertex_index_map(tm, np), P::face_index_map(tm, np), w);
+    internal::check_triangle_mesh(tm, vpm, index.vertex_index_map(), index.face_index_map(), w);
+    if (sources.empty())
+        throw InvalidInput(std::string(w) + ": the source set is empty");
+
+    const std::size_t n = index.vertex_count();
+    std::vector<double> d(n, internal::kInfinity);
+    auto point_distance = [](const auto& p, const auto& q) {
+        const double dx = CGAL::to_double(p.x()) - CGAL::to_double(q.x());
+        const double dy = CGAL::to_double(p.y()) - CGAL::to_double(q.y());
+        const double dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
+        return std::sqrt(dx * dx + dy * dy + dz * dz);
+    };
+    // Seeds: vertex sources at 0, face-location sources at their straight-line distance to the
+    // corners of their face (checked before any work).
+    for (auto v : sources.vertices)
+        d[index.checked(v, "source vertex")] = 0.0;
+    for (const auto& l : sources.locations) {
+        const auto clean = index.checked(l, "source face location");
+        const auto fv = internal::face_vertices(clean.first, tm);
+        double xyz[3] = {0, 0, 0};
+        for (int k = 0; k < 3; ++k) {
+            const auto& p = get(vpm, fv[k]);
+            xyz[0] += clean.second[k] * CGAL::to_double(p.x());
+            xyz[1] += clean.second[k] * CGAL::to_double(p.y());
+            xyz[2] += clean.second[k] * CGAL::to_double(p.z());
+        }
+        struct Xyz {
+            double a, b, c;
+            double x() const { return a; }
+            double y() const { return b; }
+            double z() const { return c; }
+        } point{xyz[0], xyz[1], xyz[2]};
+        for (int k = 0; k < 3; ++k) {
+            double& dk = d[index.index(fv[k])];
+            // A location on a corner seeds exactly 0 there (clean coordinates are exact).
+            const double seed =
+                clean.second[k] == 1.0 ? 0.0 : point_distance(point, get(vpm, fv[k]));
+            dk = std::min(dk, seed);
+        }
+    }
+
+    const auto t0 = internal::Clock::now();
+    const internal::Components components = internal::connected_components(tm, index);
+    std::vector<vertex_descriptor> seeds;
+    for (std::size_t i = 0; i < n; ++i)
+        // Each seed once (the heap must not hold duplicates); an isolated vertex has no
+        // out-edges to walk (halfedge(v) is null) and keeps its 0.
+        if (d[i] < internal::kInfinity && !components.isolated[i])
+            seeds.push_back(index.vertex(i));
+
+    auto weight = boost::make_function_property_map<edge_descriptor, double>(
+        [&tm, vpm, &point_distance](const edge_descriptor& e) {
+            const auto h = halfedge(e, tm);
+            return point_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)));
+        });
+    auto distance_map = boost::make_iterator_property_map(d.begin(), index.vertex_index_map());
+    // The no_init variant keeps the seeded distances (the plain one would reset them to 0).
+    boost::dijkstra_shortest_paths_no_init(
+        tm, seeds.begin(), seeds.end(), boost::dummy_property_map(), distance_map, weight,
+        index.vertex_index_map(), std::less<double>(), std::plus<double>(), 0.0,
+        boost::default_dijkstra_visitor());
+
+    DistanceReport report;
+    report.method = w;
+    report.vertices = n;
+    report.faces = index.face_count();
+    report.sources = sources.size();
+    report.components = components.count;
+    report.unreachable = internal::write_distances(d, index, distances, w);
+    report.query_seconds = internal::seconds_since(t0);
+    return report;
+}
+
+template <class TriangleMesh, class VertexDistanceMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+DistanceReport dijkstra_distances(
+    const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
+    VertexDistanceMap distances, const DijkstraOptions& options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
+    return dijkstra_distances(tm, SourceSet<TriangleMesh>(source), distances, options, np);
+}
+
+}  // namespace tapeline::geodesic

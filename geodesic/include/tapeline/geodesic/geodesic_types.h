@@ -1,0 +1,78 @@
+// Options and reports of the baseline geodesic methods (exact CGAL, heat, Dijkstra).
+//
+// Light header without CGAL (DESIGN.md §3): loggers, benchmark drivers and test facades include it
+// to read and print what an algorithm did without paying for the CGAL templates.
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tapeline::geodesic {
+
+/// What one distance computation did. Times are wall-clock seconds.
+struct DistanceReport {
+    std::string method;           ///< "exact_cgal", "heat", "heat_idt", "dijkstra"
+    std::size_t vertices = 0;     ///< vertices of the input mesh
+    std::size_t faces = 0;        ///< faces of the input mesh
+    std::size_t sources = 0;      ///< source points (vertices + face locations) as given
+    std::size_t unreachable = 0;  ///< vertices given +infinity (other component, isolated vertex)
+    std::size_t components = 0;   ///< connected components of the mesh (isolated vertices count)
+    /// Source-independent work: SMSP object construction, heat factorisation (0 for Dijkstra).
+    double pre_seconds = 0;
+    /// Source-dependent work: SMSP sources + sequence tree + reading, heat solves, Dijkstra run.
+    double query_seconds = 0;
+    std::string status = "ok";  ///< "ok" or a short reason when a non-fatal guard fired
+    std::string message;        ///< human-readable detail for status
+};
+
+/// Surface_mesh_shortest_path has no behavioural knob in CGAL 5.5; the struct exists so that the
+/// call shape is the same for every method and options can be logged.
+struct ExactCgalOptions {};
+
+/// How several source vertices are handled by the heat method.
+enum class HeatMultiSource {
+    /// One heat solve per source vertex, then the minimum per vertex. Costs one back-substitution
+    /// pair per source but is immune to the multi-source normalisation bug of CGAL 5.5
+    /// `Heat_method_3` (CGAL PR #9565: distances ~0.5x the truth near the source set).
+    min_of_single_sources,
+    /// One solve with all sources, as CGAL 5.5 does it (fast, biased; kept to measure the bias).
+    cgal_joint,
+};
+
+inline const char* to_string(HeatMultiSource m) {
+    return m == HeatMultiSource::cgal_joint ? "cgal_joint" : "min_of_single_sources";
+}
+
+/// Heat method (Crane, Weischedel, Wardetzky 2013) as CGAL 5.5 `Heat_method_3` exposes it.
+/// CGAL 5.5 fixes the time step to t = h^2 (h = mean edge length of the component) and the linear
+/// solver to Eigen's SimplicialLDLT; neither is a knob here.
+struct HeatOptions {
+    /// Build the Laplacian on the intrinsic Delaunay triangulation (Fisher et al. 2006), CGAL's
+    /// `Intrinsic_Delaunay` mode; otherwise the cotan Laplacian of the input (`Direct`).
+    bool intrinsic_delaunay = false;
+    HeatMultiSource multi_source = HeatMultiSource::min_of_single_sources;
+    /// A face is degenerate when its relative triangle-inequality slack
+    /// min(b + c - a) / (a + b + c) is <= this value. Degenerate faces make the iDT edge flips loop
+    /// forever (CGAL#5010) and the cotan weights NaN; they are rejected with InvalidInput.
+    double degenerate_face_tolerance = 1e-12;
+    /// Only for the Direct mode: false skips the degenerate-face check and lets CGAL run (used to
+    /// observe what plain heat does on zero-area faces; a NaN result is then a SolverFailure).
+    /// The intrinsic-Delaunay mode always checks, since it would not terminate.
+    bool reject_degenerate_faces = true;
+};
+
+/// Dijkstra on the edge graph has no behavioural knob; see ExactCgalOptions.
+struct DijkstraOptions {};
+
+/// A shortest path on the surface: polyline from the start point to the end point.
+/// An unreachable end point is an empty polyline with length +infinity.
+template <class Point>
+struct GeodesicPath {
+    std::vector<Point> points;
+    double length = std::numeric_limits<double>::infinity();
+    bool found() const { return !points.empty(); }
+};
+
+}  // namespace tapeline::geodesic
