@@ -3,7 +3,7 @@
 #include <tapeline_test/geodesic.h>
 
 #include <tapeline/core/analytic_geodesics.h>
-#include <tapeline/core/internal/analytic_surface_soup.h>
+#include <tapeline/core/analytic_surface_types.h>
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>

@@ -2,7 +2,7 @@
 // tapeline_test_support_surfaces, so test files include gtest and this header only.
 #pragma once
 
-#include <tapeline/core/internal/analytic_surface_soup.h>
+#include <tapeline/core/analytic_surface_types.h>
 
 #include <cstddef>
 

@@ -15,7 +15,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
-#include <tapeline/core/internal/analytic_surface_soup.h>
+#include <tapeline/core/analytic_surface_types.h>
 
 #include <GeographicLib/GeodesicExact.hpp>
 

@@ -2,7 +2,7 @@
 //
 // This header is the light half of <tapeline/core/analytic_surfaces.h>: test facades, loggers and
 // <tapeline/core/analytic_geodesics.h> include it without paying for CGAL (DESIGN.md §5). Users
-// include <tapeline/core/analytic_surfaces.h>.
+// include <tapeline/core/analytic_surfaces.h> for meshes, or this header for specs and soups.
 //
 // Surfaces: icosphere (Loop-style midpoint subdivision of the icosahedron, midpoints projected to
 // the unit sphere), UV sphere, ellipsoid (icosphere mapped by (x,y,z) -> (Ax,By,Cz)), torus and

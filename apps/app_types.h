@@ -1,0 +1,59 @@
+// Types shared by the command-line tool's translation units.
+#pragma once
+
+#include <tapeline/core/analytic_surfaces.h>
+#include <tapeline/core/mesh_io.h>
+#include <tapeline/geodesic/geodesic_types.h>
+#include <tapeline/geodesic/sources.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/property_map.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tapeline::app {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Vertex = Mesh::Vertex_index;
+using Sources = geodesic::SourceSet<Mesh>;
+
+/// A mesh as the tool received it: from a file (with the input-order vertex mapping) or generated
+/// from an analytic surface spec (identity mapping, exact smooth distances available).
+struct InputMesh {
+    LoadedMesh<Mesh> loaded;
+    std::optional<SurfaceSpec> spec;
+    std::string name;    // spec string or file name, as it appears in benchmark lines
+    std::string family;  // groups sizes of one surface for scaling fits
+    std::string file;    // empty for generated surfaces
+};
+
+InputMesh load_input_mesh_file(const std::string& path, bool strict);
+InputMesh make_input_surface(const std::string& spec_text, std::uint64_t seed = 1);
+
+/// Distances per mesh vertex (index = Surface_mesh vertex index) and what the method reported.
+struct MethodResult {
+    std::vector<double> distances;
+    geodesic::DistanceReport report;
+};
+
+/// The distance methods the tool knows, in the order they are listed in --help.
+const std::vector<std::string>& distance_methods();
+/// Runs `method` ("exact-cgal", "heat", "heat-idt", "dijkstra"); throws InvalidInput for an
+/// unknown name or a source the method cannot take.
+MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
+                                 const Sources& sources);
+
+// One entry point per method family, each in its own translation unit (compile in parallel).
+MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources);
+MethodResult run_heat(const Mesh& mesh, const Sources& sources, bool intrinsic_delaunay);
+MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
+
+/// Peak and current resident set size of this process, in bytes (0 when unknown).
+std::size_t current_rss_bytes();
+
+}  // namespace tapeline::app

@@ -1,0 +1,199 @@
+// `tapeline geodesic distances` and `tapeline geodesic path`.
+#include "app_types.h"
+#include "commands.h"
+#include "output.h"
+
+#include <tapeline/core/atomic_write.h>
+#include <tapeline/core/errors.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace tapeline::app {
+
+// Defined in geodesic_path.cpp (keeps SMSP's path machinery out of this translation unit).
+nlohmann::json exact_cgal_path_json(const Mesh& mesh, Vertex from, Vertex to);
+
+namespace {
+
+struct MeshArgs {
+    std::string mesh;
+    std::string surface;
+    bool strict = false;
+};
+
+void add_mesh_args(CLI::App* cmd, MeshArgs& args) {
+    auto* file = cmd->add_option("mesh", args.mesh, "Triangle mesh (.off, .obj, .ply, .stl)");
+    auto* surface = cmd->add_option("--surface", args.surface,
+                                    "Analytic surface spec instead of a file, e.g. icosphere:4");
+    file->excludes(surface);
+    surface->excludes(file);
+    cmd->add_flag("--strict", args.strict,
+                  "Reject polygons, duplicates and non-manifold elements instead of repairing");
+}
+
+InputMesh load(const MeshArgs& args) {
+    if (args.mesh.empty() && args.surface.empty()) {
+        throw InvalidInput("give a mesh file or --surface SPEC");
+    }
+    return args.surface.empty() ? load_input_mesh_file(args.mesh, args.strict)
+                                : make_input_surface(args.surface);
+}
+
+// "F:b0,b1,b2" -> a face location on `mesh`.
+CGAL::Polygon_mesh_processing::Face_location<Mesh, double> parse_face_point(const std::string& text,
+                                                                            const Mesh& mesh) {
+    const std::string what = "--source-point '" + text + "'";
+    const auto colon = text.find(':');
+    if (colon == std::string::npos) {
+        throw InvalidInput(what + ": expected FACE:B0,B1,B2 (face index, barycentric coordinates)");
+    }
+    std::size_t face = 0;
+    std::array<double, 3> bary{};
+    try {
+        std::size_t used = 0;
+        face = std::stoul(text.substr(0, colon), &used);
+        if (used != colon) {
+            throw std::invalid_argument("face");
+        }
+        std::stringstream rest(text.substr(colon + 1));
+        char c1 = 0, c2 = 0;
+        if (!(rest >> bary[0] >> c1 >> bary[1] >> c2 >> bary[2]) || c1 != ',' || c2 != ',' ||
+            !(rest >> std::ws).eof()) {
+            throw std::invalid_argument("bary");
+        }
+    } catch (const std::exception&) {
+        throw InvalidInput(what + ": expected FACE:B0,B1,B2 (face index, barycentric coordinates)");
+    }
+    if (face >= num_faces(mesh)) {
+        throw InvalidInput(what + ": face " + std::to_string(face) +
+                           " does not exist (the mesh has " + std::to_string(num_faces(mesh)) +
+                           " faces)");
+    }
+    const double sum = bary[0] + bary[1] + bary[2];
+    if (!std::isfinite(sum) || std::abs(sum - 1.0) > 1e-6 ||
+        *std::min_element(bary.begin(), bary.end()) < -1e-12) {
+        throw InvalidInput(what + ": barycentric coordinates must be >= 0 and sum to 1");
+    }
+    return {Mesh::Face_index(static_cast<Mesh::size_type>(face)), bary};
+}
+
+std::vector<Vertex> vertices_of(const InputMesh& input, long id, const std::string& option) {
+    if (id < 0) {
+        throw InvalidInput(option + " " + std::to_string(id) + ": vertex ids start at 0");
+    }
+    std::vector<Vertex> result = input.loaded.mesh_vertices_of(static_cast<std::size_t>(id));
+    if (result.empty()) {
+        throw InvalidInput(option + " " + std::to_string(id) + ": vertex " + std::to_string(id) +
+                           " of " + input.name + " is not used by any face");
+    }
+    return result;
+}
+
+struct DistancesArgs {
+    MeshArgs mesh;
+    std::vector<long> sources;
+    std::vector<std::string> source_points;
+    std::string method = "exact-cgal";
+    std::string out;
+};
+
+void run_distances(const DistancesArgs& args) {
+    InputMesh input = load(args.mesh);
+    for (const std::string& w : input.loaded.report.warnings) {
+        std::cerr << "tapeline: warning: " << w << '\n';
+    }
+    Sources sources;
+    for (long id : args.sources) {
+        for (Vertex v : vertices_of(input, id, "--source")) {
+            sources.vertices.push_back(v);
+        }
+    }
+    for (const std::string& p : args.source_points) {
+        sources.locations.push_back(parse_face_point(p, input.loaded.mesh));
+    }
+    if (sources.vertices.empty() && sources.locations.empty()) {
+        throw InvalidInput("give at least one --source V or --source-point F:B0,B1,B2");
+    }
+    MethodResult result = run_distance_method(args.method, input.loaded.mesh, sources);
+    const std::vector<double> in_order = input.loaded.to_input_order(result.distances);
+    write_distances(args.out, input.loaded.mesh, result.distances, in_order);
+    double max_d = 0;
+    for (double d : result.distances) {
+        if (std::isfinite(d)) {
+            max_d = std::max(max_d, d);
+        }
+    }
+    std::cout << "wrote " << args.out << ": " << args.method << " on " << input.name << " ("
+              << num_vertices(input.loaded.mesh) << " vertices), pre " << result.report.pre_seconds
+              << " s, query " << result.report.query_seconds << " s, max distance " << max_d
+              << ", unreachable " << result.report.unreachable << '\n';
+}
+
+struct PathArgs {
+    MeshArgs mesh;
+    long from = -1;
+    long to = -1;
+    std::string method = "exact-cgal";
+    std::string out;
+};
+
+void run_path(const PathArgs& args) {
+    InputMesh input = load(args.mesh);
+    const Vertex from = vertices_of(input, args.from, "--from").front();
+    const Vertex to = vertices_of(input, args.to, "--to").front();
+    const auto start = std::chrono::steady_clock::now();
+    nlohmann::json j = exact_cgal_path_json(input.loaded.mesh, from, to);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    j["method"] = args.method;
+    j["mesh"] = input.name;
+    j["from"] = args.from;
+    j["to"] = args.to;
+    j["seconds"] = seconds;
+    write_file_atomically(args.out, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    std::cout << "wrote " << args.out << ": " << args.method << " path of length "
+              << j["length"].dump() << " with " << j["points"].size() << " points\n";
+}
+
+}  // namespace
+
+void register_geodesic_commands(CLI::App& app) {
+    CLI::App* geo = app.add_subcommand("geodesic", "Geodesic distances and paths on a mesh");
+    geo->require_subcommand(1);
+
+    auto d = std::make_shared<DistancesArgs>();
+    CLI::App* dist = geo->add_subcommand(
+        "distances", "Geodesic distance from one or more sources to every vertex");
+    add_mesh_args(dist, d->mesh);
+    dist->add_option("--source", d->sources, "Source vertex (index in the input file; repeatable)");
+    dist->add_option(
+        "--source-point", d->source_points,
+        "Source point FACE:B0,B1,B2 in a face of the loaded triangle mesh (repeatable)");
+    dist->add_option("--method", d->method, "Method (default exact-cgal)")
+        ->check(CLI::IsMember(distance_methods()));
+    dist->add_option("--out,-o", d->out,
+                     "Output: .txt (one distance per input vertex per line, inf if unreachable) "
+                     "or .ply (mesh coloured by distance)")
+        ->required();
+    dist->callback([d] { run_distances(*d); });
+
+    auto p = std::make_shared<PathArgs>();
+    CLI::App* path = geo->add_subcommand("path", "Shortest geodesic path between two vertices");
+    add_mesh_args(path, p->mesh);
+    path->add_option("--from", p->from, "Start vertex (index in the input file)")->required();
+    path->add_option("--to", p->to, "End vertex (index in the input file)")->required();
+    path->add_option("--method", p->method, "Method (default exact-cgal)")
+        ->check(CLI::IsMember({"exact-cgal"}));
+    path->add_option("--out,-o", p->out, "Output JSON: points and length")->required();
+    path->callback([p] { run_path(*p); });
+}
+
+}  // namespace tapeline::app

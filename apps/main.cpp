@@ -1,0 +1,48 @@
+// `tapeline`: the command-line tool. Subcommand families are registered by their own translation
+// units; every failure becomes one line on stderr and a non-zero exit (DESIGN.md §4).
+#include "commands.h"
+
+#include <tapeline/core/errors.h>
+
+#include <CLI/CLI.hpp>
+
+#include <exception>
+#include <iostream>
+#include <new>
+#include <string>
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Tapeline: geodesics on triangle meshes and point sets for virtual clothing.\n"
+        "Run `tapeline SUBCOMMAND --help` for the options of each command."};
+    app.require_subcommand(1);
+    app.set_help_all_flag("--help-all", "Show the help of every subcommand");
+    // One line per failure, like every other error of the tool.
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {
+        return "tapeline: error: " + std::string(e.what()) + " (see --help)\n";
+    });
+    tapeline::app::register_mesh_commands(app);
+    tapeline::app::register_geodesic_commands(app);
+    tapeline::app::register_bench_commands(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    } catch (const tapeline::InvalidInput& e) {
+        std::cerr << "tapeline: error: " << e.what() << '\n';
+        return 2;
+    } catch (const tapeline::TopologyError& e) {
+        std::cerr << "tapeline: error: " << e.what() << '\n';
+        return 3;
+    } catch (const tapeline::SolverFailure& e) {
+        std::cerr << "tapeline: solver failure: " << e.what() << '\n';
+        return 4;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "tapeline: error: out of memory\n";
+        return 5;
+    } catch (const std::exception& e) {
+        std::cerr << "tapeline: internal error: " << e.what() << '\n';
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,33 @@
+#include "app_types.h"
+
+#include <tapeline/core/errors.h>
+
+namespace tapeline::app {
+
+const std::vector<std::string>& distance_methods() {
+    static const std::vector<std::string> methods = {"exact-cgal", "heat", "heat-idt", "dijkstra"};
+    return methods;
+}
+
+MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
+                                 const Sources& sources) {
+    if (method == "exact-cgal") {
+        return run_exact_cgal(mesh, sources);
+    }
+    if (method == "heat") {
+        return run_heat(mesh, sources, false);
+    }
+    if (method == "heat-idt") {
+        return run_heat(mesh, sources, true);
+    }
+    if (method == "dijkstra") {
+        return run_dijkstra(mesh, sources);
+    }
+    std::string known;
+    for (const std::string& m : distance_methods()) {
+        known += (known.empty() ? "" : ", ") + m;
+    }
+    throw InvalidInput("unknown method '" + method + "' (known: " + known + ")");
+}
+
+}  // namespace tapeline::app

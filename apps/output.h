@@ -1,0 +1,23 @@
+// Writing per-vertex results the way the tool promises: `.txt` one value per input vertex per
+// line (input order), `.ply` a coloured mesh; always atomically.
+#pragma once
+
+#include "app_types.h"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tapeline::app {
+
+std::vector<std::array<double, 3>> mesh_points(const Mesh& mesh);
+
+/// `per_mesh_vertex` is indexed by mesh vertex, `per_input_vertex` by input-file vertex.
+void write_distances(const std::string& path, const Mesh& mesh,
+                     const std::vector<double>& per_mesh_vertex,
+                     const std::vector<double>& per_input_vertex);
+
+/// Lower-case extension of a path including the dot ("" if none).
+std::string extension_of(const std::string& path);
+
+}  // namespace tapeline::app

@@ -1,0 +1,116 @@
+#!/usr/bin/env bash
+# Drives the `tapeline` tool as a user does: exit codes, one-line messages, output files, and
+# agreement of its outputs with independent truth (analytic distances, the exact path length).
+#   run_cli_tests.sh TAPELINE_BINARY SOURCE_DIR WORK_DIR
+set -u
+bin=$1; root=$2; work=$3
+py=/usr/bin/python3
+rm -rf "$work"; mkdir -p "$work"; cd "$work"
+passed=0; failed=0
+ok()   { passed=$((passed+1)); echo "ok   - $1"; }
+fail() { failed=$((failed+1)); echo "FAIL - $1"; }
+
+# expect_fail NAME PATTERN CMD...: non-zero exit, exactly one stderr line matching PATTERN.
+expect_fail() {
+  local name=$1 pattern=$2; shift 2
+  "$@" >out.txt 2>err.txt; local rc=$?
+  if [ $rc -ne 0 ] && grep -qE -- "$pattern" err.txt && [ "$(wc -l <err.txt)" -eq 1 ]; then ok "$name"
+  else fail "$name (exit $rc, stderr: $(head -c 300 err.txt))"; fi
+}
+expect_ok() {
+  local name=$1; shift
+  if "$@" >out.txt 2>err.txt; then ok "$name"; else fail "$name: $(head -c 300 err.txt)"; fi
+}
+
+spot="$root/data/spot.obj"
+
+# --- help ---------------------------------------------------------------------------------------
+for sub in "" "mesh generate" "mesh check" "geodesic distances" "geodesic path" "bench geodesic"; do
+  # shellcheck disable=SC2086
+  if "$bin" $sub --help >help.txt 2>&1 && grep -q "Usage" help.txt; then ok "help: tapeline $sub"
+  else fail "help: tapeline $sub"; fi
+done
+
+# --- distances by every method ------------------------------------------------------------------
+for m in exact-cgal heat heat-idt dijkstra; do
+  expect_ok "distances $m on spot" "$bin" geodesic distances "$spot" --source 0 --method $m --out d_$m.txt
+  if [ "$(wc -l <d_$m.txt)" -eq 2930 ] && [ "$(head -1 d_$m.txt)" = "0" ]; then ok "distances $m: 2930 lines, source at 0"
+  else fail "distances $m: $(wc -l <d_$m.txt) lines, first '$(head -1 d_$m.txt)'"; fi
+done
+# Dijkstra walks along edges, so it is never shorter than the exact polyhedral distance.
+if paste d_dijkstra.txt d_exact-cgal.txt | awk '{ if ($1 < $2 * (1 - 1e-12)) bad++ } END { exit bad > 0 }'; then
+  ok "dijkstra >= exact-cgal on every vertex"; else fail "dijkstra shorter than exact somewhere"; fi
+expect_ok "distances to a coloured PLY" "$bin" geodesic distances "$spot" --source 0 --out d.ply
+if head -c 3 d.ply | grep -q ply && grep -aq "property float distance" d.ply && grep -aq "property uchar red" d.ply; then
+  ok "PLY has the distance and colours"; else fail "PLY header"; fi
+expect_ok "several sources and a face point" "$bin" geodesic distances "$spot" --source 0 --source 100 \
+  --source-point 5:0.2,0.3,0.5 --method dijkstra --out multi.txt
+
+# --- bad input: one line, non-zero exit, nothing written ------------------------------------------
+expect_fail "unknown method" "heatx" "$bin" geodesic distances "$spot" --source 0 --method heatx --out x.txt
+expect_fail "vertex out of range" "99999" "$bin" geodesic distances "$spot" --source 99999 --out x.txt
+expect_fail "missing mesh file" "nope.off" "$bin" geodesic distances nope.off --source 0 --out x.txt
+expect_fail "unknown output format" "\.xyz" "$bin" geodesic distances "$spot" --source 0 --out x.xyz
+expect_fail "bad face point" "source-point" "$bin" geodesic distances "$spot" --source-point 5:0.5,0.5 --out x.txt
+expect_fail "face point on a missing face" "face 999999" "$bin" geodesic distances "$spot" --source-point 999999:1,0,0 --out x.txt
+expect_fail "heat takes no face point" "face" "$bin" geodesic distances "$spot" --source-point 5:0.2,0.3,0.5 --method heat --out x.txt
+if ls x.* >/dev/null 2>&1; then fail "a failed run left an output file: $(ls x.*)"; else ok "failed runs wrote nothing"; fi
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1\n' > truncated.off
+expect_fail "truncated OFF" "truncated.off" "$bin" geodesic distances truncated.off --source 0 --out x.txt
+printf 'OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n' > nan.off
+expect_fail "NaN coordinate" "nan.off.*(NaN|nan|finite)" "$bin" mesh check nan.off
+expect_fail "bad surface spec" "icosphere:x" "$bin" mesh generate icosphere:x --out s.off
+expect_fail "unknown mesh extension" "s.abc" "$bin" mesh generate icosphere:1 --out s.abc
+expect_fail "no truth on a torus" "torus" "$bin" mesh generate torus:1,0.3:16,8 --out t.off --truth-source 0 --truth-out t.txt
+if ls t.off s.off s.abc t.txt >/dev/null 2>&1; then fail "rejected generate wrote a file"; else ok "rejected generate wrote nothing"; fi
+
+# --- generated surfaces against their exact smooth distance ------------------------------------
+expect_ok "generate icosphere:3 with truth" "$bin" mesh generate icosphere:3 --out ico.off --truth-source 0 --truth-out truth.txt
+expect_ok "exact distances on the generated file" "$bin" geodesic distances ico.off --source 0 --out ico_exact.txt
+# Polyhedral distances on an inscribed icosphere fall short of the great circle by O(h^2):
+# at level 3 (h ~ 0.1) a mean relative gap of a few 1e-3; 1e-2 is the bound.
+if paste ico_exact.txt truth.txt | awk 'NR > 1 && $2 > 0.3 { s += ($2 - $1) / $2; n++; if ($1 > $2 * (1 + 1e-9)) over++ }
+     END { m = s / n; print "mean gap " m; exit !(m > 0 && m < 1e-2 && over == 0) }' >gap.txt; then
+  ok "icosphere:3 exact vs great circle ($(cat gap.txt))"; else fail "icosphere:3 vs great circle ($(cat gap.txt))"; fi
+expect_ok "mesh check" "$bin" mesh check ico.off
+if grep -qi "642" out.txt; then ok "mesh check reports 642 vertices"; else fail "mesh check output: $(head -c 300 out.txt)"; fi
+
+# --- exact path ---------------------------------------------------------------------------------
+expect_ok "exact path" "$bin" geodesic path "$spot" --from 0 --to 1500 --out path.json
+want=$(sed -n 1501p d_exact-cgal.txt)
+if $py - "$want" <<'PY'
+import json, math, sys
+p = json.load(open("path.json")); want = float(sys.argv[1])
+pts = p["points"]; L = sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+ok = abs(p["length"] - want) <= 1e-9 * want and abs(L - want) <= 1e-9 * want and len(pts) >= 2
+print("length", p["length"], "polyline", L, "distance", want); sys.exit(0 if ok else 1)
+PY
+then ok "path length = exact distance = polyline length"; else fail "path length"; fi
+
+# --- benchmark harness --------------------------------------------------------------------------
+expect_ok "bench geodesic" "$bin" bench geodesic --surface icosphere:2 --surface cylinder:1,2:24,8 \
+  --methods heat,dijkstra --reference exact-cgal --sources 2 --repeat 2 --out bench.jsonl
+if $py - <<'PY'
+import json, sys
+lines = [json.loads(l) for l in open("bench.jsonl")]
+need = ["method","mesh","vertices","source","options","pre_seconds","query_seconds","peak_rss_bytes",
+        "mean_rel_error","max_rel_error","mean_rel_error_truth","max_rel_error_truth","status","git"]
+assert len(lines) == 2 * 2 * 3 * 2, len(lines)
+for l in lines:
+    missing = [k for k in need if k not in l]
+    assert not missing, missing
+    assert l["status"] == "ok", l
+    assert l["peak_rss_bytes"] > 0
+    assert l["mean_rel_error_truth"] is not None      # both surfaces have exact truth
+ref = [l for l in lines if l["method"] == "exact-cgal"]
+assert all(l["mean_rel_error"] == 0 for l in ref)
+dij = [l for l in lines if l["method"] == "dijkstra"]
+assert all(l["mean_rel_error"] > 1e-3 for l in dij)   # edge paths zig-zag: clearly longer
+PY
+then ok "bench lines complete and consistent"; else fail "bench lines"; fi
+[ ! -e bench.jsonl.partial ] && ok "no partial bench file left" || fail "partial bench file left"
+expect_fail "bench unknown method" "nomethod" "$bin" bench geodesic --surface icosphere:1 --methods nomethod --out b2.jsonl
+[ ! -e b2.jsonl ] && ok "rejected bench wrote nothing" || fail "rejected bench wrote b2.jsonl"
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]
