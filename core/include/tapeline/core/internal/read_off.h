@@ -94,23 +94,7 @@ inline PolygonSoup read_off(const std::string& path, std::string_view text) {
                                " vertices, file ends after " + std::to_string(i));
         }
         Tokens tokens(line);
-        std::array<double, 3> p{};
-        for (int k = 0; k < 3; ++k) {
-            if (!tokens.next(token)) {
-                throw InvalidInput(path + ": " + at_line(lines.line_number()) + "vertex " +
-                                   std::to_string(i) + " has " + std::to_string(k) +
-                                   " coordinates, expected 3");
-            }
-            if (!parse_double(token, p[k])) {
-                throw InvalidInput(path + ": " + at_line(lines.line_number()) + "vertex " +
-                                   std::to_string(i) + ": cannot parse " + quoted(token) +
-                                   " as a number");
-            }
-        }
-        if (const char* bad = non_finite_kind(p[0], p[1], p[2]); *bad) {
-            throw InvalidInput(path + ": " + at_line(lines.line_number()) + "vertex " +
-                               std::to_string(i) + " has " + bad);
-        }
+        const std::array<double, 3> p = read_xyz(tokens, path, lines.line_number(), i);
         soup.points.push_back(p);
         soup.point_lines.push_back(lines.line_number());
     }

@@ -5,6 +5,7 @@
 #include <tapeline/core/errors.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -173,6 +174,29 @@ inline const char* non_finite_kind(double x, double y, double z) {
 }
 
 /// Lower-case extension with its dot ("" if none).
+/// Reads the three coordinates of text vertex `index` (OFF and OBJ share this) from `tokens`,
+/// rejecting a missing, unparsable or non-finite coordinate with a message naming the line.
+inline std::array<double, 3> read_xyz(Tokens& tokens, const std::string& path, std::uint32_t line,
+                                      std::size_t index) {
+    std::array<double, 3> p{};
+    std::string_view token;
+    for (int k = 0; k < 3; ++k) {
+        if (!tokens.next(token)) {
+            throw InvalidInput(path + ": " + at_line(line) + "vertex " + std::to_string(index) +
+                               " has " + std::to_string(k) + " coordinates, expected 3");
+        }
+        if (!parse_double(token, p[k])) {
+            throw InvalidInput(path + ": " + at_line(line) + "vertex " + std::to_string(index) +
+                               ": cannot parse " + quoted(token) + " as a number");
+        }
+    }
+    if (const char* bad = non_finite_kind(p[0], p[1], p[2]); *bad) {
+        throw InvalidInput(path + ": " + at_line(line) + "vertex " + std::to_string(index) +
+                           " has " + bad);
+    }
+    return p;
+}
+
 inline std::string lower_extension(const std::string& path) {
     const std::size_t slash = path.find_last_of("/\\");
     const std::size_t dot = path.find_last_of('.');
