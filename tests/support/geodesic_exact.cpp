@@ -57,14 +57,7 @@ PathResult one_path(Mesh& tm, const Soup& soup, const SurfacePoint& from, const 
 }  // namespace
 
 Field exact_field(const Soup& soup, const Sources& sources, MeshKind kind) {
-    if (kind == MeshKind::polyhedron) {
-        Polyhedron tm;
-        build(soup, tm);
-        return run(tm, soup, sources);
-    }
-    SurfaceMesh tm;
-    build(soup, tm, kind == MeshKind::surface_mesh_with_garbage);
-    return run(tm, soup, sources);
+    return with_mesh(soup, kind, [&](auto& tm) { return run(tm, soup, sources); });
 }
 
 }  // namespace tapeline_test::geodesic::cgal

@@ -44,14 +44,7 @@ Field run_one_shot(Mesh& tm, const Soup& soup, const Sources& sources, const Hea
 }  // namespace
 
 Field heat_field(const Soup& soup, const Sources& sources, MeshKind kind, HeatOptions heat) {
-    if (kind == MeshKind::polyhedron) {
-        Polyhedron tm;
-        build(soup, tm);
-        return run_one_shot(tm, soup, sources, heat);
-    }
-    SurfaceMesh tm;
-    build(soup, tm, kind == MeshKind::surface_mesh_with_garbage);
-    return run_one_shot(tm, soup, sources, heat);
+    return with_mesh(soup, kind, [&](auto& tm) { return run_one_shot(tm, soup, sources, heat); });
 }
 
 }  // namespace tapeline_test::geodesic::cgal

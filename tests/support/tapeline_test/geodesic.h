@@ -161,6 +161,19 @@ inline Vec3 to_vec3(const Kernel::Point_3& p) {
     return {p.x(), p.y(), p.z()};
 }
 
+/// Builds the mesh of the requested kind from `soup` and calls `run(mesh)`.
+template <class Run>
+auto with_mesh(const Soup& soup, MeshKind kind, Run&& run) {
+    if (kind == MeshKind::polyhedron) {
+        Polyhedron tm;
+        build(soup, tm);
+        return run(tm);
+    }
+    SurfaceMesh tm;
+    build(soup, tm, kind == MeshKind::surface_mesh_with_garbage);
+    return run(tm);
+}
+
 /// Per-method entry points, one translation unit each (geodesic_<method>.cpp).
 Field exact_field(const Soup& soup, const Sources& sources, MeshKind kind);
 Field heat_field(const Soup& soup, const Sources& sources, MeshKind kind, HeatOptions heat);
