@@ -45,6 +45,7 @@ struct BenchArgs {
     std::string out;
     std::uint64_t seed = 1;
     double timeout = 0;
+    double memory_limit_gb = 0;
     bool append = false;
 };
 
@@ -111,6 +112,12 @@ nlohmann::json number_or_null(double x) {
     return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
+std::string format_gb(double gb) {
+    std::ostringstream out;
+    out << gb;
+    return out.str();
+}
+
 // ---- child process plumbing ------------------------------------------------------------------
 
 bool write_all(int fd, const void* data, std::size_t n) {
@@ -140,7 +147,7 @@ struct ChildOutcome {
 /// Runs `work` in a forked child. `work` returns the JSON fields and, optionally, distances to
 /// send back. The child's exceptions become statuses; a signal becomes `crash`.
 template <class Work>
-ChildOutcome run_isolated(Work&& work, double timeout_seconds) {
+ChildOutcome run_isolated(Work&& work, double timeout_seconds, double memory_limit_gb) {
     int fds[2];
     if (::pipe(fds) != 0) {
         throw std::runtime_error("pipe() failed");
@@ -153,6 +160,13 @@ ChildOutcome run_isolated(Work&& work, double timeout_seconds) {
     }
     if (pid == 0) {
         ::close(fds[0]);
+        if (memory_limit_gb > 0) {
+            // An allocation beyond the limit becomes std::bad_alloc ("crash: out of memory")
+            // instead of the machine's OOM killer picking a victim.
+            const rlim_t bytes = static_cast<rlim_t>(memory_limit_gb * 1e9);
+            const rlimit limit{bytes, bytes};
+            ::setrlimit(RLIMIT_AS, &limit);
+        }
         nlohmann::json fields;
         std::vector<double> distances;
         try {
@@ -165,7 +179,10 @@ ChildOutcome run_isolated(Work&& work, double timeout_seconds) {
         } catch (const SolverFailure& e) {
             fields = {{"status", "solver_failed"}, {"message", e.what()}};
         } catch (const std::bad_alloc&) {
-            fields = {{"status", "crash"}, {"message", "out of memory"}};
+            fields = {{"status", "crash"},
+                      {"message", memory_limit_gb > 0 ? "out of memory (--memory-limit " +
+                                                            format_gb(memory_limit_gb) + " GB)"
+                                                      : std::string("out of memory")}};
         } catch (const std::exception& e) {
             fields = {{"status", "crash"}, {"message", std::string("exception: ") + e.what()}};
         }
@@ -422,7 +439,7 @@ void run_bench(const BenchArgs& args) {
                                 distances_out = std::move(r.distances);
                             }
                         },
-                        args.timeout);
+                        args.timeout, args.memory_limit_gb);
                     if (want_reference && outcome.status == "ok") {
                         reference = std::move(outcome.distances);
                         const ErrorStats self = relative_errors(reference, reference, excluded);
@@ -521,6 +538,10 @@ void register_bench_commands(CLI::App& app) {
     geo->add_option("--seed", a->seed, "Seed for sources and surface jitter")
         ->capture_default_str();
     geo->add_option("--timeout", a->timeout, "Seconds before a run is killed (0: none)")
+        ->capture_default_str();
+    geo->add_option("--memory-limit", a->memory_limit_gb,
+                    "Address-space limit of each run in GB (0: none); a run beyond it is a crash "
+                    "with the message 'out of memory'")
         ->capture_default_str();
     geo->add_flag("--append", a->append, "Append to --out instead of replacing it");
     geo->add_option("--out,-o", a->out, "JSON-lines output")->required();

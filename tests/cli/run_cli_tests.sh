@@ -109,6 +109,12 @@ assert all(l["mean_rel_error"] > 1e-3 for l in dij)   # edge paths zig-zag: clea
 PY
 then ok "bench lines complete and consistent"; else fail "bench lines"; fi
 [ ! -e bench.jsonl.partial ] && ok "no partial bench file left" || fail "partial bench file left"
+# A run beyond --memory-limit is a crash with an out-of-memory message, and the benchmark goes on.
+expect_ok "bench with a memory limit" "$bin" bench geodesic --surface icosphere:6 --methods exact-cgal,dijkstra \
+  --reference exact-cgal --memory-limit 0.5 --out oom.jsonl
+if grep -q '"status":"crash"' oom.jsonl && grep -q 'out of memory (--memory-limit 0.5 GB)' oom.jsonl \
+   && grep -q '"method":"dijkstra".*"status":"ok"' oom.jsonl; then ok "memory limit: crash recorded, next method ran"
+else fail "memory limit lines: $(cat oom.jsonl | head -c 400)"; fi
 expect_fail "bench unknown method" "nomethod" "$bin" bench geodesic --surface icosphere:1 --methods nomethod --out b2.jsonl
 [ ! -e b2.jsonl ] && ok "rejected bench wrote nothing" || fail "rejected bench wrote b2.jsonl"
 
