@@ -2,6 +2,7 @@
 # config. Everything comes from Debian 12 packages; nothing is downloaded.
 include(CMakeFindDependencyMacro)
 find_dependency(Threads)
+find_dependency(nlohmann_json 3.10)
 find_dependency(CGAL 5.5)
 find_dependency(Eigen3 3.3 NO_MODULE)
 include(CGAL_Eigen3_support)

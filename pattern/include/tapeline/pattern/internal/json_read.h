@@ -1,0 +1,133 @@
+// Checked access to JSON input: every failure is an InvalidInput naming the file and the JSON
+// path of the offending value (DESIGN.md §4).
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/pattern/geometry.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace tapeline::pattern::internal {
+
+using Json = nlohmann::json;
+
+inline std::string read_text_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw InvalidInput(path + ": cannot open for reading");
+    }
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) {
+        throw InvalidInput(path + ": read error");
+    }
+    return ss.str();
+}
+
+/// Parses JSON text; a syntax error (truncated file, NaN literal, ...) names the source and byte.
+inline Json parse_json(const std::string& text, const std::string& source) {
+    try {
+        return Json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InvalidInput(source + ": malformed JSON at byte " + std::to_string(e.byte) + ": " +
+                           e.what());
+    }
+}
+
+inline Json parse_json_file(const std::string& path) {
+    return parse_json(read_text_file(path), path);
+}
+
+/// A JSON value together with where it is: "file: pieces[2].paths.seam".
+struct Where {
+    std::string source;
+    std::string path;
+    std::string str() const { return source + ": " + (path.empty() ? "(top level)" : path); }
+    Where key(const std::string& k) const { return {source, path.empty() ? k : path + "." + k}; }
+    Where index(std::size_t i) const { return {source, path + "[" + std::to_string(i) + "]"}; }
+};
+
+inline const char* type_name(const Json& j) {
+    return j.type_name();
+}
+
+inline const Json& require_object(const Json& j, const Where& w) {
+    if (!j.is_object()) {
+        throw InvalidInput(w.str() + ": expected an object, got " + type_name(j));
+    }
+    return j;
+}
+
+inline const Json& require_array(const Json& j, const Where& w) {
+    if (!j.is_array()) {
+        throw InvalidInput(w.str() + ": expected an array, got " + type_name(j));
+    }
+    return j;
+}
+
+/// obj[key], which must exist.
+inline const Json& field(const Json& obj, const std::string& key, const Where& w) {
+    require_object(obj, w);
+    const auto it = obj.find(key);
+    if (it == obj.end()) {
+        throw InvalidInput(w.str() + ": missing field '" + key + "'");
+    }
+    return *it;
+}
+
+inline const Json* optional_field(const Json& obj, const std::string& key) {
+    if (!obj.is_object()) {
+        return nullptr;
+    }
+    const auto it = obj.find(key);
+    return it == obj.end() || it->is_null() ? nullptr : &*it;
+}
+
+/// A finite number (JSON has no NaN; writers that meet one emit null, which lands here).
+inline double number(const Json& j, const Where& w) {
+    if (!j.is_number()) {
+        throw InvalidInput(w.str() + ": expected a number, got " +
+                           (j.is_null() ? std::string("null (NaN?)") : type_name(j)));
+    }
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) {
+        throw InvalidInput(w.str() + ": number is not finite");
+    }
+    return v;
+}
+
+inline std::string string(const Json& j, const Where& w) {
+    if (!j.is_string()) {
+        throw InvalidInput(w.str() + ": expected a string, got " + type_name(j));
+    }
+    return j.get<std::string>();
+}
+
+inline bool boolean(const Json& j, const Where& w) {
+    if (!j.is_boolean()) {
+        throw InvalidInput(w.str() + ": expected true or false, got " + type_name(j));
+    }
+    return j.get<bool>();
+}
+
+inline std::size_t index_value(const Json& j, const Where& w) {
+    if (!j.is_number_integer() || j.get<long long>() < 0) {
+        throw InvalidInput(w.str() + ": expected a non-negative integer, got " + j.dump());
+    }
+    return j.get<std::size_t>();
+}
+
+/// [x, y] as a point.
+inline Point2 point(const Json& j, const Where& w) {
+    if (!j.is_array() || j.size() != 2) {
+        throw InvalidInput(w.str() + ": expected a point [x, y], got " + j.dump());
+    }
+    return {number(j[0], w.index(0)), number(j[1], w.index(1))};
+}
+
+}  // namespace tapeline::pattern::internal
