@@ -9,4 +9,5 @@ namespace tapeline::app {
 void register_mesh_commands(CLI::App& app);
 void register_geodesic_commands(CLI::App& app);
 void register_bench_commands(CLI::App& app);
+void register_pattern_commands(CLI::App& app);
 }  // namespace tapeline::app

@@ -10,11 +10,13 @@ passed=0; failed=0
 ok()   { passed=$((passed+1)); echo "ok   - $1"; }
 fail() { failed=$((failed+1)); echo "FAIL - $1"; }
 
-# expect_fail NAME PATTERN CMD...: non-zero exit, exactly one stderr line matching PATTERN.
+# expect_fail NAME PATTERN CMD...: non-zero exit and exactly one error line, which matches PATTERN
+# (warnings about the input may come before it).
 expect_fail() {
   local name=$1 pattern=$2; shift 2
   "$@" >out.txt 2>err.txt; local rc=$?
-  if [ $rc -ne 0 ] && grep -qE -- "$pattern" err.txt && [ "$(wc -l <err.txt)" -eq 1 ]; then ok "$name"
+  if [ $rc -ne 0 ] && [ "$(grep -c '^tapeline: error' err.txt)" -eq 1 ] &&
+     grep '^tapeline: error' err.txt | grep -qE -- "$pattern"; then ok "$name"
   else fail "$name (exit $rc, stderr: $(head -c 300 err.txt))"; fi
 }
 expect_ok() {
@@ -117,6 +119,32 @@ if grep -q '"status":"crash"' oom.jsonl && grep -q 'out of memory (--memory-limi
 else fail "memory limit lines: $(cat oom.jsonl | head -c 400)"; fi
 expect_fail "bench unknown method" "nomethod" "$bin" bench geodesic --surface icosphere:1 --methods nomethod --out b2.jsonl
 [ ! -e b2.jsonl ] && ok "rejected bench wrote nothing" || fail "rejected bench wrote b2.jsonl"
+
+# --- sewing patterns ----------------------------------------------------------------------------
+fs="$root/data/patterns/aaron_cisFemaleAdult36.json"; gc="$root/data/patterns/shirt_mean_specification.json"
+expect_ok "pattern import" "$bin" pattern import "$fs" "$gc" --db p.sqlite
+expect_ok "pattern list" "$bin" pattern list --db p.sqlite
+if [ "$(wc -l <out.txt)" -eq 2 ] && grep -q "^shirt_mean" out.txt && grep -q "^aaron_cisFemaleAdult36" out.txt; then ok "list shows both"
+else fail "list: $(cat out.txt)"; fi
+expect_ok "pattern list --type" "$bin" pattern list --db p.sqlite --type "tank top"
+[ "$(wc -l <out.txt)" -eq 1 ] && ok "search by garment type" || fail "search by type: $(cat out.txt)"
+expect_fail "duplicate import" "shirt_mean.*--replace" "$bin" pattern import "$gc" --db p.sqlite
+expect_ok "import --replace" "$bin" pattern import "$gc" --db p.sqlite --replace
+expect_ok "pattern show" "$bin" pattern show shirt_mean --db p.sqlite
+grep -q "pieces: 8" out.txt && ok "show: 8 pieces" || fail "show: $(head -c 300 out.txt)"
+expect_ok "pattern export all formats" "$bin" pattern export shirt_mean --db p.sqlite --svg s.svg --png s.png \
+  --dxf s.dxf --json s.json --mesh s.obj --edge-length 20
+if grep -q "<svg" s.svg && head -c 8 s.png | grep -q PNG && grep -q "AC1009" s.dxf && grep -q "^vt " s.obj; then ok "exports look right"
+else fail "export contents"; fi
+expect_ok "exported JSON validates" "$bin" pattern validate s.json
+expect_ok "export from a file" "$bin" pattern export "$fs" --svg f.svg
+printf '{"design": "x", "pieces": [' > broken.json
+expect_fail "truncated pattern JSON" "broken.json" "$bin" pattern import broken.json --db p.sqlite
+expect_ok "database unchanged after a rejected import" "$bin" pattern list --db p.sqlite
+[ "$(wc -l <out.txt)" -eq 2 ] && ok "still 2 patterns" || fail "database changed: $(cat out.txt)"
+expect_fail "unknown pattern" "nope" "$bin" pattern export nope --db p.sqlite --svg n.svg
+expect_fail "export without output" "at least one" "$bin" pattern export shirt_mean --db p.sqlite
+[ ! -e n.svg ] && ok "failed export wrote nothing" || fail "failed export wrote n.svg"
 
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]
