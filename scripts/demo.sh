@@ -18,6 +18,14 @@ done
 echo "== exact geodesic path on data/spot.obj"
 "$bin" geodesic path "$root/data/spot.obj" --from 0 --to 1500 --method exact-cgal --out "$out/spot_path.json"
 
+echo "== sewing patterns: import the bundled FreeSewing and GarmentCode patterns, export them"
+rm -f "$out/patterns.sqlite"*
+"$bin" pattern import "$root/data/patterns/aaron_cisFemaleAdult36.json" \
+    "$root/data/patterns/shirt_mean_specification.json" --db "$out/patterns.sqlite"
+"$bin" pattern list --db "$out/patterns.sqlite"
+"$bin" pattern export shirt_mean --db "$out/patterns.sqlite" --svg "$out/shirt.svg" --png "$out/shirt.png" \
+    --dxf "$out/shirt.dxf" --mesh "$out/shirt_mesh.obj"
+
 echo "== side-by-side benchmark on small analytic surfaces"
 "$bin" bench geodesic --surface icosphere:3 --surface ellipsoid:1,1,0.5:3:0.2 --surface icosphere:4 \
     --methods exact-cgal,heat,heat-idt,dijkstra --reference exact-cgal --sources 2 --repeat 3 \
@@ -27,4 +35,4 @@ echo "== side-by-side benchmark on small analytic surfaces"
 cat "$out/bench/table.md"
 echo
 echo "Open the coloured distance fields $out/spot_*.ply in MeshLab or Blender;"
-echo "the benchmark plots are in $out/bench/."
+echo "the benchmark plots are in $out/bench/; the shirt pattern is drawn in $out/shirt.svg and .png."
