@@ -197,9 +197,12 @@ void run_show(const std::string& name, const std::string& db, const std::string&
                   << tp::length(piece.outline) << " mm, cut " << piece.cut_count
                   << (piece.fold ? ", on fold" : "") << '\n';
         std::cout.unsetf(std::ios::fixed);
+        std::cout << std::setprecision(6);
     }
-    std::cout << "  seams: " << p.seams.size() << " (largest length mismatch "
-              << r.largest_seam_mismatch_mm << " mm)\n  validation: "
+    std::cout << "  seams: " << p.seams.size() << " (largest length mismatch " << std::fixed
+              << std::setprecision(3) << r.largest_seam_mismatch_mm << " mm)\n  validation: ";
+    std::cout.unsetf(std::ios::fixed);
+    std::cout << std::setprecision(6)
               << (r.ok() ? "ok" : std::to_string(r.errors.size()) + " errors") << ", "
               << r.warnings.size() << " warnings\n";
     for (const auto& e : r.errors) {
