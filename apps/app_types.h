@@ -43,13 +43,14 @@ struct MethodResult {
 
 /// The distance methods the tool knows, in the order they are listed in --help.
 const std::vector<std::string>& distance_methods();
-/// Runs `method` ("exact-cgal", "heat", "heat-idt", "dijkstra"); throws InvalidInput for an
-/// unknown name or a source the method cannot take.
+/// Runs `method` ("exact-mmp", "exact-cgal", "heat", "heat-idt", "dijkstra"); throws InvalidInput
+/// for an unknown name or a source the method cannot take.
 MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
                                  const Sources& sources);
 
 // One entry point per method family, each in its own translation unit (compile in parallel).
 MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources);
+MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources);
 MethodResult run_heat(const Mesh& mesh, const Sources& sources, bool intrinsic_delaunay);
 MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
 

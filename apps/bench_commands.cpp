@@ -38,10 +38,10 @@ namespace {
 struct BenchArgs {
     std::vector<std::string> meshes;
     std::vector<std::string> surfaces;
-    std::string methods = "exact-cgal,heat,heat-idt,dijkstra";
+    std::string methods = "exact-mmp,exact-cgal,heat,heat-idt,dijkstra";
     int sources = 1;
     int repeat = 1;
-    std::string reference = "exact-cgal";
+    std::string reference = "exact-mmp";
     std::string out;
     std::uint64_t seed = 1;
     double timeout = 0;

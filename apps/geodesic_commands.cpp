@@ -18,8 +18,10 @@
 
 namespace tapeline::app {
 
-// Defined in geodesic_path.cpp (keeps SMSP's path machinery out of this translation unit).
+// Defined in geodesic_path.cpp and method_exact_mmp.cpp (the heavy path machinery stays out of
+// this translation unit).
 nlohmann::json exact_cgal_path_json(const Mesh& mesh, Vertex from, Vertex to);
+nlohmann::json exact_mmp_path_json(const Mesh& mesh, Vertex from, Vertex to);
 
 namespace {
 
@@ -101,7 +103,7 @@ struct DistancesArgs {
     MeshArgs mesh;
     std::vector<long> sources;
     std::vector<std::string> source_points;
-    std::string method = "exact-cgal";
+    std::string method = "exact-mmp";
     std::string out;
 };
 
@@ -141,7 +143,7 @@ struct PathArgs {
     MeshArgs mesh;
     long from = -1;
     long to = -1;
-    std::string method = "exact-cgal";
+    std::string method = "exact-mmp";
     std::string out;
 };
 
@@ -150,7 +152,9 @@ void run_path(const PathArgs& args) {
     const Vertex from = vertices_of(input, args.from, "--from").front();
     const Vertex to = vertices_of(input, args.to, "--to").front();
     const auto start = std::chrono::steady_clock::now();
-    nlohmann::json j = exact_cgal_path_json(input.loaded.mesh, from, to);
+    nlohmann::json j = args.method == "exact-mmp"
+                           ? exact_mmp_path_json(input.loaded.mesh, from, to)
+                           : exact_cgal_path_json(input.loaded.mesh, from, to);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     j["method"] = args.method;
@@ -177,7 +181,7 @@ void register_geodesic_commands(CLI::App& app) {
     dist->add_option(
         "--source-point", d->source_points,
         "Source point FACE:B0,B1,B2 in a face of the loaded triangle mesh (repeatable)");
-    dist->add_option("--method", d->method, "Method (default exact-cgal)")
+    dist->add_option("--method", d->method, "Method (default exact-mmp)")
         ->check(CLI::IsMember(distance_methods()));
     dist->add_option("--out,-o", d->out,
                      "Output: .txt (one distance per input vertex per line, inf if unreachable) "
@@ -190,8 +194,8 @@ void register_geodesic_commands(CLI::App& app) {
     add_mesh_args(path, p->mesh);
     path->add_option("--from", p->from, "Start vertex (index in the input file)")->required();
     path->add_option("--to", p->to, "End vertex (index in the input file)")->required();
-    path->add_option("--method", p->method, "Method (default exact-cgal)")
-        ->check(CLI::IsMember({"exact-cgal"}));
+    path->add_option("--method", p->method, "Method (default exact-mmp)")
+        ->check(CLI::IsMember({"exact-mmp", "exact-cgal"}));
     path->add_option("--out,-o", p->out, "Output JSON: points and length")->required();
     path->callback([p] { run_path(*p); });
 }

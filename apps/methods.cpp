@@ -5,12 +5,16 @@
 namespace tapeline::app {
 
 const std::vector<std::string>& distance_methods() {
-    static const std::vector<std::string> methods = {"exact-cgal", "heat", "heat-idt", "dijkstra"};
+    static const std::vector<std::string> methods = {"exact-mmp", "exact-cgal", "heat", "heat-idt",
+                                                     "dijkstra"};
     return methods;
 }
 
 MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
                                  const Sources& sources) {
+    if (method == "exact-mmp") {
+        return run_exact_mmp(mesh, sources);
+    }
     if (method == "exact-cgal") {
         return run_exact_cgal(mesh, sources);
     }

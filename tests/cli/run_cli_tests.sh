@@ -34,7 +34,7 @@ for sub in "" "mesh generate" "mesh check" "geodesic distances" "geodesic path" 
 done
 
 # --- distances by every method ------------------------------------------------------------------
-for m in exact-cgal heat heat-idt dijkstra; do
+for m in exact-mmp exact-cgal heat heat-idt dijkstra; do
   expect_ok "distances $m on spot" "$bin" geodesic distances "$spot" --source 0 --method $m --out d_$m.txt
   if [ "$(wc -l <d_$m.txt)" -eq 2930 ] && [ "$(head -1 d_$m.txt)" = "0" ]; then ok "distances $m: 2930 lines, source at 0"
   else fail "distances $m: $(wc -l <d_$m.txt) lines, first '$(head -1 d_$m.txt)'"; fi
@@ -42,6 +42,9 @@ done
 # Dijkstra walks along edges, so it is never shorter than the exact polyhedral distance.
 if paste d_dijkstra.txt d_exact-cgal.txt | awk '{ if ($1 < $2 * (1 - 1e-12)) bad++ } END { exit bad > 0 }'; then
   ok "dijkstra >= exact-cgal on every vertex"; else fail "dijkstra shorter than exact somewhere"; fi
+# Our exact method and CGAL's compute the same polyhedral distance.
+if paste d_exact-mmp.txt d_exact-cgal.txt | awk '{ e = $1 - $2; if (e < 0) e = -e; if (e > 1e-9 * ($2 + 1e-300)) bad++ } END { exit bad > 0 }'; then
+  ok "exact-mmp = exact-cgal on every vertex (1e-9 relative)"; else fail "exact-mmp differs from exact-cgal"; fi
 expect_ok "distances to a coloured PLY" "$bin" geodesic distances "$spot" --source 0 --out d.ply
 if head -c 3 d.ply | grep -q ply && grep -aq "property float distance" d.ply && grep -aq "property uchar red" d.ply; then
   ok "PLY has the distance and colours"; else fail "PLY header"; fi
@@ -78,7 +81,7 @@ expect_ok "mesh check" "$bin" mesh check ico.off
 if grep -qi "642" out.txt; then ok "mesh check reports 642 vertices"; else fail "mesh check output: $(head -c 300 out.txt)"; fi
 
 # --- exact path ---------------------------------------------------------------------------------
-expect_ok "exact path" "$bin" geodesic path "$spot" --from 0 --to 1500 --out path.json
+expect_ok "exact path" "$bin" geodesic path "$spot" --from 0 --to 1500 --method exact-cgal --out path.json
 want=$(sed -n 1501p d_exact-cgal.txt)
 if $py - "$want" <<'PY'
 import json, math, sys
@@ -88,6 +91,14 @@ ok = abs(p["length"] - want) <= 1e-9 * want and abs(L - want) <= 1e-9 * want and
 print("length", p["length"], "polyline", L, "distance", want); sys.exit(0 if ok else 1)
 PY
 then ok "path length = exact distance = polyline length"; else fail "path length"; fi
+expect_ok "exact-mmp path" "$bin" geodesic path "$spot" --from 0 --to 1500 --method exact-mmp --out path.json
+if $py - "$want" <<'PY'
+import json, math, sys
+p = json.load(open("path.json")); want = float(sys.argv[1])
+pts = p["points"]; L = sum(math.dist(a, b) for a, b in zip(pts, pts[1:]))
+sys.exit(0 if abs(p["length"] - want) <= 1e-9 * want and abs(L - want) <= 1e-9 * want else 1)
+PY
+then ok "exact-mmp path length = exact distance = polyline length"; else fail "exact-mmp path length"; fi
 
 # --- benchmark harness --------------------------------------------------------------------------
 expect_ok "bench geodesic" "$bin" bench geodesic --surface icosphere:2 --surface cylinder:1,2:24,8 \

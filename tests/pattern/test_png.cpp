@@ -1,6 +1,9 @@
 // PNG drawing, decoded with libpng's simplified reader (a different code path from the writer):
 // image size = SVG page × resolution, dark pixels where the outlines pass, background where
-// nothing is drawn, and a clear error for absurd resolutions.
+// nothing is drawn, and a clear error for absurd resolutions. Text: the bitmap font's glyphs are
+// all distinct, a string's ink stays in the box its font-size and anchor give, and every <text>
+// the SVG writes (parsed from the SVG itself) has ink at its place in the PNG that is not on any
+// line (lines found by rendering again with draw_text = false), and no ink outside those places.
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/png.h>
@@ -9,7 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <regex>
+#include <set>
 #include <sstream>
 
 using namespace tapeline::pattern;
@@ -137,7 +144,7 @@ TEST(PatternPng, TwoPiecePatternPixels) {
         EXPECT_EQ(st.dark, st.outline_samples);
         EXPECT_EQ(st.white, st.outside_samples);
         EXPECT_GT(st.outside_samples, 100u);
-        // The back piece's centre holds only (undrawn) text: background.
+        // (100, 100) on the back, 34 mm below its cut count: background.
         const Point2 off = rep.layout.piece_offsets[1];
         EXPECT_EQ(img.grey(long((100 + off.x) * ppmm), long((off.y - 100) * ppmm)), 255);
         // Page corner: background, opaque white.
@@ -203,8 +210,9 @@ TEST(PatternPng, EverySharedPattern) {
             pat.name.c_str(), img.width, img.height, rep.png_bytes, st.dark, st.outline_samples,
             st.white, st.outside_samples);
         EXPECT_EQ(st.dark, st.outline_samples) << f;
-        // Outside points 6 mm away from their outline and 5.5 mm from every other: background unless another drawing
-        // (a fold line, an internal line running out of the piece) passes there.
+        // Outside points 6 mm away from their outline and 5.5 mm from every other: background
+        // unless another drawing (a fold line, an internal line running out of the piece) passes
+        // there.
         EXPECT_GE(double(st.white), 0.98 * double(st.outside_samples)) << f;
     }
 }
@@ -230,5 +238,274 @@ TEST(PatternPng, AbsurdResolutionIsRefused) {
         } catch (const tapeline::InvalidInput& e) {
             EXPECT_NE(std::string(e.what()).find("must be positive"), std::string::npos);
         }
+    }
+}
+
+namespace {
+
+/// One <text> of the SVG: baseline position, font-size, anchor, code points.
+struct SvgText {
+    double x = 0, y = 0, size = 0;
+    bool middle = false;
+    std::size_t code_points = 0;
+    std::string content;
+};
+
+std::vector<SvgText> svg_texts(const std::string& svg) {
+    std::vector<SvgText> out;
+    const std::regex re("<text([^>]*)>([^<]*)</text>");
+    const auto attr = [](const std::string& a, const std::string& name) {
+        std::smatch m;
+        return std::regex_search(a, m, std::regex(" " + name + "=\"([^\"]*)\"")) ? m[1].str()
+                                                                                 : std::string();
+    };
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), re); it != std::sregex_iterator();
+         ++it) {
+        const std::string a = (*it)[1].str();
+        SvgText t;
+        t.x = std::stod(attr(a, "x"));
+        t.y = std::stod(attr(a, "y"));
+        t.size = std::stod(attr(a, "font-size"));
+        t.middle = attr(a, "text-anchor") == "middle";
+        // Unescape the five XML entities write_svg produces.
+        std::string c = (*it)[2].str();
+        for (const auto& [ent, ch] : {std::pair<std::string, std::string>{"&lt;", "<"},
+                                      {"&gt;", ">"},
+                                      {"&quot;", "\""},
+                                      {"&apos;", "'"},
+                                      {"&amp;", "&"}}) {
+            for (std::size_t k = c.find(ent); k != std::string::npos; k = c.find(ent, k + 1)) {
+                c.replace(k, ent.size(), ch);
+            }
+        }
+        t.content = c;
+        for (unsigned char b : c) {
+            t.code_points += (b & 0xC0) != 0x80;
+        }
+        out.push_back(t);
+    }
+    return out;
+}
+
+/// Pixel box [x0, x1) × [y0, y1) where a text's ink may lie: the font's box (advance 0.6 em per
+/// character, 0.7 em above the baseline, 0.1 em below) grown by one glyph cell (0.6 × 0.8 em) on
+/// every side — the tolerance for a font whose exact proportions the test does not pin down.
+struct PixelBox {
+    long x0, y0, x1, y1;
+    bool contains(long x, long y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
+};
+
+PixelBox text_box(double x, double y, double size, bool middle, std::size_t n, double ppmm,
+                  double grow_cells = 1) {
+    const double w = 0.6 * size * double(n);
+    const double left = middle ? x - 0.5 * w : x;
+    const double gx = grow_cells * 0.6 * size, gy = grow_cells * 0.8 * size;
+    return {long(std::floor((left - gx) * ppmm)), long(std::floor((y - 0.7 * size - gy) * ppmm)),
+            long(std::ceil((left + w + gx) * ppmm)), long(std::ceil((y + 0.1 * size + gy) * ppmm))};
+}
+
+PixelBox text_box(const SvgText& t, double ppmm, double grow_cells = 1) {
+    return text_box(t.x, t.y, t.size, t.middle, t.code_points, ppmm, grow_cells);
+}
+
+Decoded from_image(const RgbaImage& img) {
+    return {img.width, img.height, img.rgba};
+}
+
+}  // namespace
+
+TEST(PatternPng, BitmapFontGlyphsDistinctAndInked) {
+    using namespace tapeline::pattern::internal;
+    std::set<Glyph> seen;
+    for (int c = 32; c <= 126; ++c) {
+        SCOPED_TRACE(std::string(1, char(c)));
+        const Glyph& g = glyph_for(std::uint32_t(c));
+        EXPECT_EQ(&g, &kBitmapFont[c - 32]);
+        int ink = 0;
+        for (std::uint8_t row : g) {
+            EXPECT_EQ(row & ~0x1F, 0) << "bits beyond the 5 columns";
+            for (int b = 0; b < 5; ++b) {
+                ink += (row >> b) & 1;
+            }
+        }
+        if (c == ' ') {
+            EXPECT_EQ(ink, 0);
+        } else {
+            EXPECT_GT(ink, 0);
+        }
+        EXPECT_TRUE(seen.insert(g).second) << "same bitmap as an earlier glyph";
+    }
+    EXPECT_EQ(seen.count(kPlaceholderGlyph), 0u);
+    for (const std::uint32_t c : {0u, 31u, 127u, 0xE9u, 0x20ACu}) {
+        EXPECT_EQ(&glyph_for(c), &kPlaceholderGlyph) << c;
+    }
+}
+
+TEST(PatternPng, BitmapFontOneGlyphPerCodePoint) {
+    using namespace tapeline::pattern::internal;
+    // a, é (2 bytes), € (3), U+1F600 (4), b, a stray continuation byte, a truncated 3-byte lead.
+    const std::string s =
+        "a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"
+        "b\x80\xE2\x82";
+    const std::vector<const Glyph*> g = text_glyphs(s);
+    ASSERT_EQ(g.size(), 7u);
+    EXPECT_EQ(g[0], &kBitmapFont['a' - 32]);
+    EXPECT_EQ(g[4], &kBitmapFont['b' - 32]);
+    for (const std::size_t k : {1, 2, 3, 5, 6}) {
+        EXPECT_EQ(g[k], &kPlaceholderGlyph) << k;
+    }
+    EXPECT_TRUE(text_glyphs("").empty());
+}
+
+TEST(PatternPng, TextInkInsideItsBox) {
+    using namespace tapeline::pattern::internal;
+    struct Case {
+        std::string text;
+        double x, y, size, ppmm;
+        bool middle;
+    };
+    // Strings reaching the full cell (capitals, descenders, the bar) at several scales, both
+    // anchors, partly off-pixel positions, and a non-ASCII one drawn as boxes.
+    for (const Case& c : {Case{"Hgjy|_ 100 mm", 20, 40, 6, 2, false},
+                          Case{"Hgjy|_ 100 mm", 60.3, 40.7, 10, 4, true},
+                          Case{"front (mirrored pair)", 60, 30, 5, 1.3, true},
+                          Case{"~!@#$%^&*()", 10.25, 20.1, 6, 3, false},
+                          Case{"caf\xC3\xA9 \xE2\x82\xAC", 50, 25, 10, 2, true}}) {
+        SCOPED_TRACE(c.text + " at " + std::to_string(c.ppmm) + " px/mm");
+        RgbaImage img;
+        img.width = std::size_t(120 * c.ppmm);
+        img.height = std::size_t(60 * c.ppmm);
+        img.rgba.assign(4 * img.width * img.height, 255);
+        Canvas cv(img, c.ppmm);
+        cv.text(c.text, {c.x, c.y}, c.size, c.middle ? TextAnchor::middle : TextAnchor::start,
+                {0, 0, 0});
+        const Decoded d = from_image(img);
+        std::size_t n = 0;
+        for (unsigned char b : c.text) {
+            n += (b & 0xC0) != 0x80;
+        }
+        const PixelBox box = text_box(c.x, c.y, c.size, c.middle, n, c.ppmm);
+        // The ink's extent must also reach close to every side of the unexpanded box (within a
+        // glyph cell), so a glyph drawn at the wrong scale or anchor fails even if it is small.
+        long ix0 = long(img.width), iy0 = long(img.height), ix1 = -1, iy1 = -1;
+        std::size_t ink = 0, outside = 0;
+        for (long y = 0; y < long(img.height); ++y) {
+            for (long x = 0; x < long(img.width); ++x) {
+                if (d.grey(x, y) < 255) {
+                    ++ink;
+                    outside += !box.contains(x, y);
+                    ix0 = std::min(ix0, x);
+                    iy0 = std::min(iy0, y);
+                    ix1 = std::max(ix1, x + 1);
+                    iy1 = std::max(iy1, y + 1);
+                }
+            }
+        }
+        EXPECT_GT(ink, 0u);
+        EXPECT_EQ(outside, 0u);
+        const PixelBox tight = text_box(c.x, c.y, c.size, c.middle, n, c.ppmm, 0);
+        const double cell_w = 0.6 * c.size * c.ppmm, cell_h = 0.8 * c.size * c.ppmm;
+        EXPECT_LE(std::abs(ix0 - tight.x0), cell_w);
+        EXPECT_LE(std::abs(ix1 - tight.x1), cell_w);
+        EXPECT_LE(std::abs(iy0 - tight.y0), cell_h);
+        EXPECT_LE(std::abs(iy1 - tight.y1), cell_h);
+    }
+}
+
+TEST(PatternPng, SvgTextAppearsInPng) {
+    std::vector<Pattern> patterns = {tapeline_test::two_piece_pattern()};
+    for (const char* kind : {"freesewing", "garmentcode"}) {
+        for (const auto& f : tapeline_test::files_ending(
+                 tapeline_test::shared_patterns_dir() + "/" + kind, ".json")) {
+            if (f.find("measurement_sets") == std::string::npos) {
+                patterns.push_back(f.find("/garmentcode/") != std::string::npos
+                                       ? read_garmentcode(f)
+                                       : read_freesewing(f));
+            }
+        }
+    }
+    const double ppmm = 2;
+    for (const Pattern& pat : patterns) {
+        SCOPED_TRACE(pat.name);
+        PngOptions o;
+        o.pixels_per_mm = ppmm;
+        const Decoded with = from_image(rasterise_pattern(pat, o));
+        o.draw_text = false;
+        const Decoded without = from_image(rasterise_pattern(pat, o));
+        ASSERT_EQ(with.width, without.width);
+        const std::vector<SvgText> texts = svg_texts(to_svg(pat, o.layout));
+        // Two per piece, one per seam side, the scale bar's label.
+        ASSERT_GE(texts.size(), 2 * pat.pieces.size() + 1);
+        std::vector<PixelBox> boxes;
+        for (const SvgText& t : texts) {
+            boxes.push_back(text_box(t, ppmm));
+        }
+        // Ink not on any line: dark with text, background in the 3 × 3 block without.
+        const auto text_ink = [&](long x, long y) {
+            return with.grey(x, y) < 160 && without.darkest(x, y) == 255;
+        };
+        std::size_t names = 0;
+        for (std::size_t k = 0; k < texts.size(); ++k) {
+            const SvgText& t = texts[k];
+            std::size_t ink = 0;
+            const PixelBox b = text_box(t, ppmm, 0);
+            for (long y = std::max(0L, b.y0); y < std::min(long(with.height), b.y1); ++y) {
+                for (long x = std::max(0L, b.x0); x < std::min(long(with.width), b.x1); ++x) {
+                    ink += text_ink(x, y);
+                }
+            }
+            const std::size_t visible =
+                t.code_points - std::size_t(std::count(t.content.begin(), t.content.end(), ' '));
+            if (t.size == 10) {
+                // A piece name: ≥ 4 font pixels (2 × 2 px each at 10 mm, 2 px/mm) per character
+                // off the lines; a '.' has 4, most glyphs 10–17, and lines may cross a few.
+                ++names;
+                EXPECT_GE(ink, 16 * visible) << "piece name '" << t.content << "'";
+            } else {
+                EXPECT_GT(ink, 0u) << "'" << t.content << "' at " << t.x << ", " << t.y;
+            }
+        }
+        EXPECT_EQ(names, pat.pieces.size());
+        // Every pixel the text changed lies in some text's box.
+        std::size_t stray = 0;
+        for (long y = 0; y < long(with.height); ++y) {
+            for (long x = 0; x < long(with.width); ++x) {
+                if (std::memcmp(with.at(x, y), without.at(x, y), 4) != 0) {
+                    bool in = false;
+                    for (const PixelBox& b : boxes) {
+                        in = in || b.contains(x, y);
+                    }
+                    stray += !in;
+                }
+            }
+        }
+        EXPECT_EQ(stray, 0u);
+    }
+}
+
+TEST(PatternPng, ScaleBarLabel) {
+    const Pattern pat = tapeline_test::two_piece_pattern();
+    for (const double ppmm : {1.0, 2.0, 5.0}) {
+        SCOPED_TRACE(ppmm);
+        PngOptions o;
+        o.pixels_per_mm = ppmm;
+        PngReport rep;
+        const Decoded with = from_image(rasterise_pattern(pat, o, &rep));
+        o.draw_text = false;
+        const Decoded without = from_image(rasterise_pattern(pat, o));
+        // "100 mm" with its baseline at the bar's bottom, 4 mm right of the bar (svg.h).
+        const double bar_y = rep.layout.height_mm - o.layout.margin_mm - 12;
+        const PixelBox b = text_box(o.layout.margin_mm + o.layout.scale_bar_mm + 4, bar_y + 4, 6,
+                                    false, 6, ppmm, 0);
+        std::size_t ink_with = 0, ink_without = 0;
+        for (long y = b.y0; y < b.y1; ++y) {
+            for (long x = b.x0; x < b.x1; ++x) {
+                ink_with += with.grey(x, y) < 192;
+                ink_without += without.grey(x, y) < 255;
+            }
+        }
+        // Each glyph inks 10–14 font pixels of 0.6 mm: ≥ 3.6 mm²; ask for 1.5 mm² per glyph.
+        EXPECT_GT(ink_with, std::size_t(1.5 * 5 * ppmm * ppmm));
+        EXPECT_EQ(ink_without, 0u);
     }
 }

@@ -3,8 +3,13 @@
 // Same layout, same strokes: write_svg's piece placement and page size are reused, so a pixel
 // (i, j) covers SVG user units [i, i+1)/r × [j, j+1)/r mm at r pixels per mm. Drawn: outlines,
 // internal lines (grey, dashed), darts, fold lines (blue, dashed), grain lines with arrowheads,
-// notches, seam-mark ticks (red), the scale bar. Not drawn: text (piece names, cut counts, seam
-// names, the scale bar's label) — there is no font here.
+// notches, seam-mark ticks (red), the scale bar, and the SVG's text — piece names, cut counts,
+// seam names (red, as the seam-mark ticks), the scale bar's label — at the SVG's positions,
+// anchors and font sizes, in the built-in 5 × 8 bitmap font (internal/bitmap_font.h; no font
+// library). Glyphs are scaled to the font-size (one font pixel = a tenth of the em, capitals
+// 0.7 em) and box-filtered: a pixel's coverage is the area of it that font pixels cover. At
+// 2 px/mm all text is legible; at 1 px/mm the 10 mm names are, the 5–6 mm labels blur.
+// Characters outside printable ASCII are drawn as a hollow box, one per code point.
 //
 // Anti-aliasing: each stroke segment covers a pixel by clamp(w/2 + 1/2 − d, 0, 1), d the distance
 // from the pixel centre to the segment (a box filter of one pixel across the edge), blended
@@ -15,6 +20,7 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/pattern/internal/bitmap_font.h>
 #include <tapeline/pattern/pattern.h>
 #include <tapeline/pattern/svg.h>
 
@@ -35,6 +41,7 @@ struct PngOptions {
     SvgOptions layout;                    // page layout and notch length, as for the SVG
     double max_megapixels = 100;          // refuse larger images (400 MB of RGBA)
     bool transparent_background = false;  // else white
+    bool draw_text = true;                // names, cut counts, seam names, scale-bar label
 };
 
 struct RgbaImage {
@@ -54,6 +61,9 @@ namespace internal {
 struct Rgb {
     double r, g, b;
 };
+
+/// SVG's text-anchor: x is the left end of the text, or its middle.
+enum class TextAnchor { start, middle };
 
 class Canvas {
 public:
@@ -126,6 +136,61 @@ public:
                 const double cy =
                     std::clamp(std::min(b.y, y + 1.0) - std::max(a.y, double(y)), 0.0, 1.0);
                 blend(std::size_t(x), std::size_t(y), c, cx * cy);
+            }
+        }
+    }
+
+    /// Text with its baseline at `at` (page mm), as an SVG <text> of that font-size and anchor.
+    void text(const std::string& s, Point2 at, double font_size_mm, TextAnchor anchor, Rgb c) {
+        const std::vector<const Glyph*> glyphs = text_glyphs(s);
+        if (glyphs.empty() || !(font_size_mm > 0)) {
+            return;
+        }
+        const double u = font_size_mm / kFontPixelsPerEm * s_;  // one font pixel, in pixels
+        const double ink_w = double(glyphs.size() * kGlyphAdvance - 1) * u;
+        const double left = at.x * s_ - (anchor == TextAnchor::middle ? 0.5 * ink_w : 0.0);
+        const double top = at.y * s_ - kGlyphRowsAboveBaseline * u;
+        const long x0 = std::max(0L, long(std::floor(left)));
+        const long x1 = std::min(long(img_.width), long(std::ceil(left + ink_w)));
+        const long y0 = std::max(0L, long(std::floor(top)));
+        const long y1 = std::min(long(img_.height), long(std::ceil(top + kGlyphRows * u)));
+        if (x0 >= x1 || y0 >= y1) {
+            return;
+        }
+        // Coverage summed over the string before blending once, so that adjacent font pixels
+        // sharing an image pixel add up instead of compositing over each other (no seams).
+        const std::size_t w = std::size_t(x1 - x0);
+        std::vector<double> cov(w * std::size_t(y1 - y0), 0.0);
+        for (std::size_t g = 0; g < glyphs.size(); ++g) {
+            for (int row = 0; row < kGlyphRows; ++row) {
+                const std::uint8_t bits = (*glyphs[g])[std::size_t(row)];
+                for (int col = 0; col < kGlyphColumns; ++col) {
+                    if (!(bits & (0x10 >> col))) {
+                        continue;
+                    }
+                    const double ax = left + double(g * kGlyphAdvance + std::size_t(col)) * u;
+                    const double ay = top + row * u;
+                    const double bx = ax + u, by = ay + u;
+                    for (long y = std::max(y0, long(std::floor(ay)));
+                         y < std::min(y1, long(std::ceil(by))); ++y) {
+                        const double cy = std::min(by, y + 1.0) - std::max(ay, double(y));
+                        for (long x = std::max(x0, long(std::floor(ax)));
+                             x < std::min(x1, long(std::ceil(bx))); ++x) {
+                            const double cx = std::min(bx, x + 1.0) - std::max(ax, double(x));
+                            if (cx > 0 && cy > 0) {
+                                cov[std::size_t(y - y0) * w + std::size_t(x - x0)] += cx * cy;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        for (long y = y0; y < y1; ++y) {
+            for (long x = x0; x < x1; ++x) {
+                const double a = std::min(1.0, cov[std::size_t(y - y0) * w + std::size_t(x - x0)]);
+                if (a > 0) {
+                    blend(std::size_t(x), std::size_t(y), c, a);
+                }
             }
         }
     }
@@ -284,7 +349,8 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
                        0.5, black);
         }
         if (o.layout.seam_marks) {
-            for (const Seam& seam : pattern.seams) {
+            for (std::size_t s = 0; s < pattern.seams.size(); ++s) {
+                const Seam& seam = pattern.seams[s];
                 for (const EdgeRange* rg : {&seam.a, &seam.b}) {
                     const std::size_t ne = piece.outline.edges.size();
                     if (rg->piece != piece.name || rg->first_edge >= ne || rg->count == 0) {
@@ -304,13 +370,42 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
                     const double t = parameter_at_length(c, half);
                     const Point2 p = point_at(c, t), nrm = left_normal(tangent_at(c, t));
                     cv.segment(map(p + (-3.0) * nrm), map(p + 3.0 * nrm), 0.5, red);
+                    if (o.draw_text) {
+                        cv.text(seam.name.empty() ? "seam " + std::to_string(s) : seam.name,
+                                map(p + (inward * 8.0) * nrm), 5, TextAnchor::middle, red);
+                    }
                 }
             }
+        }
+        if (o.draw_text) {
+            // Name and cut count at the middle of the bounding box, as write_svg places them.
+            Box b;
+            for (const Point2& p : sample(piece.outline, o.layout.sample_tolerance_mm).points) {
+                b.add(p);
+            }
+            if (b.empty()) {
+                b.add({0, 0});
+            }
+            const Point2 centre = map({0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)});
+            std::string cut = "cut " + std::to_string(piece.cut_count);
+            if (piece.fold) {
+                cut += " on fold";
+            }
+            if (piece.mirrored) {
+                cut += " (mirrored pair)";
+            }
+            cv.text(piece.name, centre, 10, TextAnchor::middle, black);
+            cv.text(cut, {centre.x, centre.y + 8}, 6, TextAnchor::middle, black);
         }
     }
     const double bar_y = lay.height_mm - o.layout.margin_mm - 12;
     cv.fill_rect({o.layout.margin_mm, bar_y},
                  {o.layout.margin_mm + o.layout.scale_bar_mm, bar_y + 4}, black);
+    if (o.draw_text) {
+        cv.text(num(o.layout.scale_bar_mm) + " mm",
+                {o.layout.margin_mm + o.layout.scale_bar_mm + 4, bar_y + 4}, 6, TextAnchor::start,
+                black);
+    }
     if (report) {
         report->width_px = img.width;
         report->height_px = img.height;
