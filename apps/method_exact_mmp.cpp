@@ -1,4 +1,5 @@
 #include "app_types.h"
+#include "path_json.h"
 
 #include <tapeline/geodesic/exact_mmp.h>
 
@@ -16,16 +17,7 @@ MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources) {
 
 nlohmann::json exact_mmp_path_json(const Mesh& mesh, Vertex from, Vertex to) {
     using SP = geodesic::SurfacePoint<Mesh>;
-    const auto path = geodesic::exact_mmp_path(mesh, SP(from), SP(to));
-    nlohmann::json j;
-    j["length"] = path.found() ? nlohmann::json(path.length) : nlohmann::json(nullptr);
-    j["reachable"] = path.found();
-    nlohmann::json points = nlohmann::json::array();
-    for (const auto& p : path.points) {
-        points.push_back({p.x(), p.y(), p.z()});
-    }
-    j["points"] = points;
-    return j;
+    return path_json(geodesic::exact_mmp_path(mesh, SP(from), SP(to)));
 }
 
 }  // namespace tapeline::app

@@ -29,26 +29,6 @@ using tapeline_test::two_piece_pattern;
 
 namespace {
 
-std::vector<std::string> shared_pattern_files() {
-    std::vector<std::string> out;
-    for (const auto& f : tapeline_test::files_ending(
-             tapeline_test::shared_patterns_dir() + "/freesewing", ".json")) {
-        if (f.find("measurement_sets") == std::string::npos) {
-            out.push_back(f);
-        }
-    }
-    for (const auto& f : tapeline_test::files_ending(
-             tapeline_test::shared_patterns_dir() + "/garmentcode", ".json")) {
-        out.push_back(f);
-    }
-    return out;
-}
-
-Pattern load_any(const std::string& path) {
-    return path.find("/garmentcode/") != std::string::npos ? read_garmentcode(path)
-                                                           : read_freesewing(path);
-}
-
 /// The in-repo patterns (always present) plus the shared ones (when the shared data is there).
 std::vector<Pattern> test_patterns() {
     std::vector<Pattern> out;
@@ -59,8 +39,8 @@ std::vector<Pattern> test_patterns() {
     out.push_back(read_garmentcode(std::string(TAPELINE_DATA_DIR) +
                                    "/patterns/shirt_mean_specification.json"));
     out.back().name += " (repo)";
-    for (const std::string& f : shared_pattern_files()) {
-        out.push_back(load_any(f));
+    for (const std::string& f : tapeline_test::shared_pattern_files()) {
+        out.push_back(tapeline_test::load_shared_pattern(f));
     }
     return out;
 }
@@ -196,7 +176,7 @@ TEST(PatternCompression, DamagedBlobsAreInvalidInput) {
 }
 
 TEST(PatternDatabase, RoundTripOfEverySharedPattern) {
-    const std::vector<std::string> files = shared_pattern_files();
+    const std::vector<std::string> files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
         GTEST_SKIP() << "shared pattern data absent";
     }
@@ -213,7 +193,7 @@ TEST(PatternDatabase, RoundTripOfEverySharedPattern) {
         EXPECT_EQ(db.schema_version(), pattern_database_schema_version);
         for (const std::string& f : files) {
             const auto t0 = std::chrono::steady_clock::now();
-            originals.push_back(load_any(f));
+            originals.push_back(tapeline_test::load_shared_pattern(f));
             import_s += seconds_since(t0);
             const StoreReport rep = db.store(originals.back());
             store_s += rep.seconds;

@@ -19,26 +19,6 @@ using Json = nlohmann::json;
 
 namespace {
 
-std::vector<std::string> shared_pattern_files() {
-    std::vector<std::string> out;
-    for (const auto& f : tapeline_test::files_ending(
-             tapeline_test::shared_patterns_dir() + "/freesewing", ".json")) {
-        if (f.find("measurement_sets") == std::string::npos) {
-            out.push_back(f);
-        }
-    }
-    for (const auto& f : tapeline_test::files_ending(
-             tapeline_test::shared_patterns_dir() + "/garmentcode", ".json")) {
-        out.push_back(f);
-    }
-    return out;
-}
-
-Pattern load_any(const std::string& path) {
-    return path.find("/garmentcode/") != std::string::npos ? read_garmentcode(path)
-                                                           : read_freesewing(path);
-}
-
 const std::string extractor = std::string(TAPELINE_DATA_DIR) + "/../tests/pattern/dxf_extract.py";
 
 /// ezdxf's reading of `dxf`; sets `skip` when python3-ezdxf is missing.
@@ -200,14 +180,14 @@ TEST(PatternDxf, TwoPiecePatternReadBackByEzdxf) {
 }
 
 TEST(PatternDxf, EverySharedPatternReadBackByEzdxf) {
-    const std::vector<std::string> files = shared_pattern_files();
+    const std::vector<std::string> files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
         GTEST_SKIP() << "shared pattern data absent";
     }
     TempDir dir;
     double worst_in = 0, worst_out = 0;
     for (const std::string& f : files) {
-        const Pattern pat = load_any(f);
+        const Pattern pat = tapeline_test::load_shared_pattern(f);
         bool skip = false;
         Deviation d;
         check_pattern(pat, dir.file(pat.name + ".dxf"), skip, d);

@@ -35,26 +35,6 @@ void expect_same(const Pattern& a, const Pattern& b) {
     }
 }
 
-std::vector<std::string> all_shared_patterns() {
-    std::vector<std::string> out;
-    for (const auto& f : tapeline_test::files_ending(
-             tapeline_test::shared_patterns_dir() + "/freesewing", ".json")) {
-        if (f.find("measurement_sets") == std::string::npos) {
-            out.push_back(f);
-        }
-    }
-    for (const auto& f : tapeline_test::files_ending(
-             tapeline_test::shared_patterns_dir() + "/garmentcode", ".json")) {
-        out.push_back(f);
-    }
-    return out;
-}
-
-Pattern load_any(const std::string& path) {
-    return path.find("/garmentcode/") != std::string::npos ? read_garmentcode(path)
-                                                           : read_freesewing(path);
-}
-
 void expect_invalid_json(const nlohmann::json& doc, std::initializer_list<std::string> parts) {
     try {
         from_json(doc, "p.json");
@@ -86,13 +66,13 @@ TEST(PatternJson, RoundTripIsExact) {
 }
 
 TEST(PatternJson, RoundTripOfEverySharedPattern) {
-    const auto files = all_shared_patterns();
+    const auto files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
         GTEST_SKIP() << "no shared patterns";
     }
     for (const std::string& path : files) {
         SCOPED_TRACE(path);
-        const Pattern p = load_any(path);
+        const Pattern p = tapeline_test::load_shared_pattern(path);
         const std::string text = to_json(p).dump();
         const Pattern q = from_json(nlohmann::json::parse(text), "memory");
         expect_same(p, q);
@@ -220,13 +200,13 @@ TEST(PatternSvg, WellFormedWithOneGroupPerPieceAndAScaleBar) {
 }
 
 TEST(PatternSvg, EverySharedPatternDrawsAndParses) {
-    const auto files = all_shared_patterns();
+    const auto files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
         GTEST_SKIP() << "no shared patterns";
     }
     for (const std::string& path : files) {
         SCOPED_TRACE(path);
-        const Pattern p = load_any(path);
+        const Pattern p = tapeline_test::load_shared_pattern(path);
         const xml::Element svg = xml::parse(to_svg(p), path + ".svg");
         std::size_t groups = 0;
         for (const xml::Element& c : svg.children) {

@@ -2,6 +2,8 @@
 // Header-only: the pattern module has no CGAL, so nothing needs compiling once.
 #pragma once
 
+#include <tapeline/pattern/io_freesewing.h>
+#include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <gtest/gtest.h>
@@ -37,6 +39,27 @@ inline std::vector<std::string> files_ending(const std::string& dir, const std::
     }
     std::sort(out.begin(), out.end());
     return out;
+}
+
+/// Every shared FreeSewing draft and GarmentCode specification (empty when ../shared is absent).
+inline std::vector<std::string> shared_pattern_files() {
+    std::vector<std::string> out;
+    for (const auto& f : files_ending(shared_patterns_dir() + "/freesewing", ".json")) {
+        if (f.find("measurement_sets") == std::string::npos) {
+            out.push_back(f);
+        }
+    }
+    for (const auto& f : files_ending(shared_patterns_dir() + "/garmentcode", ".json")) {
+        out.push_back(f);
+    }
+    return out;
+}
+
+/// Imports a file of shared_pattern_files() with the importer its folder calls for.
+inline tapeline::pattern::Pattern load_shared_pattern(const std::string& path) {
+    return path.find("/garmentcode/") != std::string::npos
+               ? tapeline::pattern::read_garmentcode(path)
+               : tapeline::pattern::read_freesewing(path);
 }
 
 inline std::string slurp(const std::string& path) {

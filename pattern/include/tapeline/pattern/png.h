@@ -352,23 +352,11 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
             for (std::size_t s = 0; s < pattern.seams.size(); ++s) {
                 const Seam& seam = pattern.seams[s];
                 for (const EdgeRange* rg : {&seam.a, &seam.b}) {
-                    const std::size_t ne = piece.outline.edges.size();
-                    if (rg->piece != piece.name || rg->first_edge >= ne || rg->count == 0) {
+                    const auto mark = internal::seam_mark(piece, *rg);
+                    if (!mark) {
                         continue;
                     }
-                    double half = 0.5 * length(piece, *rg);
-                    std::size_t e = rg->first_edge;
-                    for (std::size_t k = 0; k < rg->count; ++k) {
-                        e = (rg->first_edge + k) % ne;
-                        const double l = length(piece.outline.edges[e]);
-                        if (half <= l || k + 1 == rg->count) {
-                            break;
-                        }
-                        half -= l;
-                    }
-                    const Curve& c = piece.outline.edges[e].curve;
-                    const double t = parameter_at_length(c, half);
-                    const Point2 p = point_at(c, t), nrm = left_normal(tangent_at(c, t));
+                    const auto [p, nrm] = *mark;
                     cv.segment(map(p + (-3.0) * nrm), map(p + 3.0 * nrm), 0.5, red);
                     if (o.draw_text) {
                         cv.text(seam.name.empty() ? "seam " + std::to_string(s) : seam.name,

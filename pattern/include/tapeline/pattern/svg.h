@@ -14,9 +14,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tapeline::pattern {
@@ -123,6 +125,29 @@ struct Box {
     bool empty() const { return !(x0 <= x1); }
 };
 
+/// Where a seam mark goes on `piece` for one side `r` of a seam: the point halfway along the edge
+/// range by length and the left normal there. Empty when `r` is not on `piece` or names no edge.
+/// (The SVG and the PNG drawing both use it, so the marks are at the same place.)
+inline std::optional<std::pair<Point2, Point2>> seam_mark(const Piece& piece, const EdgeRange& r) {
+    const std::size_t ne = piece.outline.edges.size();
+    if (r.piece != piece.name || r.first_edge >= ne || r.count == 0) {
+        return std::nullopt;
+    }
+    double half = 0.5 * length(piece, r);
+    std::size_t e = r.first_edge;
+    for (std::size_t k = 0; k < r.count; ++k) {
+        e = (r.first_edge + k) % ne;
+        const double l = length(piece.outline.edges[e]);
+        if (half <= l || k + 1 == r.count) {
+            break;
+        }
+        half -= l;
+    }
+    const Curve& c = piece.outline.edges[e].curve;
+    const double t = parameter_at_length(c, half);
+    return std::make_pair(point_at(c, t), left_normal(tangent_at(c, t)));
+}
+
 }  // namespace internal
 
 /// Writes the drawing to `out`.
@@ -224,25 +249,11 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
             for (std::size_t s = 0; s < pattern.seams.size(); ++s) {
                 const Seam& seam = pattern.seams[s];
                 for (const EdgeRange* r : {&seam.a, &seam.b}) {
-                    const std::size_t ne = piece.outline.edges.size();
-                    if (r->piece != piece.name || r->first_edge >= ne || r->count == 0) {
+                    const auto mark = internal::seam_mark(piece, *r);
+                    if (!mark) {
                         continue;
                     }
-                    // Middle of the range by length.
-                    double half = 0.5 * length(piece, *r);
-                    std::size_t e = r->first_edge;
-                    for (std::size_t k = 0; k < r->count; ++k) {
-                        e = (r->first_edge + k) % ne;
-                        const double l = length(piece.outline.edges[e]);
-                        if (half <= l || k + 1 == r->count) {
-                            break;
-                        }
-                        half -= l;
-                    }
-                    const Curve& c = piece.outline.edges[e].curve;
-                    const double t = parameter_at_length(c, half);
-                    const Point2 p = point_at(c, t);
-                    const Point2 nrm = left_normal(tangent_at(c, t));
+                    const auto [p, nrm] = *mark;
                     const Point2 a = m(p + (-3.0) * nrm), d = m(p + 3.0 * nrm);
                     const Point2 lab = m(p + (inward * 8.0) * nrm);
                     const std::string name =
