@@ -9,14 +9,14 @@ out=${2:-$root/out/demo}
 mkdir -p "$out"
 
 echo "== distances on data/spot.obj from vertex 0, every method"
-for method in exact-cgal heat heat-idt dijkstra; do
+for method in exact-mmp exact-cgal heat heat-idt dijkstra; do
   "$bin" geodesic distances "$root/data/spot.obj" --source 0 --method "$method" \
       --out "$out/spot_$method.ply"
 done
-"$bin" geodesic distances "$root/data/spot.obj" --source 0 --method exact-cgal --out "$out/spot_exact-cgal.txt"
+"$bin" geodesic distances "$root/data/spot.obj" --source 0 --method exact-mmp --out "$out/spot_exact-mmp.txt"
 
 echo "== exact geodesic path on data/spot.obj"
-"$bin" geodesic path "$root/data/spot.obj" --from 0 --to 1500 --method exact-cgal --out "$out/spot_path.json"
+"$bin" geodesic path "$root/data/spot.obj" --from 0 --to 1500 --method exact-mmp --out "$out/spot_path.json"
 
 echo "== sewing patterns: import the bundled FreeSewing and GarmentCode patterns, export them"
 rm -f "$out/patterns.sqlite"*
@@ -28,7 +28,7 @@ rm -f "$out/patterns.sqlite"*
 
 echo "== side-by-side benchmark on small analytic surfaces"
 "$bin" bench geodesic --surface icosphere:3 --surface ellipsoid:1,1,0.5:3:0.2 --surface icosphere:4 \
-    --methods exact-cgal,heat,heat-idt,dijkstra --reference exact-cgal --sources 2 --repeat 3 \
+    --methods exact-mmp,exact-cgal,heat,heat-idt,dijkstra --reference exact-mmp --sources 2 --repeat 3 \
     --out "$out/bench.jsonl"
 /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$out/bench.jsonl" --out-dir "$out/bench" \
     --title "Demo: small analytic surfaces"
