@@ -7,8 +7,8 @@
 // the sphere; nothing here implements a paper.
 #pragma once
 
-#include <tapeline/core/errors.h>
 #include <tapeline/core/analytic_surface_types.h>
+#include <tapeline/core/errors.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/Euler_operations.h>
