@@ -12,6 +12,7 @@
 #include <tapeline_test/mmp.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/expect.h>
 
 #include <algorithm>
 #include <cmath>
@@ -61,23 +62,8 @@ void expect_agrees_with_cgal(const tg::Soup& soup, const tg::Sources& sources,
                 mmp.report.windows_peak);
 }
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-template <class E, class Call>
-void expect_error(Call call, const std::vector<std::string>& parts, const std::string& context) {
-    try {
-        call();
-        ADD_FAILURE() << context << ": no exception";
-    } catch (const E& e) {
-        for (const auto& p : parts)
-            EXPECT_TRUE(contains(e.what(), p))
-                << context << ": '" << e.what() << "' lacks '" << p << "'";
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << context << ": wrong exception type: " << e.what();
-    }
-}
+using tapeline_test::contains;
+using tapeline_test::expect_error;
 
 /// Flat grid with the faces whose centroid lies in the square [lo, hi]^2 removed (a hole; the
 /// vertices strictly inside become isolated).

@@ -4,6 +4,7 @@
 #include <tapeline_test/geodesic.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/expect.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,24 +19,8 @@ namespace {
 const tg::Method kAll[] = {tg::Method::exact, tg::Method::heat, tg::Method::heat_idt,
                            tg::Method::dijkstra};
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-// Runs `call` and checks that it throws E with every part in its message.
-template <class E, class Call>
-void expect_error(Call call, const std::vector<std::string>& parts, const std::string& context) {
-    try {
-        call();
-        ADD_FAILURE() << context << ": no exception";
-    } catch (const E& e) {
-        for (const auto& p : parts)
-            EXPECT_TRUE(contains(e.what(), p))
-                << context << ": '" << e.what() << "' lacks '" << p << "'";
-    } catch (const std::exception& e) {
-        ADD_FAILURE() << context << ": wrong exception type: " << e.what();
-    }
-}
+using tapeline_test::contains;
+using tapeline_test::expect_error;
 
 }  // namespace
 
