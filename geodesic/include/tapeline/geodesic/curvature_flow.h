@@ -1,0 +1,455 @@
+// Two-point geodesic paths by geodesic curvature flow: a sampled path between two surface points
+// is moved, samples within their tangent planes, until its geodesic curvature vanishes (the
+// discrete curve-shortening flow restricted to a surface). Follows the geodesic-curvature-flow
+// section of the project's virtual-clothing thesis draft (shared seed 000_cb1f07c4c9923062:
+// curvature from second differences of the polyline, tangent planes from the eigenvectors of the
+// face-normal matrix around the nearest vertex, one sparse least-squares system per step, samples
+// re-projected onto the faces around their nearest vertex); written from that description. The
+// smooth output uses Phong tessellation: T. Boubekeur, M. Alexa, "Phong tessellation", ACM TOG
+// 27(5), 2008.
+//
+// Two results: `on_mesh`, the samples on the faces joined by straight pieces traced across the
+// faces (plane cut through consecutive samples), a path on the polyhedron; and `smooth`, the
+// samples lifted by Phong tessellation with the vertex normals of the flow, a path on the
+// smooth surface the mesh approximates.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/geodesic/curvature_flow_types.h>
+#include <tapeline/geodesic/internal/gcf_engine.h>
+#include <tapeline/geodesic/internal/mesh_checks.h>
+#include <tapeline/geodesic/internal/named_parameters.h>
+#include <tapeline/geodesic/sources.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace tapeline::geodesic {
+
+template <class Point>
+struct CurvatureFlowPath {
+    GeodesicPath<Point> smooth;   ///< samples lifted towards the smooth surface
+    GeodesicPath<Point> on_mesh;  ///< samples on the faces, traced across the faces
+    CurvatureFlowReport report;
+};
+
+namespace internal {
+
+inline void check_options(const CurvatureFlowOptions& o) {
+    auto bad = [](const std::string& what) {
+        throw InvalidInput("geodesic_path (curvature flow): " + what);
+    };
+    if (!std::isfinite(o.sample_spacing) || o.sample_spacing < 0)
+        bad("sample_spacing must be finite and >= 0 (0 = mean edge length)");
+    if (o.sample_count != 0 && o.sample_count < 3)
+        bad("sample_count must be 0 (from the spacing) or >= 3");
+    if (!std::isfinite(o.step) || !(o.step > 0))
+        bad("step must be finite and > 0");
+    if (!std::isfinite(o.tolerance) || o.tolerance < 0)
+        bad("tolerance must be finite and >= 0");
+    if (!std::isfinite(o.update_tolerance) || o.update_tolerance < 0)
+        bad("update_tolerance must be finite and >= 0");
+    if (!std::isfinite(o.endpoint_weight) || !(o.endpoint_weight > 0))
+        bad("endpoint_weight must be finite and > 0");
+}
+
+template <class TriangleMesh, class NamedParameters>
+class GcfSetup {
+public:
+    using P = MeshParameters<TriangleMesh, NamedParameters>;
+    using GT = boost::graph_traits<TriangleMesh>;
+    using Index = MeshIndex<TriangleMesh, typename P::VertexIndexMap, typename P::FaceIndexMap>;
+    using Point_3 = typename P::Point_3;
+    using vertex_descriptor = typename GT::vertex_descriptor;
+
+    static constexpr const char* kWhere = "geodesic_path (curvature flow)";
+
+    GcfSetup(const TriangleMesh& tm, const NamedParameters& np)
+        : vpm_(P::vertex_point_map(tm, np)),
+          index_(tm, P::vertex_index_map(tm, np), P::face_index_map(tm, np), kWhere) {
+        check_triangle_mesh(tm, vpm_, index_.vertex_index_map(), index_.face_index_map(), kWhere);
+        const std::size_t nv = index_.vertex_count(), nf = index_.face_count();
+        if (nv >= gcf::kNone / 2 || 3 * nf >= gcf::kNone / 2)
+            throw InvalidInput(std::string(kWhere) + ": the mesh is too large (32-bit indices)");
+        if (nf == 0)
+            throw InvalidInput(std::string(kWhere) + ": the mesh has no faces");
+        mesh_.xyz.resize(nv);
+        for (std::size_t i = 0; i < nv; ++i) {
+            const auto& p = get(vpm_, index_.vertex(i));
+            mesh_.xyz[i] =
+                gcf::Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+        }
+        mesh_.corner.resize(3 * nf);
+        mesh_.across.assign(3 * nf, gcf::kNone);
+        std::vector<std::uint32_t> vf_count(nv + 1, 0);
+        for (std::size_t fi = 0; fi < nf; ++fi) {
+            auto h = halfedge(index_.face(fi), tm);
+            for (int k = 0; k < 3; ++k, h = next(h, tm)) {
+                const auto v = static_cast<std::uint32_t>(index_.index(source(h, tm)));
+                mesh_.corner[3 * fi + k] = v;
+                ++vf_count[v + 1];
+                const auto g = face(opposite(h, tm), tm);
+                if (g != GT::null_face())
+                    mesh_.across[3 * fi + k] = static_cast<std::uint32_t>(index_.index(g));
+            }
+        }
+        mesh_.vf_start.assign(nv + 1, 0);
+        for (std::size_t i = 0; i < nv; ++i)
+            mesh_.vf_start[i + 1] = mesh_.vf_start[i] + vf_count[i + 1];
+        mesh_.vf.resize(mesh_.vf_start[nv]);
+        std::vector<std::uint32_t> fill(mesh_.vf_start.begin(), mesh_.vf_start.end() - 1);
+        for (std::size_t fi = 0; fi < nf; ++fi)
+            for (int k = 0; k < 3; ++k)
+                mesh_.vf[fill[mesh_.corner[3 * fi + k]]++] = static_cast<std::uint32_t>(fi);
+        // Neighbours over edges (border edges included).
+        mesh_.vv_start.assign(nv + 1, 0);
+        for (std::size_t i = 0; i < nv; ++i) {
+            const auto v = index_.vertex(i);
+            std::size_t deg = 0;
+            if (halfedge(v, tm) != GT::null_halfedge())
+                for (auto h : CGAL::halfedges_around_target(v, tm)) {
+                    (void)h;
+                    ++deg;
+                }
+            mesh_.vv_start[i + 1] = mesh_.vv_start[i] + static_cast<std::uint32_t>(deg);
+        }
+        mesh_.vv.resize(mesh_.vv_start[nv]);
+        double edge_sum = 0;
+        std::size_t edge_count = 0;
+        for (std::size_t i = 0; i < nv; ++i) {
+            const auto v = index_.vertex(i);
+            std::size_t k = mesh_.vv_start[i];
+            if (halfedge(v, tm) != GT::null_halfedge())
+                for (auto h : CGAL::halfedges_around_target(v, tm)) {
+                    const auto w = static_cast<std::uint32_t>(index_.index(source(h, tm)));
+                    mesh_.vv[k++] = w;
+                    edge_sum += (mesh_.xyz[w] - mesh_.xyz[i]).norm();
+                    ++edge_count;
+                }
+        }
+        mesh_.mean_edge = edge_count ? edge_sum / static_cast<double>(edge_count) : 0.0;
+        mesh_.finish();
+        components_ = connected_components(tm, index_);
+    }
+
+    /// Position, a nearby vertex and the face of a user surface point (checked).
+    gcf::Sample locate(const SurfacePoint<TriangleMesh>& sp, const char* what) const {
+        gcf::Sample s;
+        if (const auto* v = std::get_if<vertex_descriptor>(&sp)) {
+            const std::size_t i = index_.checked(*v, what);
+            if (mesh_.vf_start[i] == mesh_.vf_start[i + 1]) {
+                std::ostringstream m;
+                m << kWhere << ": " << what << " (vertex #" << i << ") has no incident face";
+                throw InvalidInput(m.str());
+            }
+            s.p = mesh_.xyz[i];
+            s.vertex = static_cast<std::uint32_t>(i);
+            s.face = mesh_.vf[mesh_.vf_start[i]];
+            return s;
+        }
+        const auto loc = index_.checked(std::get<FaceLocation<TriangleMesh>>(sp), what);
+        const std::size_t f = index_.index(loc.first);
+        s.p = gcf::Vec3::Zero();
+        double best = -1;
+        for (int k = 0; k < 3; ++k) {
+            s.p += loc.second[k] * mesh_.xyz[mesh_.corner[3 * f + k]];
+            if (loc.second[k] > best) {
+                best = loc.second[k];
+                s.vertex = mesh_.corner[3 * f + k];
+            }
+        }
+        s.face = static_cast<std::uint32_t>(f);
+        return s;
+    }
+
+    /// Nearest vertex of an arbitrary point by brute force, then the face it projects onto.
+    gcf::Sample locate_point(const gcf::Vec3& p) const {
+        gcf::Sample s;
+        s.p = p;
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < mesh_.vertex_count(); ++i) {
+            if (mesh_.vf_start[i] == mesh_.vf_start[i + 1])
+                continue;
+            const double d = (mesh_.xyz[i] - p).squaredNorm();
+            if (d < best) {
+                best = d;
+                s.vertex = static_cast<std::uint32_t>(i);
+            }
+        }
+        gcf::project_around(mesh_, s);
+        return s;
+    }
+
+    const gcf::Mesh& mesh() const { return mesh_; }
+    const Components& components() const { return components_; }
+
+private:
+    typename P::VertexPointMap vpm_;
+    Index index_;
+    gcf::Mesh mesh_;
+    Components components_;
+};
+
+template <class Point>
+Point to_point(const gcf::Vec3& v) {
+    return Point(v.x(), v.y(), v.z());
+}
+
+/// The flow from an initial polyline (pts with vertex hints); endpoints are a and b.
+template <class Point, class Setup>
+CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, const gcf::Sample& b,
+                                  std::vector<gcf::Vec3> pts, std::vector<std::uint32_t> hints,
+                                  const CurvatureFlowOptions& o, Clock::time_point t0) {
+    const gcf::Mesh& m = setup.mesh();
+    CurvatureFlowPath<Point> out;
+    CurvatureFlowReport& r = out.report;
+    r.vertices = m.vertex_count();
+    r.faces = m.face_count();
+    r.solver = to_string(o.solver);
+    r.initial_length = gcf::polyline_length(pts);
+    const double h = m.mean_edge > 0 ? m.mean_edge : 1.0;
+    const double spacing = o.sample_spacing > 0 ? o.sample_spacing : h;
+    std::size_t count = o.sample_count;
+    if (count == 0)
+        count = std::max<std::size_t>(
+            3, static_cast<std::size_t>(std::llround(r.initial_length / spacing)) + 1);
+    std::vector<gcf::Sample> s = gcf::resample(pts, hints, count);
+    s.front() = a;
+    s.back() = b;
+    for (std::size_t i = 1; i + 1 < s.size(); ++i) {
+        s[i].vertex = gcf::nearest_vertex_walk(m, s[i].p, s[i].vertex);
+        gcf::project_around(m, s[i]);
+    }
+    r.samples = s.size();
+    r.init_seconds = seconds_since(t0);
+    const auto t1 = Clock::now();
+    auto spacing_now = [&]() {
+        double len = 0;
+        for (std::size_t i = 1; i < s.size(); ++i)
+            len += (s[i].p - s[i - 1].p).norm();
+        return len / static_cast<double>(s.size() - 1);
+    };
+    auto scaled = [&](double k) {
+        const double dh = spacing_now();
+        return dh > 0 ? k / (dh * dh) * h : 0.0;
+    };
+    double kmax = 0, res = 0;
+    gcf::curvature(m, s, o.interpolate_normals, kmax, res);
+    r.status = "max_iterations";
+    if (scaled(kmax) <= o.tolerance)
+        r.status = "converged";
+    // Full steps (options.step): a Levenberg-Marquardt safeguard (undo a step that raises the
+    // residual, retry with a smaller step) was tried and converged less often: the residual after
+    // re-projection is not the quantity the linearised step decreases.
+    while (r.status != "converged" && r.iterations < o.max_iterations) {
+        double upd = 0;
+        if (!gcf::flow_step(m, s, o, o.step, upd))
+            throw SolverFailure(std::string(Setup::kWhere) + ": the " + r.solver +
+                                " solve failed at iteration " + std::to_string(r.iterations));
+        ++r.iterations;
+        r.max_update = upd;
+        gcf::curvature(m, s, o.interpolate_normals, kmax, res);
+        if (scaled(kmax) <= o.tolerance) {
+            r.status = "converged";
+            break;
+        }
+        if (upd <= o.update_tolerance * h) {
+            r.status = "stalled";
+            break;
+        }
+    }
+    const double dh = spacing_now();
+    r.max_geodesic_curvature = dh > 0 ? kmax / (dh * dh) : 0.0;
+    r.scaled_max_geodesic_curvature = r.max_geodesic_curvature * h;
+    r.residual = res;
+    r.flow_seconds = seconds_since(t1);
+
+    // Outputs. Endpoints are the given points exactly.
+    std::vector<gcf::Vec3> smooth(s.size()), traced;
+    for (std::size_t i = 0; i < s.size(); ++i)
+        smooth[i] = (i == 0 || i + 1 == s.size()) ? s[i].p : gcf::phong_lift(m, s[i].face, s[i].p);
+    traced.push_back(s.front().p);
+    for (std::size_t i = 1; i < s.size(); ++i) {
+        const gcf::Vec3 n0 = m.frame(s[i - 1].vertex).col(2), n1 = m.frame(s[i].vertex).col(2);
+        const gcf::Vec3 nrm = n0 + (n0.dot(n1) < 0 ? gcf::Vec3(-n1) : n1);
+        // A sample on an edge or at a vertex lies on several faces, and the plane cut must start
+        // in the one the segment enters: try every face around its vertex that holds it and keep
+        // the shortest successful trace.
+        std::vector<gcf::Vec3> best, tmp;
+        double best_len = std::numeric_limits<double>::infinity();
+        bool ok = false;
+        const auto& prev = s[i - 1];
+        for (std::uint32_t k = m.vf_start[prev.vertex]; k < m.vf_start[prev.vertex + 1]; ++k) {
+            const std::uint32_t f = m.vf[k];
+            if (f != prev.face && !gcf::on_face(m, f, prev.p))
+                continue;
+            tmp.assign(1, prev.p);
+            const bool traced_ok = gcf::trace_segment(m, prev.p, f, s[i].p, s[i].face, nrm, tmp);
+            const double len = gcf::polyline_length(tmp);
+            if ((traced_ok && !ok) || (traced_ok == ok && len < best_len)) {
+                ok = traced_ok;
+                best_len = len;
+                best.swap(tmp);
+            }
+        }
+        if (best.empty())  // the sample's face is not around its vertex (cannot happen): a chord
+            best = {prev.p, s[i].p};
+        if (!ok)
+            ++r.trace_fallbacks;
+        traced.insert(traced.end(), best.begin() + 1, best.end());
+    }
+    for (const auto& p : smooth)
+        out.smooth.points.push_back(to_point<Point>(p));
+    out.smooth.length = gcf::polyline_length(smooth);
+    for (const auto& p : traced)
+        out.on_mesh.points.push_back(to_point<Point>(p));
+    out.on_mesh.length = gcf::polyline_length(traced);
+    r.seconds = seconds_since(t0);
+    return out;
+}
+
+}  // namespace internal
+
+/// Reusable part of the flow: the checked index maps, the compact mesh arrays, the components and
+/// the vertex frames (computed on first use and kept). Build once, query many pairs: a query then
+/// costs one Dijkstra run and the iterations. Queries are not thread-safe (the frame cache).
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+class GeodesicPathSolver {
+public:
+    using Setup = internal::GcfSetup<TriangleMesh, NamedParameters>;
+    using Point_3 = typename Setup::Point_3;
+    using Result = CurvatureFlowPath<Point_3>;
+
+    explicit GeodesicPathSolver(const TriangleMesh& tm,
+                                const NamedParameters& np = CGAL::parameters::default_values())
+        : setup_(tm, np) {}
+
+    /// Path between two surface points, started from the Dijkstra edge path between their
+    /// nearest corners. Endpoints in different components give empty paths (length +infinity)
+    /// and status "unreachable". InvalidInput on bad options, points not on the mesh, from == to.
+    Result path(const SurfacePoint<TriangleMesh>& from, const SurfacePoint<TriangleMesh>& to,
+                const CurvatureFlowOptions& options = {}) const {
+        const auto t0 = internal::Clock::now();
+        internal::check_options(options);
+        const auto a = setup_.locate(from, "the start point");
+        const auto b = setup_.locate(to, "the end point");
+        const auto& m = setup_.mesh();
+        check_distinct(a, b);
+        if (setup_.components().label[a.vertex] != setup_.components().label[b.vertex]) {
+            Result out;
+            out.report.vertices = m.vertex_count();
+            out.report.faces = m.face_count();
+            out.report.status = "unreachable";
+            out.report.solver = to_string(options.solver);
+            out.report.seconds = internal::seconds_since(t0);
+            return out;
+        }
+        const auto verts = internal::gcf::edge_path(m, a.vertex, b.vertex);
+        std::vector<internal::gcf::Vec3> pts{a.p};
+        std::vector<std::uint32_t> hints{a.vertex};
+        for (auto v : verts) {
+            if ((m.xyz[v] - pts.back()).norm() > 0) {
+                pts.push_back(m.xyz[v]);
+                hints.push_back(v);
+            }
+        }
+        if ((b.p - pts.back()).norm() > 0) {
+            pts.push_back(b.p);
+            hints.push_back(b.vertex);
+        }
+        return internal::run_flow<Point_3>(setup_, a, b, std::move(pts), std::move(hints), options,
+                                           t0);
+    }
+
+    /// Path started from a caller-given polyline (at least two points, in the same component).
+    /// Its first and last points, projected onto the faces around their nearest vertex, are the
+    /// endpoints.
+    template <class PointRange>
+    Result path_from_polyline(const PointRange& initial,
+                              const CurvatureFlowOptions& options = {}) const {
+        const auto t0 = internal::Clock::now();
+        internal::check_options(options);
+        const auto& m = setup_.mesh();
+        std::vector<internal::gcf::Vec3> pts;
+        for (const auto& p : initial) {
+            const internal::gcf::Vec3 v(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                        CGAL::to_double(p.z()));
+            if (!v.allFinite())
+                throw InvalidInput(std::string(Setup::kWhere) +
+                                   ": the initial polyline has a non-finite point");
+            pts.push_back(v);
+        }
+        if (pts.size() < 2)
+            throw InvalidInput(std::string(Setup::kWhere) +
+                               ": the initial polyline needs at least two points");
+        const auto a = setup_.locate_point(pts.front());
+        std::vector<std::uint32_t> hints{a.vertex};
+        for (std::size_t i = 1; i < pts.size(); ++i)
+            hints.push_back(internal::gcf::nearest_vertex_walk(m, pts[i], hints.back()));
+        internal::gcf::Sample b;
+        b.p = pts.back();
+        b.vertex = hints.back();
+        internal::gcf::project_around(m, b);
+        pts.front() = a.p;
+        pts.back() = b.p;
+        check_distinct(a, b);
+        return internal::run_flow<Point_3>(setup_, a, b, std::move(pts), std::move(hints), options,
+                                           t0);
+    }
+
+    std::size_t vertex_count() const { return setup_.mesh().vertex_count(); }
+    double mean_edge_length() const { return setup_.mesh().mean_edge; }
+
+private:
+    void check_distinct(const internal::gcf::Sample& a, const internal::gcf::Sample& b) const {
+        if ((a.p - b.p).norm() <= 1e-12 * setup_.mesh().mean_edge)
+            throw InvalidInput(
+                std::string(Setup::kWhere) +
+                ": the start and end points coincide; a path needs two distinct points");
+    }
+
+    Setup setup_;
+};
+
+/// One-shot: geodesic path between two surface points by geodesic curvature flow (see
+/// GeodesicPathSolver::path). The report's init_seconds include the mesh preparation.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+CurvatureFlowPath<typename internal::MeshParameters<TriangleMesh, NamedParameters>::Point_3>
+geodesic_path(const TriangleMesh& tm, const SurfacePoint<TriangleMesh>& from,
+              const SurfacePoint<TriangleMesh>& to, const CurvatureFlowOptions& options = {},
+              const NamedParameters& np = CGAL::parameters::default_values()) {
+    const auto t0 = internal::Clock::now();
+    internal::check_options(options);
+    const GeodesicPathSolver<TriangleMesh, NamedParameters> solver(tm, np);
+    const double prep = internal::seconds_since(t0);
+    auto out = solver.path(from, to, options);
+    out.report.init_seconds += prep;
+    out.report.seconds += prep;
+    return out;
+}
+
+/// One-shot, started from a caller-given polyline (see GeodesicPathSolver::path_from_polyline).
+template <class TriangleMesh, class Point,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+CurvatureFlowPath<typename internal::MeshParameters<TriangleMesh, NamedParameters>::Point_3>
+geodesic_path(const TriangleMesh& tm, const std::vector<Point>& initial,
+              const CurvatureFlowOptions& options = {},
+              const NamedParameters& np = CGAL::parameters::default_values()) {
+    const auto t0 = internal::Clock::now();
+    internal::check_options(options);
+    const GeodesicPathSolver<TriangleMesh, NamedParameters> solver(tm, np);
+    const double prep = internal::seconds_since(t0);
+    auto out = solver.path_from_polyline(initial, options);
+    out.report.init_seconds += prep;
+    out.report.seconds += prep;
+    return out;
+}
+
+}  // namespace tapeline::geodesic

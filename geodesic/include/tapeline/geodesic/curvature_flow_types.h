@@ -1,0 +1,90 @@
+// Options and report of two-point geodesic paths by geodesic curvature flow (curvature_flow.h).
+//
+// Light header without CGAL (DESIGN.md §3): loggers, benchmark drivers and test facades include it
+// to read and print what the flow did without paying for the CGAL templates.
+#pragma once
+
+#include <tapeline/geodesic/geodesic_types.h>
+
+#include <cstddef>
+#include <string>
+
+namespace tapeline::geodesic {
+
+/// Linear least-squares solver of one flow step.
+enum class CurvatureFlowSolver {
+    /// Normal equations AᵀA x = Aᵀb, Eigen::SimplicialLDLT. The system is block banded (2x2 blocks,
+    /// five block diagonals), so the factorisation is linear in the sample count. Default: measured
+    /// 3.3x faster per iteration than SparseQR and 5.7x faster than LSCG (icosphere:5, 75
+    /// samples), with the same path; the squared conditioning is harmless at these sizes.
+    eigen_normal_ldlt,
+    /// Eigen::SparseQR on the overdetermined system itself (better conditioned, slower).
+    eigen_sparse_qr,
+    /// Eigen::LeastSquaresConjugateGradient (iterative; no factorisation).
+    eigen_lscg,
+};
+
+inline const char* to_string(CurvatureFlowSolver s) {
+    switch (s) {
+        case CurvatureFlowSolver::eigen_sparse_qr:
+            return "eigen_sparse_qr";
+        case CurvatureFlowSolver::eigen_lscg:
+            return "eigen_lscg";
+        default:
+            return "eigen_normal_ldlt";
+    }
+}
+
+/// Behaviour of the flow. Lengths are in the mesh's unit.
+struct CurvatureFlowOptions {
+    /// Target spacing of the samples; 0 picks the mean edge length of the mesh.
+    double sample_spacing = 0;
+    /// Number of samples including both endpoints (>= 3); 0 derives it from sample_spacing.
+    std::size_t sample_count = 0;
+    /// Step size mu (> 0, dimensionless). Each step minimises
+    ///   sum_i |T_iᵀ (second difference of p + delta)_i|^2 + (1/mu) sum_i |a_i|^2
+    /// over tangent moves delta_i = T_i a_i, i.e. an implicit (backward Euler) step of the flow
+    /// damped by 1/mu; mu -> infinity is a Gauss-Newton step on "zero geodesic curvature".
+    /// Large by default: the smallest eigenvalue of the second-difference system is ~(pi/m)^4 for
+    /// m samples, and a damping 1/mu above it slows the long-wavelength modes to a crawl (mu = 10
+    /// did not converge in 200 steps on icosphere:5; mu = 1e6 converges in 2-32 steps).
+    double step = 1e6;
+    /// Convergence: max |geodesic curvature| times the mean edge length (dimensionless) below this.
+    double tolerance = 1e-4;
+    /// Also stop (status "stalled") when no sample moved farther than this times the mean edge
+    /// length in a step (displacement after re-projection).
+    double update_tolerance = 1e-10;
+    std::size_t max_iterations = 200;
+    /// Weight of the rows that hold the two endpoints in place (> 0). The endpoints are
+    /// additionally reset exactly after every step.
+    double endpoint_weight = 1e4;
+    CurvatureFlowSolver solver = CurvatureFlowSolver::eigen_normal_ldlt;
+    /// Tangent plane of a sample: false takes the one of its nearest vertex (the thesis' rule);
+    /// true blends the vertex normals of the sample's face by its barycentric coordinates, a
+    /// normal field that does not jump when the nearest vertex changes.
+    bool interpolate_normals = false;
+};
+
+/// What one flow did. Times are wall-clock seconds.
+struct CurvatureFlowReport {
+    std::size_t vertices = 0;
+    std::size_t faces = 0;
+    std::size_t samples = 0;            ///< samples of the path, endpoints included
+    std::size_t iterations = 0;         ///< flow steps taken
+    double initial_length = 0;          ///< length of the initial (edge or given) path
+    double max_geodesic_curvature = 0;  ///< final max |kappa_g| over interior samples (1/length)
+    double scaled_max_geodesic_curvature = 0;  ///< the same times the mean edge length
+    double residual = 0;                       ///< final sqrt(sum_i |T_iᵀ second difference_i|^2)
+    double max_update = 0;                     ///< largest sample displacement of the last step
+    std::size_t trace_fallbacks = 0;  ///< on-mesh segments that could not be traced (chords)
+    double init_seconds = 0;          ///< mesh arrays, Dijkstra, resampling
+    double flow_seconds = 0;          ///< the iterations
+    double seconds = 0;               ///< total
+    /// "converged" (curvature below tolerance), "stalled" (moves below update_tolerance first,
+    /// e.g. at sharp features where the re-projection undoes the tangent move),
+    /// "max_iterations", "unreachable" (endpoints in different components: empty paths)
+    std::string status = "ok";
+    std::string solver;
+};
+
+}  // namespace tapeline::geodesic

@@ -1,0 +1,49 @@
+// Test facade for geodesic paths by geodesic curvature flow (DESIGN.md §5): plain functions
+// compiled once in tapeline_test_support_geodesic (support/geodesic_gcf.cpp); test files include
+// gtest and this. Meshes and surface points are the plain types of tapeline_test/geodesic.h.
+#pragma once
+
+#include <tapeline/geodesic/curvature_flow_types.h>
+#include <tapeline_test/geodesic.h>
+
+#include <utility>
+#include <vector>
+
+namespace tapeline_test::geodesic {
+
+using tapeline::geodesic::CurvatureFlowOptions;
+using tapeline::geodesic::CurvatureFlowReport;
+using tapeline::geodesic::CurvatureFlowSolver;
+
+struct GcfResult {
+    PathResult smooth;   ///< samples lifted towards the smooth surface (distance = length)
+    PathResult on_mesh;  ///< path traced on the faces (distance = length)
+    CurvatureFlowReport report;
+};
+
+/// The free function geodesic_path (curvature flow) between two surface points.
+GcfResult gcf_path(const Soup& soup, const SurfacePoint& from, const SurfacePoint& to,
+                   const CurvatureFlowOptions& options = {},
+                   MeshKind kind = MeshKind::surface_mesh);
+
+/// Same, with every named parameter spelled out (vertex_point_map, vertex_index_map,
+/// face_index_map, geom_traits) on a Surface_mesh.
+GcfResult gcf_path_with_named_parameters(const Soup& soup, const SurfacePoint& from,
+                                         const SurfacePoint& to);
+
+/// The geodesic_path overload started from a caller-given polyline.
+GcfResult gcf_path_from_polyline(const Soup& soup, const std::vector<Vec3>& initial,
+                                 const CurvatureFlowOptions& options = {},
+                                 MeshKind kind = MeshKind::surface_mesh);
+
+/// One GeodesicPathSolver built once (prepare_seconds), queried for every pair.
+struct GcfQueries {
+    double prepare_seconds = 0;
+    std::vector<GcfResult> paths;
+};
+GcfQueries gcf_paths(const Soup& soup,
+                     const std::vector<std::pair<SurfacePoint, SurfacePoint>>& pairs,
+                     const CurvatureFlowOptions& options = {},
+                     MeshKind kind = MeshKind::surface_mesh);
+
+}  // namespace tapeline_test::geodesic
