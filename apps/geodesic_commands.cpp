@@ -22,6 +22,7 @@ namespace tapeline::app {
 // this translation unit).
 nlohmann::json exact_cgal_path_json(const Mesh& mesh, Vertex from, Vertex to);
 nlohmann::json exact_mmp_path_json(const Mesh& mesh, Vertex from, Vertex to);
+nlohmann::json gcf_path_json(const Mesh& mesh, Vertex from, Vertex to);
 
 namespace {
 
@@ -152,9 +153,10 @@ void run_path(const PathArgs& args) {
     const Vertex from = vertices_of(input, args.from, "--from").front();
     const Vertex to = vertices_of(input, args.to, "--to").front();
     const auto start = std::chrono::steady_clock::now();
-    nlohmann::json j = args.method == "exact-mmp"
-                           ? exact_mmp_path_json(input.loaded.mesh, from, to)
-                           : exact_cgal_path_json(input.loaded.mesh, from, to);
+    nlohmann::json j = args.method == "exact-mmp" ? exact_mmp_path_json(input.loaded.mesh, from, to)
+                       : args.method == "exact-cgal"
+                           ? exact_cgal_path_json(input.loaded.mesh, from, to)
+                           : gcf_path_json(input.loaded.mesh, from, to);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     j["method"] = args.method;
@@ -190,12 +192,15 @@ void register_geodesic_commands(CLI::App& app) {
     dist->callback([d] { run_distances(*d); });
 
     auto p = std::make_shared<PathArgs>();
-    CLI::App* path = geo->add_subcommand("path", "Shortest geodesic path between two vertices");
+    CLI::App* path = geo->add_subcommand(
+        "path",
+        "Geodesic path between two vertices: exact polyhedral (exact-mmp, exact-cgal) or by "
+        "geodesic curvature flow (gcf: also the smooth polyline and the flow's report)");
     add_mesh_args(path, p->mesh);
     path->add_option("--from", p->from, "Start vertex (index in the input file)")->required();
     path->add_option("--to", p->to, "End vertex (index in the input file)")->required();
     path->add_option("--method", p->method, "Method (default exact-mmp)")
-        ->check(CLI::IsMember({"exact-mmp", "exact-cgal"}));
+        ->check(CLI::IsMember({"exact-mmp", "exact-cgal", "gcf"}));
     path->add_option("--out,-o", p->out, "Output JSON: points and length")->required();
     path->callback([p] { run_path(*p); });
 }
