@@ -313,11 +313,9 @@ inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfO
                                    "' notch '" + n.name + "' names missing edge " +
                                    std::to_string(n.edge));
             }
-            const Curve& c = piece.outline.edges[n.edge].curve;
-            const double t = parameter_at_length(c, n.offset);
-            const Point2 p = point_at(c, t);
-            w.line(notch_layer(n.kind), p,
-                   p + (inward * o.notch_length_mm) * left_normal(tangent_at(c, t)));
+            const auto [p, q] =
+                notch_mark(piece.outline.edges[n.edge].curve, n.offset, inward, o.notch_length_mm);
+            w.line(notch_layer(n.kind), p, q);
             ++rep.notches;
         }
         if (piece.fold) {

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -463,6 +464,15 @@ inline std::optional<Point2> segment_intersection(const Point2& a, const Point2&
         return std::nullopt;
     }
     return a + t * r;
+}
+
+/// A notch mark at arc length `offset` along `c`: from the curve point, `length` mm to the side
+/// `inward` (+1: left of the direction of travel, −1: right). SVG, PNG and DXF draw the same mark.
+inline std::pair<Point2, Point2> notch_mark(const Curve& c, double offset, double inward,
+                                            double length) {
+    const double t = parameter_at_length(c, offset);
+    const Point2 p = point_at(c, t);
+    return {p, p + (inward * length) * left_normal(tangent_at(c, t))};
 }
 
 }  // namespace tapeline::pattern

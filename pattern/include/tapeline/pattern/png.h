@@ -341,12 +341,9 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
             if (n.edge >= piece.outline.edges.size()) {
                 continue;
             }
-            const Curve& c = piece.outline.edges[n.edge].curve;
-            const double t = parameter_at_length(c, n.offset);
-            const Point2 p = point_at(c, t);
-            cv.segment(map(p),
-                       map(p + (inward * o.layout.notch_length_mm) * left_normal(tangent_at(c, t))),
-                       0.5, black);
+            const auto [p, q] = notch_mark(piece.outline.edges[n.edge].curve, n.offset, inward,
+                                           o.layout.notch_length_mm);
+            cv.segment(map(p), map(q), 0.5, black);
         }
         if (o.layout.seam_marks) {
             for (std::size_t s = 0; s < pattern.seams.size(); ++s) {

@@ -236,10 +236,8 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
             if (n.edge >= piece.outline.edges.size()) {
                 continue;
             }
-            const Curve& c = piece.outline.edges[n.edge].curve;
-            const double t = parameter_at_length(c, n.offset);
-            const Point2 p = point_at(c, t);
-            const Point2 q = p + (inward * options.notch_length_mm) * left_normal(tangent_at(c, t));
+            const auto [p, q] = notch_mark(piece.outline.edges[n.edge].curve, n.offset, inward,
+                                           options.notch_length_mm);
             const Point2 a = m(p), e = m(q);
             out << "<line class=\"notch\" data-name=\"" << svg_escape(n.name) << "\" x1=\""
                 << num(a.x) << "\" y1=\"" << num(a.y) << "\" x2=\"" << num(e.x) << "\" y2=\""
