@@ -45,14 +45,16 @@ struct MethodResult {
 const std::vector<std::string>& distance_methods();
 /// Runs `method` ("exact-mmp", "exact-cgal", "heat", "heat-idt", "dijkstra"); throws InvalidInput
 /// for an unknown name or a source the method cannot take.
+/// `window` is the window of gcf-window (samples flowed per vertex).
 MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
-                                 const Sources& sources);
+                                 const Sources& sources, std::size_t window = 8);
 
 // One entry point per method family, each in its own translation unit (compile in parallel).
 MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources);
 MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources);
 MethodResult run_heat(const Mesh& mesh, const Sources& sources, bool intrinsic_delaunay);
 MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
+MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window);
 
 /// Peak and current resident set size of this process, in bytes (0 when unknown).
 std::size_t current_rss_bytes();

@@ -46,6 +46,7 @@ struct BenchArgs {
     std::uint64_t seed = 1;
     double timeout = 0;
     double memory_limit_gb = 0;
+    std::size_t window = 8;
     bool append = false;
 };
 
@@ -419,7 +420,8 @@ void run_bench(const BenchArgs& args) {
                         [&](nlohmann::json& fields, std::vector<double>& distances_out) {
                             Sources sources;
                             sources.vertices.push_back(src);
-                            MethodResult r = run_distance_method(method, mesh, sources);
+                            MethodResult r =
+                                run_distance_method(method, mesh, sources, args.window);
                             fields["pre_seconds"] = r.report.pre_seconds;
                             fields["query_seconds"] = r.report.query_seconds;
                             fields["unreachable"] = r.report.unreachable;
@@ -462,6 +464,8 @@ void run_bench(const BenchArgs& args) {
                         options["intrinsic_delaunay"] = true;
                     } else if (method == "heat") {
                         options["intrinsic_delaunay"] = false;
+                    } else if (method == "gcf-window") {
+                        options["window"] = args.window;
                     }
                     line["options"] = options;
                     for (const char* key :
@@ -542,6 +546,8 @@ void register_bench_commands(CLI::App& app) {
     geo->add_option("--memory-limit", a->memory_limit_gb,
                     "Address-space limit of each run in GB (0: none); a run beyond it is a crash "
                     "with the message 'out of memory'")
+        ->capture_default_str();
+    geo->add_option("--window", a->window, "Samples flowed per vertex by gcf-window")
         ->capture_default_str();
     geo->add_flag("--append", a->append, "Append to --out instead of replacing it");
     geo->add_option("--out,-o", a->out, "JSON-lines output")->required();

@@ -105,6 +105,7 @@ struct DistancesArgs {
     std::vector<long> sources;
     std::vector<std::string> source_points;
     std::string method = "exact-mmp";
+    std::size_t window = 8;
     std::string out;
 };
 
@@ -125,7 +126,7 @@ void run_distances(const DistancesArgs& args) {
     if (sources.vertices.empty() && sources.locations.empty()) {
         throw InvalidInput("give at least one --source V or --source-point F:B0,B1,B2");
     }
-    MethodResult result = run_distance_method(args.method, input.loaded.mesh, sources);
+    MethodResult result = run_distance_method(args.method, input.loaded.mesh, sources, args.window);
     const std::vector<double> in_order = input.loaded.to_input_order(result.distances);
     write_distances(args.out, input.loaded.mesh, result.distances, in_order);
     double max_d = 0;
@@ -185,6 +186,8 @@ void register_geodesic_commands(CLI::App& app) {
         "Source point FACE:B0,B1,B2 in a face of the loaded triangle mesh (repeatable)");
     dist->add_option("--method", d->method, "Method (default exact-mmp)")
         ->check(CLI::IsMember(distance_methods()));
+    dist->add_option("--window", d->window, "Samples flowed per vertex by gcf-window")
+        ->capture_default_str();
     dist->add_option("--out,-o", d->out,
                      "Output: .txt (one distance per input vertex per line, inf if unreachable) "
                      "or .ply (mesh coloured by distance)")

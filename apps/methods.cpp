@@ -5,13 +5,13 @@
 namespace tapeline::app {
 
 const std::vector<std::string>& distance_methods() {
-    static const std::vector<std::string> methods = {"exact-mmp", "exact-cgal", "heat", "heat-idt",
-                                                     "dijkstra"};
+    static const std::vector<std::string> methods = {
+        "exact-mmp", "exact-cgal", "heat", "heat-idt", "dijkstra", "gcf-exact", "gcf-window"};
     return methods;
 }
 
 MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
-                                 const Sources& sources) {
+                                 const Sources& sources, std::size_t window) {
     if (method == "exact-mmp") {
         return run_exact_mmp(mesh, sources);
     }
@@ -26,6 +26,15 @@ MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
     }
     if (method == "dijkstra") {
         return run_dijkstra(mesh, sources);
+    }
+    if (method == "gcf-exact") {
+        return run_gcf(mesh, sources, 0);
+    }
+    if (method == "gcf-window") {
+        if (window == 0) {
+            throw InvalidInput("--window must be at least 1 for gcf-window (gcf-exact flows all)");
+        }
+        return run_gcf(mesh, sources, window);
     }
     std::string known;
     for (const std::string& m : distance_methods()) {

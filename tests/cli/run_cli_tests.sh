@@ -102,6 +102,14 @@ then ok "exact-mmp path length = exact distance = polyline length"; else fail "e
 # The curvature-flow path on the generated icosphere: traced on the mesh it is no shorter than the
 # exact polyhedral distance (a path on the faces) and close to it; the smooth polyline is closer to
 # the great circle than the polyhedral distance is (O(h^2) gap, measured ~4x smaller).
+# Curvature-flow distances (Algorithm 1) on the generated icosphere:3: close to the exact
+# polyhedral distance (they approach the smooth sphere, ~0.3 % above the polyhedron at this level).
+expect_ok "gcf-exact distances" "$bin" geodesic distances ico.off --source 0 --method gcf-exact --out gcf_d.txt
+if paste gcf_d.txt ico_exact.txt | awk 'NR > 1 && $2 > 0.3 { e = ($1 - $2) / $2; if (e < 0) e = -e; s += e; n++ }
+     END { m = s / n; print "mean rel diff " m; exit !(m < 1e-2) }' >gcf_gap.txt; then
+  ok "gcf-exact within 1 % of exact ($(cat gcf_gap.txt))"; else fail "gcf-exact vs exact ($(cat gcf_gap.txt))"; fi
+expect_ok "gcf-window distances" "$bin" geodesic distances ico.off --source 0 --method gcf-window --window 8 --out gcf_w.txt
+expect_fail "gcf takes one vertex source" "one vertex source" "$bin" geodesic distances ico.off --source 0 --source 5 --method gcf-exact --out x.txt
 expect_ok "gcf path" "$bin" geodesic path ico.off --from 0 --to 300 --method gcf --out gcf.json
 if $py - "$(sed -n 301p ico_exact.txt)" "$(sed -n 301p truth.txt)" <<'PY'
 import json, sys

@@ -85,4 +85,15 @@ GcfQueries gcf_paths(const Soup& soup,
     });
 }
 
+GcfField gcf_distances(const Soup& soup, std::size_t source,
+                       const CurvatureFlowDistanceOptions& options, MeshKind kind) {
+    return cgal::with_mesh(soup, kind, [&](auto& tm) {
+        GcfField out;
+        out.d.assign(soup.points.size(), -1.0);
+        auto map = boost::make_iterator_property_map(out.d.begin(), get(boost::vertex_index, tm));
+        out.report = tg::gcf_distances(tm, cgal::vertex_at(tm, source), map, options);
+        return out;
+    });
+}
+
 }  // namespace tapeline_test::geodesic

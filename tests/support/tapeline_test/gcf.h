@@ -14,6 +14,8 @@ namespace tapeline_test::geodesic {
 using tapeline::geodesic::CurvatureFlowOptions;
 using tapeline::geodesic::CurvatureFlowReport;
 using tapeline::geodesic::CurvatureFlowSolver;
+using tapeline::geodesic::CurvatureFlowDistanceOptions;
+using tapeline::geodesic::CurvatureFlowDistanceReport;
 
 struct GcfResult {
     PathResult smooth;   ///< samples lifted towards the smooth surface (distance = length)
@@ -45,5 +47,15 @@ GcfQueries gcf_paths(const Soup& soup,
                      const std::vector<std::pair<SurfacePoint, SurfacePoint>>& pairs,
                      const CurvatureFlowOptions& options = {},
                      MeshKind kind = MeshKind::surface_mesh);
+
+struct GcfField {
+    std::vector<double> d;  ///< per soup vertex
+    CurvatureFlowDistanceReport report;
+};
+
+/// The free function gcf_distances from soup vertex `source`.
+GcfField gcf_distances(const Soup& soup, std::size_t source,
+                       const CurvatureFlowDistanceOptions& options = {},
+                       MeshKind kind = MeshKind::surface_mesh);
 
 }  // namespace tapeline_test::geodesic

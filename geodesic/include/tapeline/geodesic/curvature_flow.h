@@ -16,6 +16,7 @@
 
 #include <tapeline/core/errors.h>
 #include <tapeline/geodesic/curvature_flow_types.h>
+#include <tapeline/geodesic/internal/gcf_distances.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
 #include <tapeline/geodesic/internal/mesh_checks.h>
 #include <tapeline/geodesic/internal/named_parameters.h>
@@ -188,6 +189,7 @@ public:
     }
 
     const gcf::Mesh& mesh() const { return mesh_; }
+    const Index& index() const { return index_; }
     const Components& components() const { return components_; }
 
 private:
@@ -450,6 +452,56 @@ geodesic_path(const TriangleMesh& tm, const std::vector<Point>& initial,
     out.report.init_seconds += prep;
     out.report.seconds += prep;
     return out;
+}
+
+/// Single-source distances by geodesic curvature flow (the thesis' Algorithms 1 and 2): vertices
+/// are visited in the order of a priority queue on the tentative distance min over visited
+/// neighbours u of d(u) + |uv| (continuous Dijkstra); the source's 1-ring gets straight edges;
+/// every other vertex w starts from the polyline of the visited neighbour u whose last tangent
+/// continues most straightly into the edge (u, w), with the edge appended (subdivided at the
+/// sample spacing), which is then flowed (whole, or its last `window` samples); with
+/// options.shortest_parent every visited neighbour is continued and the shortest result kept. d(w) is the
+/// length of the resulting sample polyline (Phong-lifted by default, see the options). Writes
+/// every vertex (+infinity outside the source's component). InvalidInput on bad options or a
+/// source that is not a vertex of the mesh with an incident face.
+template <class TriangleMesh, class VertexDistanceMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+CurvatureFlowDistanceReport gcf_distances(
+    const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
+    VertexDistanceMap distances, const CurvatureFlowDistanceOptions& options = {},
+    const NamedParameters& np = CGAL::parameters::default_values()) {
+    const auto t0 = internal::Clock::now();
+    internal::check_options(options.flow);
+    if (!std::isfinite(options.sample_spacing) || options.sample_spacing < 0)
+        throw InvalidInput(
+            "gcf_distances: sample_spacing must be finite and >= 0 (0 = the mean edge length)");
+    const internal::GcfSetup<TriangleMesh, NamedParameters> setup(tm, np);
+    const auto a = setup.locate(SurfacePoint<TriangleMesh>(source), "the source");
+    const auto& m = setup.mesh();
+    CurvatureFlowDistanceReport r;
+    r.vertices = m.vertex_count();
+    r.faces = m.face_count();
+    r.init_seconds = internal::seconds_since(t0);
+    const double h = m.mean_edge > 0 ? m.mean_edge : 1.0;
+    r.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : h;
+    const auto f = internal::gcf::propagate(m, a.vertex, options.window, r.sample_spacing,
+                                            options.smooth_length, options.shortest_parent,
+                                            options.flow);
+    r.flows = f.flows;
+    r.iterations = f.iterations;
+    r.converged = f.converged;
+    r.stalled = f.stalled;
+    r.max_iterations = f.max_iterations;
+    r.solver_failures = f.failed;
+    r.stored_samples = f.stored_samples;
+    r.unreachable = internal::write_distances(f.d, setup.index(), distances, "gcf_distances");
+    r.reached = r.vertices - r.unreachable;
+    if (r.solver_failures > 0)
+        r.status = "solver_failure";
+    else if (r.max_iterations > 0)
+        r.status = "max_iterations";
+    r.seconds = internal::seconds_since(t0);
+    return r;
 }
 
 }  // namespace tapeline::geodesic

@@ -87,4 +87,56 @@ struct CurvatureFlowReport {
     std::string solver;
 };
 
+
+/// Single-source distances by curvature flow (gcf_distances, curvature_flow.h): ring-by-ring
+/// propagation from a source vertex, each new vertex started from the straightest continuation of
+/// a visited neighbour's geodesic and flowed (the thesis' Algorithms 1 and 2).
+struct CurvatureFlowDistanceOptions {
+    /// 0: Algorithm 1, the whole polyline of every vertex is flowed (cost and memory grow with the
+    /// distance). w > 0: Algorithm 2, only the last w samples are flowed, the sample before them
+    /// is held fixed and only w + 1 samples and the fixed prefix length are kept per vertex.
+    std::size_t window = 0;
+    /// Target spacing of the samples; 0 picks the mean edge length of the mesh (as the two-point
+    /// flow does).
+    double sample_spacing = 0;
+    /// true: d(v) = length of the sample polyline lifted by Phong tessellation (approaches the
+    /// smooth surface); false: length of the sample polyline on the faces (chords).
+    bool smooth_length = true;
+    /// false (the thesis' rule): a new vertex w continues the geodesic of the one visited
+    /// neighbour u whose edge (u, w) continues it most straightly. true: every visited neighbour's
+    /// geodesic is continued and flowed and the shortest result is kept (degree times the cost;
+    /// the fixed prefix of Algorithm 2 then accumulates less error).
+    bool shortest_parent = false;
+    /// The flow of each vertex (sample_spacing and sample_count are ignored here). Tolerance
+    /// 1e-7 instead of the two-point default 1e-4: a kink below 1e-4 would otherwise not be
+    /// flowed at all, and on a flat grid the distances are then Euclidean to ~1e-13 instead of
+    /// ~3e-8 (measured; the Gauss-Newton steps converge fast, so the cost is small).
+    CurvatureFlowOptions flow = [] {
+        CurvatureFlowOptions o;
+        o.tolerance = 1e-7;
+        return o;
+    }();
+};
+
+/// What gcf_distances did. Times are wall-clock seconds.
+struct CurvatureFlowDistanceReport {
+    std::size_t vertices = 0;
+    std::size_t faces = 0;
+    std::size_t reached = 0;          ///< vertices with a finite distance (source included)
+    std::size_t unreachable = 0;      ///< vertices outside the source's component (+infinity)
+    std::size_t flows = 0;            ///< vertices whose path was flowed (past the 1-ring)
+    std::size_t iterations = 0;       ///< flow steps, all vertices together
+    std::size_t converged = 0;        ///< flows ending "converged"
+    std::size_t stalled = 0;          ///< flows ending "stalled"
+    std::size_t max_iterations = 0;   ///< flows stopped by the iteration limit
+    std::size_t solver_failures = 0;  ///< flows whose linear solve failed (path kept as it was)
+    std::size_t stored_samples = 0;   ///< samples kept over all vertices (memory, O(n w))
+    double sample_spacing = 0;        ///< the spacing used
+    double init_seconds = 0;          ///< mesh arrays and checks
+    double seconds = 0;               ///< total
+    /// "ok" (every flow converged or stalled), "max_iterations" (some flow hit the limit),
+    /// "solver_failure" (some linear solve failed).
+    std::string status = "ok";
+};
+
 }  // namespace tapeline::geodesic

@@ -1,0 +1,33 @@
+// `gcf-exact` (Algorithm 1: the whole polyline of every vertex flowed) and `gcf-window`
+// (Algorithm 2: only its last W samples) distance methods.
+#include "app_types.h"
+
+#include <tapeline/core/errors.h>
+#include <tapeline/geodesic/curvature_flow.h>
+
+namespace tapeline::app {
+
+MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window) {
+    if (sources.vertices.size() != 1 || !sources.locations.empty()) {
+        throw InvalidInput(
+            "gcf-exact / gcf-window take exactly one vertex source (ring propagation from one "
+            "vertex)");
+    }
+    MethodResult result;
+    result.distances.assign(num_vertices(mesh), 0.0);
+    geodesic::CurvatureFlowDistanceOptions options;
+    options.window = window;
+    const geodesic::CurvatureFlowDistanceReport r = geodesic::gcf_distances(
+        mesh, sources.vertices.front(), CGAL::make_property_map(result.distances), options);
+    result.report.method = window == 0 ? "gcf_exact" : "gcf_window";
+    result.report.vertices = num_vertices(mesh);
+    result.report.faces = num_faces(mesh);
+    result.report.sources = 1;
+    result.report.unreachable = r.unreachable;
+    result.report.pre_seconds = r.init_seconds;
+    result.report.query_seconds = r.seconds - r.init_seconds;
+    result.report.status = r.status;
+    return result;
+}
+
+}  // namespace tapeline::app

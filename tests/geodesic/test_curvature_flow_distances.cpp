@@ -1,0 +1,221 @@
+// Single-source distances by geodesic curvature flow (gcf_distances, the thesis' Algorithms 1 and
+// 2) against the exact polyhedral distance (our MMP), great circles on icospheres (analytic
+// truth) and Euclidean truth on a flat grid (DESIGN.md §6). Timings are printed, not asserted.
+//
+// Errors are relative, over the vertices outside the source's closed 1-ring (those are straight
+// edges by construction). The bounds are the measured values (printed) with a stated margin;
+// gcf_distances is deterministic, so the margin only absorbs compiler / library differences:
+// - flat grid, window 0: the flow is linear there and converges to the straight segment; 1e-9
+//   (measured 4.5e-14). The window version keeps a kinked fixed prefix (see below): printed and
+//   bounded, not Euclidean.
+// - Algorithm 1 (window 0), Phong-lifted length: it approaches the smooth sphere, not the
+//   polyhedron, so against exact polyhedral it differs by the polyhedron's own error (measured
+//   mean 3.1e-3 at level 3, 8.0e-4 at level 4); against the great circle its mean error is
+//   0.44 / 0.43 of the exact polyhedral distance's (the "at most half" holds at level 4;
+//   level 5 is not run here, too slow for a unit test).
+// - Algorithm 1 with the on-face length: mean 5.9e-4 / 1.7e-4 against exact polyhedral.
+// - Algorithm 2 (window 8), the thesis' straightest-parent rule: every vertex keeps the prefix
+//   of its parent up to the fixed sample, so each generation adds a kink whose excess is about
+//   delta^2 / (2 L) (delta: lateral offset of the new vertex, L: window length), and the kinks add
+//   up along the path. Measured mean 1.5e-2 / 2.1e-2, max 9.0e-2 / 1.06e-1: the targets
+//   (mean <= 0.1 %, max <= 1 %) are NOT met; asserted only as a regression bound.
+// - Algorithm 2 with shortest_parent (every visited neighbour continued, shortest kept):
+//   mean 4.5e-3 / 2.5e-3, max 1.1e-2 / 7.6e-3 against exact polyhedral (Phong-lifted length):
+//   max <= 1 % holds at level 4, mean <= 0.1 % does not.
+#include <tapeline/core/errors.h>
+#include <tapeline_test/gcf.h>
+#include <tapeline_test/mmp.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tg = tapeline_test::geodesic;
+
+namespace {
+
+struct Errors {
+    double mean = 0, max = 0;
+    std::size_t count = 0;
+};
+
+/// Relative errors of d against ref over the vertices outside the source's closed 1-ring.
+Errors relative_errors(const tg::Soup& soup, std::size_t src, const std::vector<double>& d,
+                       const std::vector<double>& ref) {
+    std::vector<char> ring(soup.points.size(), 0);
+    ring[src] = 1;
+    for (const auto& f : soup.faces)
+        if (std::find(f.begin(), f.end(), src) != f.end())
+            for (auto v : f)
+                ring[v] = 1;
+    Errors e;
+    double sum = 0;
+    for (std::size_t v = 0; v < d.size(); ++v) {
+        if (ring[v])
+            continue;
+        const double r = std::abs(d[v] - ref[v]) / ref[v];
+        sum += r;
+        e.max = std::max(e.max, r);
+        ++e.count;
+    }
+    e.mean = e.count ? sum / static_cast<double>(e.count) : 0.0;
+    return e;
+}
+
+void expect_basic(const tg::Soup& soup, std::size_t src, const tg::GcfField& f,
+                  const std::string& what) {
+    ASSERT_EQ(f.d.size(), soup.points.size());
+    EXPECT_EQ(f.report.reached, soup.points.size()) << what;
+    EXPECT_EQ(f.report.unreachable, 0u) << what;
+    EXPECT_EQ(f.report.status, "ok") << what;
+    EXPECT_EQ(f.d[src], 0.0) << what;
+    for (std::size_t v = 0; v < f.d.size(); ++v) {
+        ASSERT_TRUE(std::isfinite(f.d[v])) << what << " vertex " << v;
+        EXPECT_GE(f.d[v], 0.999 * tg::euclidean(soup.points[src], soup.points[v]))
+            << what << " vertex " << v;
+    }
+}
+
+struct Config {
+    std::size_t window;
+    bool shortest_parent;
+    bool smooth_length;
+    const char* name;
+};
+
+}  // namespace
+
+TEST(CurvatureFlowDistances, FlatGridIsEuclidean) {
+    const tg::Soup soup = tg::flat_grid(12, 1.0);
+    const std::size_t src = 0;
+    for (const Config c : {Config{0, false, true, "window 0"}, Config{8, false, true, "window 8"},
+                           Config{8, true, true, "window 8, shortest parent"}}) {
+        tg::CurvatureFlowDistanceOptions o;
+        o.window = c.window;
+        o.shortest_parent = c.shortest_parent;
+        const tg::GcfField f = tg::gcf_distances(soup, src, o);
+        const std::string what = std::string("flat grid, ") + c.name;
+        expect_basic(soup, src, f, what);
+        double max_err = 0;
+        for (std::size_t v = 0; v < f.d.size(); ++v)
+            max_err = std::max(max_err,
+                               std::abs(f.d[v] - tg::euclidean(soup.points[src], soup.points[v])));
+        std::printf(
+            "[ gcf-dist ] %s: max |d - euclidean| %.2e (grid size 1), %zu flows, %zu it, "
+            "%s, %.1f ms\n",
+            what.c_str(), max_err, f.report.flows, f.report.iterations, f.report.status.c_str(),
+            1e3 * f.report.seconds);
+        if (c.window == 0)
+            EXPECT_LE(max_err, 1e-9) << what;
+        else  // measured 6.6e-3 (straightest) and 3.7e-3 (shortest parent)
+            EXPECT_LE(max_err, 1e-2) << what;
+    }
+}
+
+TEST(CurvatureFlowDistances, IcosphereAgainstExactPolyhedralAndGreatCircle) {
+    for (int level : {3, 4}) {
+        const std::string spec = "icosphere:" + std::to_string(level);
+        const tg::Soup soup = tg::surface(spec);
+        const std::size_t src = 0;
+        const auto truth = tg::analytic_distances(spec, soup, src);
+        ASSERT_FALSE(truth.empty());
+        const tg::MmpField mmp = tg::mmp_distances(soup, tg::Sources::vertex(src));
+        const Errors exact_vs_truth = relative_errors(soup, src, mmp.d, truth);
+        std::printf("[ gcf-dist ] %s: exact polyhedral vs great circle: mean %.2e max %.2e\n",
+                    spec.c_str(), exact_vs_truth.mean, exact_vs_truth.max);
+        for (const Config c : {Config{0, false, true, "window 0 (Algorithm 1)"},
+                               Config{0, false, false, "window 0, on-face length"},
+                               Config{8, false, true, "window 8 (Algorithm 2)"},
+                               Config{8, true, true, "window 8, shortest parent"}}) {
+            tg::CurvatureFlowDistanceOptions o;
+            o.window = c.window;
+            o.shortest_parent = c.shortest_parent;
+            o.smooth_length = c.smooth_length;
+            const tg::GcfField f = tg::gcf_distances(soup, src, o);
+            const std::string what = spec + ", " + c.name;
+            expect_basic(soup, src, f, what);
+            const Errors vs_exact = relative_errors(soup, src, f.d, mmp.d);
+            const Errors vs_truth = relative_errors(soup, src, f.d, truth);
+            const double ratio = vs_truth.mean / exact_vs_truth.mean;
+            std::printf(
+                "[ gcf-dist ] %s: vs exact polyhedral mean %.2e max %.2e | vs great circle mean "
+                "%.2e max %.2e (%.2f x exact polyhedral's mean error) | %zu flows, %zu it, %s, "
+                "%zu stored samples, %.1f ms, %.1f us/vertex\n",
+                what.c_str(), vs_exact.mean, vs_exact.max, vs_truth.mean, vs_truth.max, ratio,
+                f.report.flows, f.report.iterations, f.report.status.c_str(),
+                f.report.stored_samples, 1e3 * f.report.seconds,
+                1e6 * f.report.seconds / static_cast<double>(f.report.vertices));
+            EXPECT_EQ(f.report.converged, f.report.flows) << what;
+            if (c.window == 0 && c.smooth_length) {
+                // Measured 3.1e-3 / 3.8e-3 (level 3), 8.0e-4 / 9.5e-4 (level 4): 1.3x margin.
+                EXPECT_LE(vs_exact.mean, level == 3 ? 4e-3 : 1.05e-3) << what;
+                EXPECT_LE(vs_exact.max, level == 3 ? 5e-3 : 1.25e-3) << what;
+                // Beats the exact polyhedral distance against the great circle (measured 0.44,
+                // 0.43); the "at most half" asserted at level 4.
+                EXPECT_LE(ratio, level == 3 ? 0.6 : 0.5) << what;
+            } else if (c.window == 0) {
+                // Measured 5.9e-4 / 9.9e-4 (level 3), 1.7e-4 / 2.9e-4 (level 4).
+                EXPECT_LE(vs_exact.mean, level == 3 ? 8e-4 : 2.5e-4) << what;
+                EXPECT_LE(vs_exact.max, level == 3 ? 1.3e-3 : 4e-4) << what;
+            } else if (!c.shortest_parent) {
+                // Targets not met (see the header); regression bound on the measured values.
+                EXPECT_LE(vs_exact.mean, 3e-2) << what;
+                EXPECT_LE(vs_exact.max, 0.15) << what;
+            } else {
+                // Measured 4.5e-3 / 1.1e-2 (level 3), 2.5e-3 / 7.6e-3 (level 4).
+                EXPECT_LE(vs_exact.mean, level == 3 ? 6e-3 : 3.5e-3) << what;
+                EXPECT_LE(vs_exact.max, level == 3 ? 1.5e-2 : 1e-2) << what;
+            }
+        }
+    }
+}
+
+TEST(CurvatureFlowDistances, BadOptionsAreRejected) {
+    const tg::Soup soup = tg::surface("icosphere:1");
+    tg::CurvatureFlowDistanceOptions o;
+    o.sample_spacing = -1;
+    EXPECT_THROW(tg::gcf_distances(soup, 0, o), tapeline::InvalidInput);
+    o = {};
+    o.flow.step = 0;
+    EXPECT_THROW(tg::gcf_distances(soup, 0, o), tapeline::InvalidInput);
+}
+
+TEST(CurvatureFlowDistances, PolyhedronGivesTheSameField) {
+    const tg::Soup soup = tg::surface("icosphere:2");
+    for (std::size_t window : {std::size_t(0), std::size_t(8)}) {
+        tg::CurvatureFlowDistanceOptions o;
+        o.window = window;
+        const tg::GcfField a = tg::gcf_distances(soup, 3, o);
+        const tg::GcfField b = tg::gcf_distances(soup, 3, o, tg::MeshKind::polyhedron);
+        ASSERT_EQ(a.d.size(), b.d.size());
+        for (std::size_t v = 0; v < a.d.size(); ++v)
+            EXPECT_NEAR(a.d[v], b.d[v], 1e-12 * (1 + a.d[v])) << "window " << window << " " << v;
+    }
+}
+
+TEST(CurvatureFlowDistances, OtherComponentIsUnreachable) {
+    tg::Soup soup = tg::surface("icosphere:1");
+    const std::size_t n = soup.points.size(), nf = soup.faces.size();
+    for (std::size_t i = 0; i < n; ++i)
+        soup.points.push_back({soup.points[i][0] + 5, soup.points[i][1], soup.points[i][2]});
+    for (std::size_t f = 0; f < nf; ++f) {
+        auto face = soup.faces[f];
+        for (auto& v : face)
+            v += n;
+        soup.faces.push_back(face);
+    }
+    const tg::GcfField f = tg::gcf_distances(soup, 0, {});
+    EXPECT_EQ(f.report.reached, n);
+    EXPECT_EQ(f.report.unreachable, n);
+    for (std::size_t v = 0; v < 2 * n; ++v) {
+        if (v < n)
+            EXPECT_TRUE(std::isfinite(f.d[v])) << v;
+        else
+            EXPECT_EQ(f.d[v], std::numeric_limits<double>::infinity()) << v;
+    }
+}
