@@ -11,11 +11,11 @@
 
 namespace tapeline_test::geodesic {
 
+using tapeline::geodesic::CurvatureFlowDistanceOptions;
+using tapeline::geodesic::CurvatureFlowDistanceReport;
 using tapeline::geodesic::CurvatureFlowOptions;
 using tapeline::geodesic::CurvatureFlowReport;
 using tapeline::geodesic::CurvatureFlowSolver;
-using tapeline::geodesic::CurvatureFlowDistanceOptions;
-using tapeline::geodesic::CurvatureFlowDistanceReport;
 
 struct GcfResult {
     PathResult smooth;   ///< samples lifted towards the smooth surface (distance = length)

@@ -460,9 +460,9 @@ geodesic_path(const TriangleMesh& tm, const std::vector<Point>& initial,
 /// every other vertex w starts from the polyline of the visited neighbour u whose last tangent
 /// continues most straightly into the edge (u, w), with the edge appended (subdivided at the
 /// sample spacing), which is then flowed (whole, or its last `window` samples); with
-/// options.shortest_parent every visited neighbour is continued and the shortest result kept. d(w) is the
-/// length of the resulting sample polyline (Phong-lifted by default, see the options). Writes
-/// every vertex (+infinity outside the source's component). InvalidInput on bad options or a
+/// options.shortest_parent every visited neighbour is continued and the shortest result kept. d(w)
+/// is the length of the resulting sample polyline (Phong-lifted by default, see the options).
+/// Writes every vertex (+infinity outside the source's component). InvalidInput on bad options or a
 /// source that is not a vertex of the mesh with an incident face.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -484,9 +484,9 @@ CurvatureFlowDistanceReport gcf_distances(
     r.init_seconds = internal::seconds_since(t0);
     const double h = m.mean_edge > 0 ? m.mean_edge : 1.0;
     r.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : h;
-    const auto f = internal::gcf::propagate(m, a.vertex, options.window, r.sample_spacing,
-                                            options.smooth_length, options.shortest_parent,
-                                            options.flow);
+    const auto f =
+        internal::gcf::propagate(m, a.vertex, options.window, r.sample_spacing,
+                                 options.smooth_length, options.shortest_parent, options.flow);
     r.flows = f.flows;
     r.iterations = f.iterations;
     r.converged = f.converged;

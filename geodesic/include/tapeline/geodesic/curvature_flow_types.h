@@ -87,7 +87,6 @@ struct CurvatureFlowReport {
     std::string solver;
 };
 
-
 /// Single-source distances by curvature flow (gcf_distances, curvature_flow.h): ring-by-ring
 /// propagation from a source vertex, each new vertex started from the straightest continuation of
 /// a visited neighbour's geodesic and flowed (the thesis' Algorithms 1 and 2).
