@@ -1,6 +1,7 @@
 // Reading every supported format and variant; repairs with their counts and warnings; the map back
 // to input vertices; real meshes (spot.obj in the project data, shared meshes when present).
 #include <tapeline_test/io.h>
+#include <tapeline_test/io_fixture.h>
 
 #include <gtest/gtest.h>
 
@@ -21,19 +22,7 @@ using tapeline_test::load_soup;
 using tapeline_test::LoadedView;
 using tapeline_test::MeshKind;
 
-class Read : public ::testing::Test {
-protected:
-    void SetUp() override {
-        dir_ = tapeline_test::temp_dir(
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    }
-    std::string file(const std::string& name, const std::string& content) const {
-        const std::string path = dir_ + "/" + name;
-        tapeline_test::write_bytes(path, content);
-        return path;
-    }
-    std::string dir_;
-};
+using Read = tapeline_test::TempFileTest;
 
 /// Checks shared by every successful load: a valid triangle mesh whose counts match the report.
 void expect_valid(const LoadedView& m) {

@@ -2,6 +2,7 @@
 // the exception type and that the one-line message names the file and the element (DESIGN.md §6).
 #include <tapeline/core/errors.h>
 #include <tapeline_test/io.h>
+#include <tapeline_test/io_fixture.h>
 
 #include <gtest/gtest.h>
 
@@ -39,18 +40,8 @@ void expect_error(const std::function<void()>& action, const std::vector<std::st
     }
 }
 
-class Reject : public ::testing::Test {
+class Reject : public tapeline_test::TempFileTest {
 protected:
-    void SetUp() override {
-        dir_ = tapeline_test::temp_dir(
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    }
-    /// Writes `content` to dir/name and returns the path.
-    std::string file(const std::string& name, const std::string& content) const {
-        const std::string path = dir_ + "/" + name;
-        tapeline_test::write_bytes(path, content);
-        return path;
-    }
     /// Loading `path` throws E with a message naming the path and containing `parts`.
     template <class E>
     void expect_load_error(const std::string& path, std::vector<std::string> parts,
@@ -58,7 +49,6 @@ protected:
         parts.insert(parts.begin(), path + ": ");
         expect_error<E>([&] { load(path, options); }, parts);
     }
-    std::string dir_;
 };
 
 const char* const kTetraOff =
