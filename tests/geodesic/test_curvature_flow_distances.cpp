@@ -86,6 +86,7 @@ struct Config {
     bool shortest_parent;
     bool smooth_length;
     const char* name;
+    tg::WindowAnchor anchor = tg::WindowAnchor::prefix;
 };
 
 }  // namespace
@@ -131,11 +132,14 @@ TEST(CurvatureFlowDistances, IcosphereAgainstExactPolyhedralAndGreatCircle) {
         for (const Config c : {Config{0, false, true, "window 0 (Algorithm 1)"},
                                Config{0, false, false, "window 0, on-face length"},
                                Config{8, false, true, "window 8 (Algorithm 2)"},
-                               Config{8, true, true, "window 8, shortest parent"}}) {
+                               Config{8, true, true, "window 8, shortest parent"},
+                               Config{8, false, true, "window 8, field anchor",
+                                      tg::WindowAnchor::field}}) {
             tg::CurvatureFlowDistanceOptions o;
             o.window = c.window;
             o.shortest_parent = c.shortest_parent;
             o.smooth_length = c.smooth_length;
+            o.anchor = c.anchor;
             const tg::GcfField f = tg::gcf_distances(soup, src, o);
             const std::string what = spec + ", " + c.name;
             expect_basic(soup, src, f, what);

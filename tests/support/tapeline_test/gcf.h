@@ -16,6 +16,7 @@ using tapeline::geodesic::CurvatureFlowDistanceReport;
 using tapeline::geodesic::CurvatureFlowOptions;
 using tapeline::geodesic::CurvatureFlowReport;
 using tapeline::geodesic::CurvatureFlowSolver;
+using tapeline::geodesic::WindowAnchor;
 
 struct GcfResult {
     PathResult smooth;   ///< samples lifted towards the smooth surface (distance = length)

@@ -20,7 +20,9 @@
 #include <tapeline/geodesic/internal/gcf_engine.h>
 #include <tapeline/geodesic/internal/mesh_checks.h>
 #include <tapeline/geodesic/internal/named_parameters.h>
+#include <tapeline/geodesic/internal/unfold_engine.h>
 #include <tapeline/geodesic/sources.h>
+#include <tapeline/geodesic/unfold_types.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -202,6 +204,14 @@ private:
 template <class Point>
 Point to_point(const gcf::Vec3& v) {
     return Point(v.x(), v.y(), v.z());
+}
+
+template <class PointRange>
+std::vector<gcf::Vec3> to_vec3s(const PointRange& range) {
+    std::vector<gcf::Vec3> out;
+    for (const auto& p : range)
+        out.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    return out;
 }
 
 /// The flow from an initial polyline (pts with vertex hints); endpoints are a and b.
@@ -409,6 +419,14 @@ public:
     std::size_t vertex_count() const { return setup_.mesh().vertex_count(); }
     double mean_edge_length() const { return setup_.mesh().mean_edge; }
 
+    /// The faces crossed by a path on this mesh (e.g. result.on_mesh.points) unfolded into the
+    /// plane (see unfold_path in unfold.h).
+    template <class PointRange>
+    UnfoldedPath unfold(const PointRange& path, const UnfoldOptions& options = {}) const {
+        return internal::unfold::unfold_checked(setup_.mesh(), internal::to_vec3s(path), options,
+                                                "unfold_path");
+    }
+
 private:
     void check_distinct(const internal::gcf::Sample& a, const internal::gcf::Sample& b) const {
         if ((a.p - b.p).norm() <= 1e-12 * setup_.mesh().mean_edge)
@@ -484,9 +502,15 @@ CurvatureFlowDistanceReport gcf_distances(
     r.init_seconds = internal::seconds_since(t0);
     const double h = m.mean_edge > 0 ? m.mean_edge : 1.0;
     r.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : h;
-    const auto f =
-        internal::gcf::propagate(m, a.vertex, options.window, r.sample_spacing,
-                                 options.smooth_length, options.shortest_parent, options.flow);
+    internal::gcf::PropagateParams pp;
+    pp.window = options.window;
+    pp.spacing = r.sample_spacing;
+    pp.smooth = options.smooth_length;
+    pp.shortest_parent = options.shortest_parent;
+    pp.field_anchor = options.anchor == WindowAnchor::field;
+    pp.near_source_samples = options.near_source_samples;
+    pp.anchor_slides = options.anchor_slides;
+    const auto f = internal::gcf::propagate(m, a.vertex, pp, options.flow);
     r.flows = f.flows;
     r.iterations = f.iterations;
     r.converged = f.converged;

@@ -87,6 +87,19 @@ struct CurvatureFlowReport {
     std::string solver;
 };
 
+/// Algorithm 2: where the distance of the fixed sample before the flowed window comes from.
+enum class WindowAnchor {
+    /// The thesis' rule: the length of the parent's polyline up to that sample. Exact for the
+    /// parent's path, but every generation leaves a kink at its anchor in the prefix its children
+    /// inherit, and the excess of those kinks adds up along the path (~1-2 % at W = 8).
+    prefix,
+    /// The anchor's distance is interpolated from the distances and arrival directions of the
+    /// visited corners of its face (d_i + g_i . (x - v_i) / 2, barycentric weights: exact for a
+    /// quadratic field), and the anchor is slid sideways until the window leaves it in the
+    /// direction the field arrives in. Errors then no longer add up per generation.
+    field,
+};
+
 /// Single-source distances by curvature flow (gcf_distances, curvature_flow.h): ring-by-ring
 /// propagation from a source vertex, each new vertex started from the straightest continuation of
 /// a visited neighbour's geodesic and flowed (the thesis' Algorithms 1 and 2).
@@ -106,6 +119,15 @@ struct CurvatureFlowDistanceOptions {
     /// geodesic is continued and flowed and the shortest result is kept (degree times the cost;
     /// the fixed prefix of Algorithm 2 then accumulates less error).
     bool shortest_parent = false;
+    /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
+    WindowAnchor anchor = WindowAnchor::field;
+    /// Algorithm 2 with WindowAnchor::field: paths of at most this many samples are flowed whole
+    /// (Algorithm 1 near the source, where the distance field is too curved to interpolate);
+    /// 0 picks 2 * window + 1.
+    std::size_t near_source_samples = 0;
+    /// Algorithm 2 with WindowAnchor::field: times the anchor is slid sideways to straighten the
+    /// kink between the incoming distance gradient and the flowed window (each slide re-flows).
+    std::size_t anchor_slides = 3;
     /// The flow of each vertex (sample_spacing and sample_count are ignored here). Tolerance
     /// 1e-7 instead of the two-point default 1e-4: a kink below 1e-4 would otherwise not be
     /// flowed at all, and on a flat grid the distances are then Euclidean to ~1e-13 instead of

@@ -74,22 +74,85 @@ struct DistanceField {
     std::size_t stored_samples = 0;  ///< samples kept at the end (memory)
 };
 
+/// Interpolated distance at x on face f from the visited corners: sum_i l_i (d_i + g_i.(x - v_i)/2)
+/// with barycentric weights l_i, exact for a quadratic field (the averaged linear interpolation
+/// and first-order Taylor extrapolation cancel their second-order errors). Unvisited corners are
+/// left out (weights renormalised, first-order). Returns +inf when no corner is visited.
+inline double field_at(const Mesh& m, std::uint32_t f, const Vec3& x, const std::vector<double>& d,
+                       const std::vector<Vec3>& g, const std::vector<char>& visited,
+                       Vec3* gradient = nullptr) {
+    Vec3 bary;
+    closest_on_triangle(x, m.xyz[m.corner[3 * f]], m.xyz[m.corner[3 * f + 1]],
+                        m.xyz[m.corner[3 * f + 2]], bary);
+    double sum = 0, wsum = 0;
+    Vec3 gsum = Vec3::Zero();
+    int seen = 0;
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t v = m.corner[3 * f + k];
+        if (!visited[v] || !std::isfinite(d[v]))
+            continue;
+        ++seen;
+        const Vec3 dx = x - m.xyz[v];
+        sum += bary[k] * (d[v] + 0.5 * g[v].dot(dx));
+        wsum += bary[k];
+        gsum += bary[k] * g[v];
+    }
+    if (seen == 0)
+        return std::numeric_limits<double>::infinity();
+    if (seen < 3 || !(wsum > 1e-12)) {  // partial face: plain first-order extrapolation
+        sum = 0;
+        gsum = Vec3::Zero();
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = m.corner[3 * f + k];
+            if (!visited[v] || !std::isfinite(d[v]))
+                continue;
+            sum += d[v] + g[v].dot(x - m.xyz[v]);
+            gsum += g[v];
+        }
+        sum /= seen;
+    } else {
+        sum /= wsum;
+    }
+    if (gradient)
+        *gradient = gsum;
+    return sum;
+}
+
+/// Parameters of propagate (see CurvatureFlowDistanceOptions).
+struct PropagateParams {
+    std::size_t window = 0;
+    double spacing = 0;
+    bool smooth = true;
+    bool shortest_parent = false;
+    bool field_anchor = true;
+    std::size_t near_source_samples = 0;
+    std::size_t anchor_slides = 1;
+};
+
 /// Ring-by-ring propagation from vertex `src` (components: only its component is reached).
 /// window = 0: Algorithm 1 (whole polyline flowed); else Algorithm 2 (last `window` samples).
 /// d = length of the sample polyline, Phong-lifted if `smooth`.
-inline DistanceField propagate(const Mesh& m, std::uint32_t src, std::size_t window, double spacing,
-                               bool smooth, bool shortest_parent, const CurvatureFlowOptions& o) {
+inline DistanceField propagate(const Mesh& m, std::uint32_t src, const PropagateParams& pp,
+                               const CurvatureFlowOptions& o) {
     const std::size_t n = m.vertex_count();
+    const std::size_t window = pp.window;
+    const double spacing = pp.spacing;
+    const bool field_anchor = window > 0 && pp.field_anchor;
+    const std::size_t near_source =
+        pp.near_source_samples > 0 ? pp.near_source_samples : 2 * window + 1;
     const double inf = std::numeric_limits<double>::infinity();
     DistanceField out;
     out.d.assign(n, inf);
     // Per visited vertex: the kept tail of its polyline (last window + 1 samples, all for
-    // window 0) and the (lifted) length of the fixed prefix before tail[0].
+    // window 0 or near the source with a field anchor), the (lifted) length of the fixed prefix
+    // before tail[0] (prefix anchor) and the unit direction the path arrives in (field anchor).
     std::vector<std::vector<Sample>> tail(n);
     std::vector<double> prefix(n, 0.0);
+    std::vector<Vec3> arrival(field_anchor ? n : 0, Vec3::Zero());
     std::vector<char> visited(n, 0);
+    std::vector<char> whole_path(n, 0);  // tail[v] starts at the source
     auto lifted = [&](const Sample& a) -> Vec3 {
-        if (!smooth || a.face == kNone)
+        if (!pp.smooth || a.face == kNone)
             return a.p;
         return phong_lift(m, a.face, a.p);
     };
@@ -110,6 +173,12 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, std::size_t win
         s.face = m.vf_start[v] < m.vf_start[v + 1] ? m.vf[m.vf_start[v]] : kNone;
         return s;
     };
+    auto tangent = [&](std::uint32_t v, const Vec3& x) -> Vec3 {
+        const Vec3 nrm = m.frame(v).col(2);
+        const Vec3 t = x - x.dot(nrm) * nrm;
+        const double len = t.norm();
+        return len > 0 ? Vec3(t / len) : Vec3::Zero();
+    };
     // Appends the chord from the last sample of c to vertex w, subdivided at `spacing`.
     auto append_edge = [&](std::vector<Sample>& c, std::uint32_t w) {
         const Sample a = c.back();
@@ -128,15 +197,32 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, std::size_t win
         }
         c.push_back(vertex_sample(w));
     };
-    auto keep = [&](std::uint32_t w, std::vector<Sample>& c, double pre) {
+    // Stores c as the path of w. d: its distance when already known (field anchor), else the
+    // prefix `pre` before c[0] plus the length of c.
+    auto keep = [&](std::uint32_t w, std::vector<Sample>& c, double pre, double d, bool whole) {
         std::size_t first = 0;
-        if (window > 0 && c.size() > window + 1)
+        whole = whole && field_anchor;
+        whole_path[w] = whole ? 1 : 0;
+        if (window > 0 && !whole && c.size() > window + 1)
             first = c.size() - (window + 1);
         prefix[w] = pre + (first > 0 ? length_of(c, 0, first) : 0.0);
-        out.d[w] = prefix[w] + length_of(c, first, c.size() - 1);
+        out.d[w] = std::isfinite(d) ? d : prefix[w] + length_of(c, first, c.size() - 1);
+        if (field_anchor && c.size() >= 2)
+            arrival[w] = tangent(w, c.back().p - c[c.size() - 2].p);
         tail[w].assign(c.begin() + static_cast<std::ptrdiff_t>(first), c.end());
         tail[w].shrink_to_fit();
         visited[w] = 1;
+    };
+    auto count_status = [&](const std::string& status) {
+        ++out.flows;
+        if (status == "converged")
+            ++out.converged;
+        else if (status == "stalled")
+            ++out.stalled;
+        else if (status == "max_iterations")
+            ++out.max_iterations;
+        else
+            ++out.failed;
     };
 
     using Item = std::pair<double, std::uint32_t>;
@@ -164,12 +250,46 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, std::size_t win
             continue;
         std::vector<Sample> c{vertex_sample(src)};
         append_edge(c, w);
-        keep(w, c, 0.0);
-        out.d[w] = (m.xyz[w] - m.xyz[src]).norm();  // straight edge, exactly
+        keep(w, c, 0.0, (m.xyz[w] - m.xyz[src]).norm(), true);  // straight edge, exactly
     }
     relax(src);
     for (std::uint32_t k = m.vv_start[src]; k < m.vv_start[src + 1]; ++k)
         relax(m.vv[k]);
+
+    // Flows the part of c from `start` on (c[start] and c.back() fixed).
+    auto flow_part = [&](std::vector<Sample>& c, std::size_t start) {
+        std::vector<Sample> part(c.begin() + static_cast<std::ptrdiff_t>(start), c.end());
+        std::string status;
+        out.iterations += flow_to_convergence(m, part, o, status);
+        count_status(status);
+        std::copy(part.begin(), part.end(), c.begin() + static_cast<std::ptrdiff_t>(start));
+    };
+    // Field anchor: the anchor c[start] is slid sideways so that the flowed window leaves it in
+    // the direction the field arrives in; returns the anchor's interpolated distance (+inf when
+    // its face has no visited corner).
+    auto slide_anchor = [&](std::vector<Sample>& c, std::size_t start) {
+        Sample& a = c[start];
+        Vec3 grad;
+        double da = field_at(m, a.face, a.p, out.d, arrival, visited, &grad);
+        for (std::size_t it = 0; it < pp.anchor_slides && std::isfinite(da); ++it) {
+            const Vec3 t_in = tangent(a.vertex, grad);
+            const Vec3 t_out = tangent(a.vertex, c[start + 1].p - a.p);
+            if (t_in.squaredNorm() == 0 || t_out.squaredNorm() == 0)
+                break;
+            const double len = length_of(c, start, c.size() - 1);
+            // Flat-plane model: a lateral offset delta of the anchor from the geodesic through w
+            // kinks the path by delta (1/s + 1/L); undo that offset.
+            const Vec3 shift = (t_out - t_out.dot(t_in) * t_in) * (da * len / (da + len));
+            if (shift.norm() <= 1e-9 * m.mean_edge)
+                break;
+            a.p += shift;
+            a.vertex = nearest_vertex_walk(m, a.p, a.vertex);
+            project_around(m, a);
+            flow_part(c, start);
+            da = field_at(m, a.face, a.p, out.d, arrival, visited, &grad);
+        }
+        return da;
+    };
 
     std::vector<Sample> c;
     while (!q.empty()) {
@@ -204,43 +324,41 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, std::size_t win
         if (best_u == kNone) {  // only the source is visited around w (cannot happen past ring 1)
             c.assign(1, vertex_sample(src));
             append_edge(c, w);
-            keep(w, c, 0.0);
+            keep(w, c, 0.0, inf, true);
             relax(w);
             continue;
         }
-        if (!shortest_parent)
+        if (!pp.shortest_parent)
             parents.assign(1, best_u);
         double best_len = inf;
         std::vector<Sample> best_c;
         std::uint32_t chosen = kNone;
+        bool best_whole = false;
         for (const std::uint32_t u : parents) {
             c = tail[u];
             append_edge(c, w);
             // Flow the last `window` samples (all for window 0); the sample before them is fixed.
             std::size_t start = 0;
-            if (window > 0 && c.size() > window + 1)
+            const bool whole = field_anchor && whole_path[u] && c.size() <= near_source;
+            if (window > 0 && !whole && c.size() > window + 1)
                 start = c.size() - (window + 1);
-            std::vector<Sample> part(c.begin() + static_cast<std::ptrdiff_t>(start), c.end());
-            std::string status;
-            out.iterations += flow_to_convergence(m, part, o, status);
-            ++out.flows;
-            if (status == "converged")
-                ++out.converged;
-            else if (status == "stalled")
-                ++out.stalled;
-            else if (status == "max_iterations")
-                ++out.max_iterations;
-            else
-                ++out.failed;
-            std::copy(part.begin(), part.end(), c.begin() + static_cast<std::ptrdiff_t>(start));
-            const double len = prefix[u] + length_of(c, 0, c.size() - 1);
+            flow_part(c, start);
+            double len;
+            if (field_anchor && start > 0) {
+                const double da = slide_anchor(c, start);
+                len = std::isfinite(da) ? da + length_of(c, start, c.size() - 1)
+                                        : prefix[u] + length_of(c, 0, c.size() - 1);
+            } else {
+                len = prefix[u] + length_of(c, 0, c.size() - 1);
+            }
             if (len < best_len) {
                 best_len = len;
                 best_c.swap(c);
                 chosen = u;
+                best_whole = whole;
             }
         }
-        keep(w, best_c, prefix[chosen]);
+        keep(w, best_c, prefix[chosen], field_anchor ? best_len : inf, best_whole);
         relax(w);
     }
     for (std::size_t v = 0; v < n; ++v)

@@ -293,6 +293,31 @@ inline void curvature(const Mesh& m, const std::vector<Sample>& s, bool interpol
     residual = std::sqrt(sum);
 }
 
+/// Moves the samples by their solved tangent coordinates x and re-projects them; max_update is
+/// the largest displacement after re-projection. False if x is not finite.
+inline bool apply_step(const Mesh& m, std::vector<Sample>& s,
+                       const std::vector<Eigen::Matrix<double, 3, 2>>& t, const Eigen::VectorXd& x,
+                       double& max_update) {
+    const std::size_t n = s.size();
+    if (!x.allFinite())
+        return false;
+    max_update = 0;
+    for (std::size_t i = 1; i + 1 < n; ++i) {
+        // The move that counts is the one left after re-projection: at sharp features the
+        // projection can undo the tangent move, a fixed point that must end as "stalled".
+        const Vec3 before = s[i].p;
+        s[i].p += t[i] * x.segment<2>(static_cast<Eigen::Index>(2 * i));
+        s[i].vertex = nearest_vertex_walk(m, s[i].p, s[i].vertex);
+        project_around(m, s[i]);
+        max_update = std::max(max_update, (s[i].p - before).norm());
+    }
+    return true;
+}
+
+/// Up to this many unknowns (two per sample) the normal equations are assembled and factorised
+/// densely.
+constexpr std::size_t kDenseColumns = 64;
+
 /// One flow step. Unknowns: two tangent coordinates a_i per sample (delta_i = T_i a_i). Chosen
 /// over three coordinates with a penalty row n_i . delta_i = 0 because the constraint then holds
 /// exactly rather than up to a penalty weight, and the system has 2m instead of 3m unknowns.
@@ -309,6 +334,41 @@ inline bool flow_step(const Mesh& m, std::vector<Sample>& s, const CurvatureFlow
     std::vector<Eigen::Matrix<double, 3, 2>> t(n);
     for (std::size_t i = 0; i < n; ++i)
         t[i] = sample_frame(m, s[i], o.interpolate_normals).leftCols<2>();
+    Eigen::VectorXd x;
+    if (o.solver == CurvatureFlowSolver::eigen_normal_ldlt && cols <= kDenseColumns) {
+        // Short polylines (the windows of Algorithm 2): the normal equations of the rows below,
+        // assembled block by block into a small dense matrix (no sparse symbolic analysis).
+        Eigen::MatrixXd normal = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(cols),
+                                                       static_cast<Eigen::Index>(cols));
+        Eigen::VectorXd atb = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(cols));
+        Eigen::Matrix2d b[3];
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+            const auto ti = t[i].transpose();
+            b[0] = ti * t[i - 1];
+            b[1] = -2 * Eigen::Matrix2d::Identity();
+            b[2] = ti * t[i + 1];
+            const Eigen::Vector2d r = -(ti * (s[i - 1].p - 2 * s[i].p + s[i + 1].p));
+            for (int j = 0; j < 3; ++j) {
+                const auto rj = static_cast<Eigen::Index>(2 * (i - 1 + j));
+                atb.segment<2>(rj) += b[j].transpose() * r;
+                for (int k = 0; k < 3; ++k)
+                    normal.block<2, 2>(rj, static_cast<Eigen::Index>(2 * (i - 1 + k))) +=
+                        b[j].transpose() * b[k];
+            }
+            normal.block<2, 2>(static_cast<Eigen::Index>(2 * i), static_cast<Eigen::Index>(2 * i))
+                .diagonal()
+                .array() += 1.0 / step;
+        }
+        const double w2 = o.endpoint_weight * o.endpoint_weight;
+        const auto last = static_cast<Eigen::Index>(cols - 2);
+        normal.block<2, 2>(0, 0).diagonal().array() += w2;
+        normal.block<2, 2>(last, last).diagonal().array() += w2;
+        const Eigen::LDLT<Eigen::MatrixXd> ldlt(normal);
+        if (ldlt.info() != Eigen::Success)
+            return false;
+        x = ldlt.solve(atb);
+        return apply_step(m, s, t, x, max_update);
+    }
     std::vector<Eigen::Triplet<double>> trip;
     trip.reserve(16 * n);
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(4 * n - 4));
@@ -338,7 +398,6 @@ inline bool flow_step(const Mesh& m, std::vector<Sample>& s, const CurvatureFlow
     Eigen::SparseMatrix<double> a(static_cast<int>(row), static_cast<int>(cols));
     a.setFromTriplets(trip.begin(), trip.end());
     a.makeCompressed();
-    Eigen::VectorXd x;
     if (o.solver == CurvatureFlowSolver::eigen_sparse_qr) {
         Eigen::SparseQR<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> qr(a);
         if (qr.info() != Eigen::Success)
@@ -358,19 +417,7 @@ inline bool flow_step(const Mesh& m, std::vector<Sample>& s, const CurvatureFlow
             return false;
         x = ldlt.solve(at * rhs);
     }
-    if (!x.allFinite())
-        return false;
-    max_update = 0;
-    for (std::size_t i = 1; i + 1 < n; ++i) {
-        // The move that counts is the one left after re-projection: at sharp features the
-        // projection can undo the tangent move, a fixed point that must end as "stalled".
-        const Vec3 before = s[i].p;
-        s[i].p += t[i] * x.segment<2>(static_cast<Eigen::Index>(2 * i));
-        s[i].vertex = nearest_vertex_walk(m, s[i].p, s[i].vertex);
-        project_around(m, s[i]);
-        max_update = std::max(max_update, (s[i].p - before).norm());
-    }
-    return true;
+    return apply_step(m, s, t, x, max_update);
 }
 
 /// Phong tessellation (Boubekeur, Alexa 2008, alpha = 3/4) of the point x of face f with
