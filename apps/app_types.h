@@ -45,16 +45,29 @@ struct MethodResult {
 const std::vector<std::string>& distance_methods();
 /// Runs `method` ("exact-mmp", "exact-cgal", "heat", "heat-idt", "dijkstra"); throws InvalidInput
 /// for an unknown name or a source the method cannot take.
-/// `window` is the window of gcf-window (samples flowed per vertex).
+/// `window` is the window of gcf-window (samples flowed per vertex) unless the name carries one
+/// ("gcf-window:16").
 MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
                                  const Sources& sources, std::size_t window = 8);
+
+/// A method name as given ("gcf-window:16"): the method and its window.
+struct MethodName {
+    std::string base;
+    std::size_t window;
+};
+/// Splits "gcf-window:W" / "gcf-window-thesis:W"; other names are returned whole with `window`.
+/// InvalidInput for a ':W' on another method or a W that is not a positive integer.
+MethodName parse_method_name(const std::string& text, std::size_t window);
 
 // One entry point per method family, each in its own translation unit (compile in parallel).
 MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources);
 MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources);
 MethodResult run_heat(const Mesh& mesh, const Sources& sources, bool intrinsic_delaunay);
 MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
-MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window);
+/// gcf-exact (window 0), gcf-window (field anchor) or, with `thesis_anchor`, gcf-window-thesis
+/// (the thesis' prefix rule).
+MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window,
+                     bool thesis_anchor);
 
 /// Peak and current resident set size of this process, in bytes (0 when unknown).
 std::size_t current_rss_bytes();

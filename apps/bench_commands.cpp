@@ -11,6 +11,9 @@
 #include <tapeline_build_info.h>
 
 #include <CLI/CLI.hpp>
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -47,6 +50,7 @@ struct BenchArgs {
     double timeout = 0;
     double memory_limit_gb = 0;
     std::size_t window = 8;
+    int threads = 1;
     bool append = false;
 };
 
@@ -313,9 +317,10 @@ void run_bench(const BenchArgs& args) {
     if (methods.empty()) {
         throw InvalidInput("--methods: give at least one method");
     }
-    auto check_method = [](const std::string& option, const std::string& m) {
+    auto check_method = [&args](const std::string& option, const std::string& m) {
         const auto& known = distance_methods();
-        if (std::find(known.begin(), known.end(), m) == known.end()) {
+        const std::string base = parse_method_name(m, args.window).base;
+        if (std::find(known.begin(), known.end(), base) == known.end()) {
             std::string list;
             for (const std::string& k : known) {
                 list += (list.empty() ? "" : ", ") + k;
@@ -418,6 +423,12 @@ void run_bench(const BenchArgs& args) {
                     const std::size_t base_rss = current_rss_bytes();
                     ChildOutcome outcome = run_isolated(
                         [&](nlohmann::json& fields, std::vector<double>& distances_out) {
+#ifdef CGAL_LINKED_WITH_TBB
+                            // Per run, in the child: methods with TBB loops use at most this many.
+                            const tbb::global_control threads(
+                                tbb::global_control::max_allowed_parallelism,
+                                static_cast<std::size_t>(args.threads));
+#endif
                             Sources sources;
                             sources.vertices.push_back(src);
                             MethodResult r =
@@ -464,8 +475,10 @@ void run_bench(const BenchArgs& args) {
                         options["intrinsic_delaunay"] = true;
                     } else if (method == "heat") {
                         options["intrinsic_delaunay"] = false;
-                    } else if (method == "gcf-window") {
-                        options["window"] = args.window;
+                    } else if (method.rfind("gcf-window", 0) == 0) {
+                        const MethodName parsed = parse_method_name(method, args.window);
+                        options["window"] = parsed.window;
+                        options["anchor"] = parsed.base == "gcf-window-thesis" ? "prefix" : "field";
                     }
                     line["options"] = options;
                     for (const char* key :
@@ -484,7 +497,7 @@ void run_bench(const BenchArgs& args) {
                     line["message"] = outcome.message;
                     line["git"] = TAPELINE_GIT_REVISION;
                     line["compiler_flags"] = TAPELINE_COMPILER_FLAGS;
-                    line["threads"] = 1;
+                    line["threads"] = args.threads;
                     line["timestamp"] = utc_now();
                     out << line.dump() << '\n';
                     out.flush();
@@ -541,13 +554,20 @@ void register_bench_commands(CLI::App& app) {
         ->capture_default_str();
     geo->add_option("--seed", a->seed, "Seed for sources and surface jitter")
         ->capture_default_str();
+    geo->add_option("--threads", a->threads,
+                    "Threads a method may use (TBB loops: gcf-window, gcf-exact); 1 compares "
+                    "single-threaded methods like for like")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 256));
     geo->add_option("--timeout", a->timeout, "Seconds before a run is killed (0: none)")
         ->capture_default_str();
     geo->add_option("--memory-limit", a->memory_limit_gb,
                     "Address-space limit of each run in GB (0: none); a run beyond it is a crash "
                     "with the message 'out of memory'")
         ->capture_default_str();
-    geo->add_option("--window", a->window, "Samples flowed per vertex by gcf-window")
+    geo->add_option(
+           "--window", a->window,
+           "Samples flowed per vertex by gcf-window (a method 'gcf-window:W' sets its own)")
         ->capture_default_str();
     geo->add_flag("--append", a->append, "Append to --out instead of replacing it");
     geo->add_option("--out,-o", a->out, "JSON-lines output")->required();

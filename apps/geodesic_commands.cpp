@@ -2,6 +2,7 @@
 #include "app_types.h"
 #include "commands.h"
 #include "output.h"
+#include "path_unfold.h"
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -147,6 +149,7 @@ struct PathArgs {
     long to = -1;
     std::string method = "exact-mmp";
     std::string out;
+    std::string svg;
 };
 
 void run_path(const PathArgs& args) {
@@ -165,9 +168,35 @@ void run_path(const PathArgs& args) {
     j["from"] = args.from;
     j["to"] = args.to;
     j["seconds"] = seconds;
-    write_file_atomically(args.out, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    std::string svg;
+    if (!args.svg.empty()) {
+        UnfoldOutput u = unfold_path_output(
+            input.loaded.mesh, j["points"],
+            "tapeline geodesic path --method " + args.method + " " + input.name + " --from " +
+                std::to_string(args.from) + " --to " + std::to_string(args.to));
+        j["unfold"] = std::move(u.summary);
+        svg = std::move(u.svg);
+    }
+    // Picture first: when it cannot be written, no JSON either; when the JSON cannot be written,
+    // the picture of this run is taken back.
+    if (!args.svg.empty()) {
+        write_file_atomically(args.svg, [&](std::ostream& out) { out << svg; });
+    }
+    try {
+        write_file_atomically(args.out, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    } catch (...) {
+        if (!args.svg.empty()) {
+            std::remove(args.svg.c_str());
+        }
+        throw;
+    }
     std::cout << "wrote " << args.out << ": " << args.method << " path of length "
               << j["length"].dump() << " with " << j["points"].size() << " points\n";
+    if (!args.svg.empty()) {
+        std::cout << "wrote " << args.svg << ": " << j["unfold"]["faces"].dump()
+                  << " unfolded faces, traced length " << j["unfold"]["traced_length"].dump()
+                  << ", unfolded straight length " << j["unfold"]["straight_length"].dump() << '\n';
+    }
 }
 
 }  // namespace
@@ -205,6 +234,10 @@ void register_geodesic_commands(CLI::App& app) {
     path->add_option("--method", p->method, "Method (default exact-mmp)")
         ->check(CLI::IsMember({"exact-mmp", "exact-cgal", "gcf"}));
     path->add_option("--out,-o", p->out, "Output JSON: points and length")->required();
+    path->add_option("--svg", p->svg,
+                     "Also draw the faces crossed by the path unfolded into the plane (SVG), "
+                     "with the straight segment between the unfolded end points; adds 'unfold' "
+                     "(traced vs straight length) to the JSON");
     path->callback([p] { run_path(*p); });
 }
 

@@ -23,6 +23,10 @@ nlohmann::json gcf_path_json(const Mesh& mesh, Vertex from, Vertex to) {
                    {"max_geodesic_curvature", r.max_geodesic_curvature},
                    {"scaled_max_geodesic_curvature", r.scaled_max_geodesic_curvature},
                    {"residual", r.residual},
+                   {"traced_length", r.traced_length},
+                   {"straightened", r.straightened},
+                   {"straighten_flips", r.straighten_flips},
+                   {"straighten_bends", r.straighten_bends},
                    {"init_seconds", r.init_seconds},
                    {"flow_seconds", r.flow_seconds},
                    {"solver", r.solver}};

@@ -1,5 +1,6 @@
-// `gcf-exact` (Algorithm 1: the whole polyline of every vertex flowed) and `gcf-window`
-// (Algorithm 2: only its last W samples) distance methods.
+// `gcf-exact` (Algorithm 1: the whole polyline of every vertex flowed), `gcf-window` (Algorithm
+// 2: only its last W samples, field-anchored windows) and `gcf-window-thesis` (Algorithm 2 with
+// the thesis' prefix rule) distance methods.
 #include "app_types.h"
 
 #include <tapeline/core/errors.h>
@@ -7,7 +8,8 @@
 
 namespace tapeline::app {
 
-MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window) {
+MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window,
+                     bool thesis_anchor) {
     if (sources.vertices.size() != 1 || !sources.locations.empty()) {
         throw InvalidInput(
             "gcf-exact / gcf-window take exactly one vertex source (ring propagation from one "
@@ -17,9 +19,12 @@ MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t windo
     result.distances.assign(num_vertices(mesh), 0.0);
     geodesic::CurvatureFlowDistanceOptions options;
     options.window = window;
+    options.anchor = thesis_anchor ? geodesic::WindowAnchor::prefix : geodesic::WindowAnchor::field;
+    options.cut_locus_guard = !thesis_anchor;  // gcf-window-thesis: the thesis' rule as written
     const geodesic::CurvatureFlowDistanceReport r = geodesic::gcf_distances(
         mesh, sources.vertices.front(), CGAL::make_property_map(result.distances), options);
-    result.report.method = window == 0 ? "gcf_exact" : "gcf_window";
+    result.report.method =
+        window == 0 ? "gcf_exact" : (thesis_anchor ? "gcf_window_thesis" : "gcf_window");
     result.report.vertices = num_vertices(mesh);
     result.report.faces = num_faces(mesh);
     result.report.sources = 1;

@@ -2,16 +2,42 @@
 
 #include <tapeline/core/errors.h>
 
+#include <cstdlib>
+
 namespace tapeline::app {
 
 const std::vector<std::string>& distance_methods() {
     static const std::vector<std::string> methods = {
-        "exact-mmp", "exact-cgal", "heat", "heat-idt", "dijkstra", "gcf-exact", "gcf-window"};
+        "exact-mmp", "exact-cgal", "heat", "heat-idt",
+        "dijkstra",  "gcf-exact",  "gcf-window", "gcf-window-thesis"};
     return methods;
 }
 
-MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
-                                 const Sources& sources, std::size_t window) {
+MethodName parse_method_name(const std::string& text, std::size_t window) {
+    MethodName out{text, window};
+    const std::size_t colon = text.find(':');
+    if (colon == std::string::npos) {
+        return out;
+    }
+    out.base = text.substr(0, colon);
+    const std::string w = text.substr(colon + 1);
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(w.c_str(), &end, 10);
+    if (out.base.rfind("gcf-window", 0) != 0 || w.empty() || *end != '\0' || value == 0 ||
+        value > 100000) {
+        throw InvalidInput("bad method '" + text +
+                           "': only gcf-window and gcf-window-thesis take ':W' with W a window of "
+                           "1 to 100000 samples");
+    }
+    out.window = static_cast<std::size_t>(value);
+    return out;
+}
+
+MethodResult run_distance_method(const std::string& name, const Mesh& mesh,
+                                 const Sources& sources, std::size_t default_window) {
+    const MethodName parsed = parse_method_name(name, default_window);
+    const std::string& method = parsed.base;
+    const std::size_t window = parsed.window;
     if (method == "exact-mmp") {
         return run_exact_mmp(mesh, sources);
     }
@@ -28,19 +54,20 @@ MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
         return run_dijkstra(mesh, sources);
     }
     if (method == "gcf-exact") {
-        return run_gcf(mesh, sources, 0);
+        return run_gcf(mesh, sources, 0, false);
     }
-    if (method == "gcf-window") {
+    if (method == "gcf-window" || method == "gcf-window-thesis") {
         if (window == 0) {
-            throw InvalidInput("--window must be at least 1 for gcf-window (gcf-exact flows all)");
+            throw InvalidInput("--window must be at least 1 for " + method +
+                               " (gcf-exact flows all)");
         }
-        return run_gcf(mesh, sources, window);
+        return run_gcf(mesh, sources, window, method == "gcf-window-thesis");
     }
     std::string known;
     for (const std::string& m : distance_methods()) {
         known += (known.empty() ? "" : ", ") + m;
     }
-    throw InvalidInput("unknown method '" + method + "' (known: " + known + ")");
+    throw InvalidInput("unknown method '" + name + "' (known: " + known + ")");
 }
 
 }  // namespace tapeline::app

@@ -13,6 +13,8 @@ if(NOT TARGET CGAL::TBB_support)
   message(FATAL_ERROR "tapeline: oneTBB not found (Debian package libtbb-dev)")
 endif()
 find_dependency(Eigen3 3.3 NO_MODULE)
+# Optional: only tapeline::geodesic_ceres needs it (Debian package libceres-dev).
+find_package(Ceres 2.1 QUIET)
 include(CGAL_Eigen3_support)
 if(NOT TARGET CGAL::Eigen3_support)
   message(FATAL_ERROR "tapeline: Eigen 3 not found (Debian package libeigen3-dev)")

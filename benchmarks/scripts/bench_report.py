@@ -33,7 +33,8 @@ NUMERIC_KEYS = (
 )
 DASH = "\u2013"  # shown for a value that is missing (null, no ok run, no reference)
 TABLE_NAME = "table.md"
-PLOT_NAMES = ("query_time_vs_vertices.png", "error_vs_vertices.png", "memory_vs_vertices.png")
+PLOT_NAMES = ("query_time_vs_vertices.png", "error_vs_vertices.png", "memory_vs_vertices.png",
+              "window_sweep.png")
 
 
 class ReportError(Exception):
@@ -213,6 +214,11 @@ class Row:
         self.mean_err_truth = mean_or_none(r.num("mean_rel_error_truth") for r in ok)
         self.max_err_truth = max_or_none(r.num("max_rel_error_truth") for r in ok)
         self.ratio = None  # filled once the reference row of the mesh is known
+        self.window, self.anchor = None, None
+        options = records[0].get("options") if records else None
+        if isinstance(options, dict) and _is_number(options.get("window")):
+            self.window = options["window"]
+            self.anchor = options.get("anchor")
 
     @property
     def family(self):
@@ -529,9 +535,21 @@ def _draw(ax, series, colors, markers, label_extra=None, linestyle="-"):
     ax.set_xlabel("vertices |V|")
 
 
+def window_series(report):
+    """{(mesh, anchor): [(window, mean error vs reference, query s), ...]} for the runs that
+    carry options.window (the windowed curvature flow), sorted by window; only meshes with at
+    least two windows."""
+    out = OrderedDict()
+    for r in report.rows:
+        if r.window is None or r.query is None:
+            continue
+        out.setdefault((r.mesh_info.mesh, r.anchor), []).append((r.window, r.mean_err, r.query))
+    return OrderedDict((k, sorted(v)) for k, v in out.items() if len(v) >= 2)
+
+
 def render_plots(report, title, plt, paths):
     colors, markers = _styles(report)
-    query_path, error_path, memory_path = paths
+    query_path, error_path, memory_path, window_path = paths
 
     def k_label(family, method):
         s = report.scaling_for(family, method)
@@ -564,6 +582,30 @@ def render_plots(report, title, plt, paths):
     ax.set_title(f"{title}: peak memory")
     fig.tight_layout()
     fig.savefig(memory_path, format="png", dpi=120)
+    plt.close(fig)
+
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(13, 5.5))
+    series = window_series(report)
+    for i, ((mesh, anchor), pts) in enumerate(series.items()):
+        label = mesh + (f" ({anchor})" if anchor else "")
+        style = dict(marker=MARKERS[i % len(MARKERS)], color=f"C{i % 10}", label=label)
+        err = [(w, e) for w, e, _ in pts if e is not None and e > 0]
+        ax1.plot([w for w, _ in err], [e for _, e in err], **style)
+        ax2.plot([w for w, _, _ in pts], [q for _, _, q in pts], **style)
+    for ax, ylabel in ((ax1, "mean relative error vs reference"), (ax2, "query time, median [s]")):
+        ax.set_xlabel("window W [samples]")
+        ax.set_ylabel(ylabel)
+        if series:
+            ax.set_xscale("log", base=2)
+            ax.set_yscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+            ax.legend(fontsize="small")
+        else:
+            ax.text(0.5, 0.5, "no runs with options.window", ha="center", va="center",
+                    transform=ax.transAxes)
+    fig.suptitle(f"{title}: error and time against the window")
+    fig.tight_layout()
+    fig.savefig(window_path, format="png", dpi=120)
     plt.close(fig)
 
 

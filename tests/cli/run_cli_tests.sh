@@ -110,6 +110,13 @@ if paste gcf_d.txt ico_exact.txt | awk 'NR > 1 && $2 > 0.3 { e = ($1 - $2) / $2;
   ok "gcf-exact within 1 % of exact ($(cat gcf_gap.txt))"; else fail "gcf-exact vs exact ($(cat gcf_gap.txt))"; fi
 expect_ok "gcf-window distances" "$bin" geodesic distances ico.off --source 0 --method gcf-window --window 8 --out gcf_w.txt
 expect_fail "gcf takes one vertex source" "one vertex source" "$bin" geodesic distances ico.off --source 0 --source 5 --method gcf-exact --out x.txt
+# Field-anchored windows stay within 1 % of the whole-path flow; the thesis' prefix rule does not.
+expect_ok "gcf-window-thesis distances" "$bin" geodesic distances ico.off --source 0 --method gcf-window-thesis --window 8 --out gcf_t.txt
+if paste gcf_w.txt gcf_t.txt gcf_d.txt | awk 'NR > 1 { w = ($1 - $3) / $3; t = ($2 - $3) / $3;
+     if (w < 0) w = -w; if (t < 0) t = -t; if (w > mw) mw = w; if (t > mt) mt = t }
+     END { print "max rel diff window " mw ", thesis " mt; exit !(mw < 1e-2 && mt > mw) }' >gcf_win.txt; then
+  ok "gcf-window close to gcf-exact, thesis rule farther ($(cat gcf_win.txt))"; else fail "gcf-window vs gcf-exact ($(cat gcf_win.txt))"; fi
+expect_fail "gcf-window with window 0" "at least 1" "$bin" geodesic distances ico.off --source 0 --method gcf-window --window 0 --out x.txt
 expect_ok "gcf path" "$bin" geodesic path ico.off --from 0 --to 300 --method gcf --out gcf.json
 if $py - "$(sed -n 301p ico_exact.txt)" "$(sed -n 301p truth.txt)" <<'PY'
 import json, sys
@@ -119,6 +126,30 @@ ok = exact * (1 - 1e-9) <= L <= exact * 1.01 and abs(S - truth) < abs(exact - tr
 print("on mesh", L, "smooth", S, "exact", exact, "truth", truth, p["report"]["status"]); sys.exit(0 if ok else 1)
 PY
 then ok "gcf path: on-mesh >= exact, smooth closer to the great circle"; else fail "gcf path lengths"; fi
+# The unfolded strip (--svg): a valid SVG with one polygon per face, and the lengths in the JSON.
+# The exact path is straight in its unfolding (when it passes no vertex); the flow's traced path
+# is no shorter than the unfolded straight segment.
+expect_ok "gcf path --svg" "$bin" geodesic path ico.off --from 0 --to 300 --method gcf --out gcf_u.json --svg gcf_u.svg
+expect_ok "exact path --svg" "$bin" geodesic path ico.off --from 0 --to 300 --out mmp_u.json --svg mmp_u.svg
+if $py - <<'PY'
+import json, sys, xml.etree.ElementTree as ET
+ns = "{http://www.w3.org/2000/svg}"
+for name in ("gcf_u", "mmp_u"):
+    u = json.load(open(name + ".json"))["unfold"]
+    root = ET.parse(name + ".svg").getroot()
+    polys = root.findall(ns + "g/" + ns + "polygon")
+    ok = root.tag == ns + "svg" and len(polys) == u["faces"] > 0 and len(root.findall(ns + "polyline")) == 1
+    ok = ok and u["straight_length"] <= u["traced_length"] * (1 + 1e-12)
+    if name == "mmp_u" and u["vertex_points"] == 0:
+        ok = ok and abs(u["traced_length"] - u["straight_length"]) <= 1e-9 * u["traced_length"]
+    print(name, u)
+    if not ok:
+        sys.exit(1)
+PY
+then ok "--svg: valid SVG, one polygon per unfolded face, exact path straight"; else fail "--svg output"; fi
+rm -f bad_u.json
+expect_fail "--svg to an unwritable place" "no_such_dir/u.svg" "$bin" geodesic path ico.off --from 0 --to 300 --method gcf --out bad_u.json --svg no_such_dir/u.svg
+if [ ! -e bad_u.json ] && [ ! -e no_such_dir ]; then ok "--svg failure: no JSON, no picture"; else fail "--svg failure left files"; fi
 
 # --- benchmark harness --------------------------------------------------------------------------
 expect_ok "bench geodesic" "$bin" bench geodesic --surface icosphere:2 --surface cylinder:1,2:24,8 \
@@ -149,6 +180,21 @@ if grep -q '"status":"crash"' oom.jsonl && grep -q 'out of memory (--memory-limi
    && grep -q '"method":"dijkstra".*"status":"ok"' oom.jsonl; then ok "memory limit: crash recorded, next method ran"
 else fail "memory limit lines: $(cat oom.jsonl | head -c 400)"; fi
 expect_fail "bench unknown method" "nomethod" "$bin" bench geodesic --surface icosphere:1 --methods nomethod --out b2.jsonl
+expect_fail "bench window on another method" "only gcf-window" "$bin" bench geodesic --surface icosphere:1 --methods dijkstra:4 --out b2.jsonl
+expect_fail "bench window not a number" "gcf-window:x" "$bin" bench geodesic --surface icosphere:1 --methods gcf-window:x --out b2.jsonl
+expect_ok "bench window sweep" "$bin" bench geodesic --surface icosphere:2 --methods gcf-window:2,gcf-window:6 \
+  --reference gcf-exact --threads 2 --out sweep.jsonl
+if $py - <<'PY'
+import json
+lines = [json.loads(l) for l in open("sweep.jsonl")]
+w = {l["method"]: l for l in lines}
+assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6"}, set(w)
+assert w["gcf-window:2"]["options"] == {"window": 2, "anchor": "field"}
+assert w["gcf-window:6"]["options"]["window"] == 6
+assert all(l["threads"] == 2 and l["status"] == "ok" for l in lines)
+assert all(w[m]["max_rel_error"] < 2e-2 for m in ("gcf-window:2", "gcf-window:6"))
+PY
+then ok "bench window sweep lines"; else fail "bench window sweep lines"; fi
 [ ! -e b2.jsonl ] && ok "rejected bench wrote nothing" || fail "rejected bench wrote b2.jsonl"
 
 # --- sewing patterns ----------------------------------------------------------------------------

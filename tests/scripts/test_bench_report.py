@@ -22,7 +22,8 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "benchmarks" / "scripts" / "bench_report.py"
 DASH = "\u2013"
-PLOTS = ("query_time_vs_vertices.png", "error_vs_vertices.png", "memory_vs_vertices.png")
+PLOTS = ("query_time_vs_vertices.png", "error_vs_vertices.png", "memory_vs_vertices.png",
+         "window_sweep.png")
 
 
 def load_module():
@@ -339,6 +340,22 @@ class PlotTest(ScriptTestCase):
             self.assertGreater(len(data), 1000, name)
             self.assertEqual(data[:8], b"\x89PNG\r\n\x1a\n", name)
         self.assertEqual(sorted(os.listdir(self.out)), sorted(("table.md",) + PLOTS))
+
+    def test_window_series_groups_windowed_runs_by_mesh(self):
+        module = load_module()
+        lines = [line("ref", "m1", 100, query_seconds=1.0)]
+        for w, err, q in ((16, 1e-3, 4.0), (4, 4e-3, 1.0), (8, 2e-3, 2.0)):
+            lines.append(line(f"gcf-window:{w}", "m1", 100, query_seconds=q, mean_rel_error=err,
+                              options={"window": w, "anchor": "field"}))
+        lines.append(line("gcf-window:8", "m2", 50, query_seconds=1.0,
+                          options={"window": 8, "anchor": "field"}))  # one window: no curve
+        src = self.tmp / "w.jsonl"
+        write_jsonl(src, lines)
+        report = module.build_report(module.read_records([str(src)]))
+        series = module.window_series(report)
+        self.assertEqual(list(series.keys()), [("m1", "field")])
+        self.assertEqual(series[("m1", "field")],
+                         [(4, 4e-3, 1.0), (8, 2e-3, 2.0), (16, 1e-3, 4.0)])
 
     @unittest.skipUnless(have_matplotlib(), "matplotlib not installed (python3-matplotlib)")
     def test_legend_shows_fitted_exponent(self):

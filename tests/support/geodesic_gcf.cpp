@@ -85,6 +85,28 @@ GcfQueries gcf_paths(const Soup& soup,
     });
 }
 
+GcfQueries gcf_paths_parallel(const Soup& soup,
+                              const std::vector<std::pair<SurfacePoint, SurfacePoint>>& pairs,
+                              const CurvatureFlowOptions& options, double* seconds) {
+    cgal::SurfaceMesh tm;
+    cgal::build(soup, tm);
+    using Solver = tg::GeodesicPathSolver<cgal::SurfaceMesh>;
+    GcfQueries out;
+    const auto t0 = std::chrono::steady_clock::now();
+    const Solver solver(tm);
+    const auto t1 = std::chrono::steady_clock::now();
+    out.prepare_seconds = std::chrono::duration<double>(t1 - t0).count();
+    std::vector<Solver::PointPair> query;
+    for (const auto& [from, to] : pairs)
+        query.emplace_back(cgal::surface_point(tm, soup, from), cgal::surface_point(tm, soup, to));
+    const auto t2 = std::chrono::steady_clock::now();
+    for (const auto& r : solver.paths(query, options))
+        out.paths.push_back(convert_all(r));
+    if (seconds)
+        *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t2).count();
+    return out;
+}
+
 GcfField gcf_distances(const Soup& soup, std::size_t source,
                        const CurvatureFlowDistanceOptions& options, MeshKind kind) {
     return cgal::with_mesh(soup, kind, [&](auto& tm) {

@@ -11,6 +11,7 @@
 
 namespace tapeline_test::geodesic {
 
+using tapeline::geodesic::CeresLinearSolver;
 using tapeline::geodesic::CurvatureFlowDistanceOptions;
 using tapeline::geodesic::CurvatureFlowDistanceReport;
 using tapeline::geodesic::CurvatureFlowOptions;
@@ -48,6 +49,18 @@ GcfQueries gcf_paths(const Soup& soup,
                      const std::vector<std::pair<SurfacePoint, SurfacePoint>>& pairs,
                      const CurvatureFlowOptions& options = {},
                      MeshKind kind = MeshKind::surface_mesh);
+
+/// The same pairs through GeodesicPathSolver::paths (in parallel with TBB); prepare_seconds is
+/// the solver construction, and `seconds` (if given) the wall time of the paths() call.
+GcfQueries gcf_paths_parallel(const Soup& soup,
+                              const std::vector<std::pair<SurfacePoint, SurfacePoint>>& pairs,
+                              const CurvatureFlowOptions& options = {}, double* seconds = nullptr);
+
+/// Whether the Ceres flow-step solver (tapeline::geodesic_ceres) is built into the tests; linking
+/// this function also registers it, so CurvatureFlowSolver::ceres can be used.
+bool gcf_ceres_available();
+/// Registers (true) or removes (false) the Ceres solver, to test the message when it is missing.
+void gcf_ceres_register(bool on);
 
 struct GcfField {
     std::vector<double> d;  ///< per soup vertex

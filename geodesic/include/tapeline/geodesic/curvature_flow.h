@@ -31,8 +31,14 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
 
 namespace tapeline::geodesic {
 
@@ -61,6 +67,9 @@ inline void check_options(const CurvatureFlowOptions& o) {
         bad("update_tolerance must be finite and >= 0");
     if (!std::isfinite(o.endpoint_weight) || !(o.endpoint_weight > 0))
         bad("endpoint_weight must be finite and > 0");
+    if (o.solver == CurvatureFlowSolver::ceres && !gcf::ceres_step_solver().load())
+        bad("solver ceres needs <tapeline/geodesic/curvature_flow_ceres.h> in the program "
+            "(CMake target tapeline::geodesic_ceres)");
 }
 
 template <class TriangleMesh, class NamedParameters>
@@ -317,6 +326,22 @@ CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, cons
             ++r.trace_fallbacks;
         traced.insert(traced.end(), best.begin() + 1, best.end());
     }
+    r.traced_length = gcf::polyline_length(traced);
+    if (o.straighten && r.trace_fallbacks == 0 && traced.size() >= 2) {
+        std::size_t bad = gcf::kNone;
+        unfold::Strip strip;
+        unfold::unfold_polyline(m, traced, UnfoldOptions{}, s.front().face, bad, &strip);
+        if (bad == gcf::kNone && !strip.faces.empty()) {
+            const std::size_t cap = 4 * strip.faces.size() + 16;
+            auto st = unfold::straighten(m, std::move(strip), traced.front(), traced.back(), cap);
+            if (st.length <= r.traced_length) {
+                traced = std::move(st.points);
+                r.straightened = true;
+                r.straighten_flips = st.flips;
+                r.straighten_bends = st.bends;
+            }
+        }
+    }
     for (const auto& p : smooth)
         out.smooth.points.push_back(to_point<Point>(p));
     out.smooth.length = gcf::polyline_length(smooth);
@@ -331,7 +356,7 @@ CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, cons
 
 /// Reusable part of the flow: the checked index maps, the compact mesh arrays, the components and
 /// the vertex frames (computed on first use and kept). Build once, query many pairs: a query then
-/// costs one Dijkstra run and the iterations. Queries are not thread-safe (the frame cache).
+/// costs one Dijkstra run and the iterations. Queries may run concurrently (see paths()).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class GeodesicPathSolver {
 public:
@@ -416,8 +441,45 @@ public:
                                            t0);
     }
 
-    std::size_t vertex_count() const { return setup_.mesh().vertex_count(); }
-    double mean_edge_length() const { return setup_.mesh().mean_edge; }
+    using PointPair = std::pair<SurfacePoint<TriangleMesh>, SurfacePoint<TriangleMesh>>;
+
+    /// Paths between many pairs of surface points, in the order of the pairs, each exactly what
+    /// path(from, to, options) gives. The queries run in parallel (tbb::parallel_for when CGAL is
+    /// linked with TBB, i.e. CGAL::TBB_support; else one after another): they share the mesh
+    /// arrays read-only and its frame cache, which threads may fill at once. Every pair is checked
+    /// before any work (InvalidInput naming the pair).
+    std::vector<Result> paths(const std::vector<PointPair>& pairs,
+                              const CurvatureFlowOptions& options = {}) const {
+        internal::check_options(options);
+        for (std::size_t k = 0; k < pairs.size(); ++k) {
+            try {
+                const auto a = setup_.locate(pairs[k].first, "the start point");
+                const auto b = setup_.locate(pairs[k].second, "the end point");
+                check_distinct(a, b);
+            } catch (const InvalidInput& e) {
+                throw InvalidInput(std::string(e.what()) + " (pair #" + std::to_string(k) + ")");
+            }
+        }
+        std::vector<Result> out(pairs.size());
+#ifdef CGAL_LINKED_WITH_TBB
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 1),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              for (std::size_t k = r.begin(); k != r.end(); ++k)
+                                  out[k] = path(pairs[k].first, pairs[k].second, options);
+                          });
+#else
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+            out[k] = path(pairs[k].first, pairs[k].second, options);
+#endif
+        return out;
+    }
+
+    std::size_t vertex_count() const {
+        return setup_.mesh().vertex_count();
+    }
+    double mean_edge_length() const {
+        return setup_.mesh().mean_edge;
+    }
 
     /// The faces crossed by a path on this mesh (e.g. result.on_mesh.points) unfolded into the
     /// plane (see unfold_path in unfold.h).
@@ -510,6 +572,7 @@ CurvatureFlowDistanceReport gcf_distances(
     pp.field_anchor = options.anchor == WindowAnchor::field;
     pp.near_source_samples = options.near_source_samples;
     pp.anchor_slides = options.anchor_slides;
+    pp.cut_locus_guard = options.cut_locus_guard;
     const auto f = internal::gcf::propagate(m, a.vertex, pp, options.flow);
     r.flows = f.flows;
     r.iterations = f.iterations;
@@ -518,6 +581,9 @@ CurvatureFlowDistanceReport gcf_distances(
     r.max_iterations = f.max_iterations;
     r.solver_failures = f.failed;
     r.stored_samples = f.stored_samples;
+    r.epsilon = f.epsilon;
+    r.max_faces = f.max_faces;
+    r.error_bound = f.epsilon * static_cast<double>(f.max_faces) * m.mean_edge;
     r.unreachable = internal::write_distances(f.d, setup.index(), distances, "gcf_distances");
     r.reached = r.vertices - r.unreachable;
     if (r.solver_failures > 0)

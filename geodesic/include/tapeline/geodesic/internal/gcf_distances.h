@@ -16,6 +16,11 @@
 #include <utility>
 #include <vector>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
 namespace tapeline::geodesic::internal::gcf {
 
 /// Flows s (endpoints fixed) until converged / stalled / max_iterations, as run_flow does.
@@ -62,6 +67,24 @@ inline std::size_t flow_to_convergence(const Mesh& m, std::vector<Sample>& s,
     return it;
 }
 
+/// Outcomes of flows, summed.
+struct FlowCounts {
+    std::size_t iterations = 0, flows = 0, converged = 0, stalled = 0, max_iterations = 0,
+                failed = 0;
+    void add(const std::string& status, std::size_t its) {
+        iterations += its;
+        ++flows;
+        if (status == "converged")
+            ++converged;
+        else if (status == "stalled")
+            ++stalled;
+        else if (status == "max_iterations")
+            ++max_iterations;
+        else
+            ++failed;
+    }
+};
+
 /// Result of the propagation, per vertex of the compact mesh.
 struct DistanceField {
     std::vector<double> d;
@@ -72,6 +95,8 @@ struct DistanceField {
     std::size_t max_iterations = 0;
     std::size_t failed = 0;
     std::size_t stored_samples = 0;  ///< samples kept at the end (memory)
+    double epsilon = 0;              ///< largest anchor kink excess / mean edge (windowed flows)
+    std::size_t max_faces = 0;       ///< largest number of faces holding samples of one path
 };
 
 /// Interpolated distance at x on face f from the visited corners: sum_i l_i (d_i + g_i.(x - v_i)/2)
@@ -127,6 +152,7 @@ struct PropagateParams {
     bool field_anchor = true;
     std::size_t near_source_samples = 0;
     std::size_t anchor_slides = 1;
+    bool cut_locus_guard = true;
 };
 
 /// Ring-by-ring propagation from vertex `src` (components: only its component is reached).
@@ -148,9 +174,18 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
     // before tail[0] (prefix anchor) and the unit direction the path arrives in (field anchor).
     std::vector<std::vector<Sample>> tail(n);
     std::vector<double> prefix(n, 0.0);
-    std::vector<Vec3> arrival(field_anchor ? n : 0, Vec3::Zero());
+    std::vector<Vec3> arrival(n, Vec3::Zero());
     std::vector<char> visited(n, 0);
     std::vector<char> whole_path(n, 0);  // tail[v] starts at the source
+    // Faces holding samples of the path before tail[0] (runs of one face counted once), for m.
+    std::vector<std::uint32_t> faces_before(n, 0);
+    auto face_runs = [](const std::vector<Sample>& c, std::size_t from, std::size_t to) {
+        std::size_t runs = 0;
+        for (std::size_t i = from; i < to; ++i)
+            if (i == from || c[i].face != c[i - 1].face)
+                ++runs;
+        return runs;
+    };
     auto lifted = [&](const Sample& a) -> Vec3 {
         if (!pp.smooth || a.face == kNone)
             return a.p;
@@ -199,30 +234,22 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
     };
     // Stores c as the path of w. d: its distance when already known (field anchor), else the
     // prefix `pre` before c[0] plus the length of c.
-    auto keep = [&](std::uint32_t w, std::vector<Sample>& c, double pre, double d, bool whole) {
+    auto keep = [&](std::uint32_t w, std::vector<Sample>& c, double pre, double d, bool whole,
+                    std::size_t faces_pre) {
         std::size_t first = 0;
         whole = whole && field_anchor;
         whole_path[w] = whole ? 1 : 0;
         if (window > 0 && !whole && c.size() > window + 1)
             first = c.size() - (window + 1);
         prefix[w] = pre + (first > 0 ? length_of(c, 0, first) : 0.0);
+        faces_before[w] = static_cast<std::uint32_t>(faces_pre + face_runs(c, 0, first));
+        out.max_faces = std::max(out.max_faces, faces_pre + face_runs(c, 0, c.size()));
         out.d[w] = std::isfinite(d) ? d : prefix[w] + length_of(c, first, c.size() - 1);
-        if (field_anchor && c.size() >= 2)
+        if (c.size() >= 2)
             arrival[w] = tangent(w, c.back().p - c[c.size() - 2].p);
         tail[w].assign(c.begin() + static_cast<std::ptrdiff_t>(first), c.end());
         tail[w].shrink_to_fit();
         visited[w] = 1;
-    };
-    auto count_status = [&](const std::string& status) {
-        ++out.flows;
-        if (status == "converged")
-            ++out.converged;
-        else if (status == "stalled")
-            ++out.stalled;
-        else if (status == "max_iterations")
-            ++out.max_iterations;
-        else
-            ++out.failed;
     };
 
     using Item = std::pair<double, std::uint32_t>;
@@ -250,24 +277,24 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             continue;
         std::vector<Sample> c{vertex_sample(src)};
         append_edge(c, w);
-        keep(w, c, 0.0, (m.xyz[w] - m.xyz[src]).norm(), true);  // straight edge, exactly
+        keep(w, c, 0.0, (m.xyz[w] - m.xyz[src]).norm(), true, 0);  // straight edge, exactly
     }
     relax(src);
     for (std::uint32_t k = m.vv_start[src]; k < m.vv_start[src + 1]; ++k)
         relax(m.vv[k]);
 
     // Flows the part of c from `start` on (c[start] and c.back() fixed).
-    auto flow_part = [&](std::vector<Sample>& c, std::size_t start) {
+    auto flow_part = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
         std::vector<Sample> part(c.begin() + static_cast<std::ptrdiff_t>(start), c.end());
         std::string status;
-        out.iterations += flow_to_convergence(m, part, o, status);
-        count_status(status);
+        const std::size_t its = flow_to_convergence(m, part, o, status);
+        counts.add(status, its);
         std::copy(part.begin(), part.end(), c.begin() + static_cast<std::ptrdiff_t>(start));
     };
     // Field anchor: the anchor c[start] is slid sideways so that the flowed window leaves it in
     // the direction the field arrives in; returns the anchor's interpolated distance (+inf when
     // its face has no visited corner).
-    auto slide_anchor = [&](std::vector<Sample>& c, std::size_t start) {
+    auto slide_anchor = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
         Sample& a = c[start];
         Vec3 grad;
         double da = field_at(m, a.face, a.p, out.d, arrival, visited, &grad);
@@ -285,18 +312,42 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             a.p += shift;
             a.vertex = nearest_vertex_walk(m, a.p, a.vertex);
             project_around(m, a);
-            flow_part(c, start);
+            flow_part(c, start, counts);
             da = field_at(m, a.face, a.p, out.d, arrival, visited, &grad);
         }
         return da;
     };
 
-    std::vector<Sample> c;
-    while (!q.empty()) {
-        const auto [t, w] = q.top();
-        q.pop();
-        if (visited[w] || t > tentative[w])
-            continue;
+    // epsilon of the thesis' O(epsilon m) bound: the length a fixed anchor c[start] adds over the
+    // chord from the sample before it to the one after it, |PA| + |AB| - |PB|. P is the path's
+    // own previous sample (prefix anchor) or a point one spacing back along the field's arrival
+    // direction (field anchor).
+    auto kink_excess = [&](const std::vector<Sample>& c, std::size_t start) {
+        const Vec3 a = c[start].p, b = c[start + 1].p;
+        Vec3 p = c[start - 1].p;
+        if (field_anchor) {
+            Vec3 grad;
+            const double da = field_at(m, c[start].face, a, out.d, arrival, visited, &grad);
+            const Vec3 t_in = tangent(c[start].vertex, grad);
+            if (!std::isfinite(da) || t_in.squaredNorm() == 0)
+                return 0.0;
+            p = a - (a - c[start - 1].p).norm() * t_in;
+        }
+        return (a - p).norm() + (b - a).norm() - (b - p).norm();
+    };
+
+    // The path of one vertex from the visited set as it stands; reads shared state only, so
+    // the vertices of a batch (below) are solved in parallel.
+    struct Solved {
+        std::vector<Sample> c;
+        double len = 0;
+        std::uint32_t chosen = kNone;  // parent; kNone: straight from the source
+        bool whole = false;
+        std::size_t start = 0;
+        double excess = 0;
+        FlowCounts counts;
+    };
+    auto solve = [&](std::uint32_t w, Solved& r) {
         // Candidate parents: the straightest continuation among the visited neighbours, or
         // (shortest_parent) every visited neighbour, keeping the shortest flowed result.
         std::uint32_t best_u = kNone;
@@ -322,18 +373,38 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             }
         }
         if (best_u == kNone) {  // only the source is visited around w (cannot happen past ring 1)
-            c.assign(1, vertex_sample(src));
-            append_edge(c, w);
-            keep(w, c, 0.0, inf, true);
-            relax(w);
-            continue;
+            r.c.assign(1, vertex_sample(src));
+            append_edge(r.c, w);
+            r.chosen = kNone;
+            return;
         }
-        if (!pp.shortest_parent)
+        if (!pp.shortest_parent) {
+            // Cut-locus guard: where two wavefronts meet, the straightest continuation may come
+            // from the longer side (or the wrong side of a handle); the neighbour that gives the
+            // smallest tentative distance and those whose geodesics arrive from a clearly
+            // different direction (over 60 degrees) are continued too, the shortest kept.
+            std::vector<std::uint32_t> others;
+            if (pp.cut_locus_guard) {
+                std::uint32_t nearest = kNone;
+                double nearest_t = inf;
+                for (const std::uint32_t u : parents) {
+                    const double t = out.d[u] + (m.xyz[w] - m.xyz[u]).norm();
+                    if (t < nearest_t) {
+                        nearest_t = t;
+                        nearest = u;
+                    }
+                    if (u != best_u && arrival[u].dot(arrival[best_u]) < 0.5)
+                        others.push_back(u);
+                }
+                if (nearest != best_u &&
+                    std::find(others.begin(), others.end(), nearest) == others.end())
+                    others.push_back(nearest);
+            }
             parents.assign(1, best_u);
-        double best_len = inf;
-        std::vector<Sample> best_c;
-        std::uint32_t chosen = kNone;
-        bool best_whole = false;
+            parents.insert(parents.end(), others.begin(), others.end());
+        }
+        r.len = inf;
+        std::vector<Sample> c;
         for (const std::uint32_t u : parents) {
             c = tail[u];
             append_edge(c, w);
@@ -342,24 +413,109 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             const bool whole = field_anchor && whole_path[u] && c.size() <= near_source;
             if (window > 0 && !whole && c.size() > window + 1)
                 start = c.size() - (window + 1);
-            flow_part(c, start);
+            flow_part(c, start, r.counts);
             double len;
+            double excess = 0;
             if (field_anchor && start > 0) {
-                const double da = slide_anchor(c, start);
+                const double da = slide_anchor(c, start, r.counts);
+                excess = kink_excess(c, start);
                 len = std::isfinite(da) ? da + length_of(c, start, c.size() - 1)
                                         : prefix[u] + length_of(c, 0, c.size() - 1);
             } else {
                 len = prefix[u] + length_of(c, 0, c.size() - 1);
+                if (start > 0)
+                    excess = kink_excess(c, start);
             }
-            if (len < best_len) {
-                best_len = len;
-                best_c.swap(c);
-                chosen = u;
-                best_whole = whole;
+            if (len < r.len) {
+                r.len = len;
+                r.c.swap(c);
+                r.chosen = u;
+                r.whole = whole;
+                r.start = start;
+                r.excess = excess;
             }
         }
-        keep(w, best_c, prefix[chosen], field_anchor ? best_len : inf, best_whole);
+    };
+    auto commit = [&](std::uint32_t w, Solved& r) {
+        if (r.chosen == kNone) {
+            keep(w, r.c, 0.0, inf, true, 0);
+        } else {
+            keep(w, r.c, prefix[r.chosen], field_anchor ? r.len : inf, r.whole,
+                 faces_before[r.chosen]);
+            if (r.start > 0)
+                out.epsilon = std::max(out.epsilon, r.excess / m.mean_edge);
+        }
+        const FlowCounts& k = r.counts;
+        out.iterations += k.iterations;
+        out.flows += k.flows;
+        out.converged += k.converged;
+        out.stalled += k.stalled;
+        out.max_iterations += k.max_iterations;
+        out.failed += k.failed;
         relax(w);
+    };
+
+    // Batches (causality): the queue's next vertices within `band` of its minimum, none adjacent
+    // to another of the batch, are the ones the one-at-a-time order would visit next (relaxing
+    // one cannot lower another's tentative distance below the band), and none can be the parent
+    // of another. They are solved against the same visited set, in parallel, then committed in
+    // queue order, so the result does not depend on the number of threads.
+    double band = inf;
+    for (std::size_t v = 0; v < n; ++v)
+        for (std::uint32_t k = m.vv_start[v]; k < m.vv_start[v + 1]; ++k) {
+            const double e = (m.xyz[m.vv[k]] - m.xyz[v]).norm();
+            if (e > 0)
+                band = std::min(band, e);
+        }
+    for (std::size_t v = 0; v < n; ++v)  // fill the frame cache before threads read it
+        m.frame(static_cast<std::uint32_t>(v));
+    std::vector<char> in_batch(n, 0);
+    std::vector<std::uint32_t> batch;
+    std::vector<Item> deferred;
+    std::vector<Solved> solved;
+    while (!q.empty()) {
+        batch.clear();
+        deferred.clear();
+        double t0 = inf;
+        while (!q.empty()) {
+            const auto [t, w] = q.top();
+            if (!batch.empty() && t > t0 + band)
+                break;
+            q.pop();
+            if (visited[w] || in_batch[w] || t > tentative[w])
+                continue;
+            bool adjacent = false;
+            for (std::uint32_t k = m.vv_start[w]; k < m.vv_start[w + 1] && !adjacent; ++k)
+                adjacent = in_batch[m.vv[k]] != 0;
+            if (adjacent) {
+                deferred.push_back({t, w});
+                continue;
+            }
+            if (batch.empty())
+                t0 = t;
+            batch.push_back(w);
+            in_batch[w] = 1;
+        }
+        for (const Item& it : deferred)
+            q.push(it);
+        solved.assign(batch.size(), Solved{});
+#ifdef CGAL_LINKED_WITH_TBB
+        if (batch.size() > 1) {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 1),
+                              [&](const tbb::blocked_range<std::size_t>& range) {
+                                  for (std::size_t i = range.begin(); i != range.end(); ++i)
+                                      solve(batch[i], solved[i]);
+                              });
+        } else
+#endif
+        {
+            for (std::size_t i = 0; i < batch.size(); ++i)
+                solve(batch[i], solved[i]);
+        }
+        for (std::size_t i = 0; i < batch.size(); ++i) {
+            in_batch[batch[i]] = 0;
+            commit(batch[i], solved[i]);
+        }
     }
     for (std::size_t v = 0; v < n; ++v)
         out.stored_samples += tail[v].size();

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The curvature-flow benchmark of docs/benchmarks.md (issue 4): gcf-exact (Algorithm 1),
+# gcf-window at W = 4, 8, 16 (Algorithm 2, field-anchored windows) and gcf-window-thesis:8
+# (Algorithm 2 with the thesis' prefix rule) side by side with exact-mmp (the reference),
+# heat-idt and dijkstra, in one run per part:
+#   1. accuracy on icospheres, a jittered triaxial ellipsoid, a torus and the shared meshes;
+#   2. scaling of the windowed flow on icospheres level 5 to 8 (10k to 655k vertices) and the
+#      41k-vertex meshes.
+#   benchmarks/run_gcf.sh [build/apps/tapeline] [out-dir]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${1:-$root/build/apps/tapeline}
+out=${2:-$root/docs/bench_gcf}
+shared=$root/../shared/data/meshes
+mkdir -p "$out"
+jsonl="$out/gcf.jsonl"
+common=(--timeout 900 --memory-limit 16 --seed 1 --reference exact-mmp --threads 1)
+windows=gcf-window:4,gcf-window:8,gcf-window:16,gcf-window-thesis:8
+
+meshes=()
+for m in spot.obj bob_tri.obj blub_triangulated.obj kitten.off fandisk.obj; do
+  [ -f "$shared/$m" ] && meshes+=(--mesh "$shared/$m")
+done
+
+# 1. Accuracy, up to ~10k vertices: 2 sources x 2 repetitions.
+"$bin" bench geodesic "${common[@]}" --sources 2 --repeat 2 \
+  --methods exact-mmp,dijkstra,heat-idt,gcf-exact,$windows \
+  --surface icosphere:3 --surface icosphere:4 --surface icosphere:5 \
+  --surface ellipsoid:1,0.6,0.3:4:0.25 --surface ellipsoid:1,0.6,0.3:5:0.25 \
+  --surface torus:1,0.4:80,32 --surface torus:1,0.4:160,64 \
+  "${meshes[@]}" --out "$jsonl"
+# 2. Scaling and the ~41k meshes: one source, one repetition; gcf-exact (Algorithm 1, whose cost
+#    grows like V^1.5) on icosphere:6 only.
+big=()
+[ -f "$shared/armadillo.obj" ] && big+=(--mesh "$shared/armadillo.obj")
+"$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
+  --methods exact-mmp,dijkstra,heat-idt,gcf-exact,$windows --surface icosphere:6 --out "$jsonl"
+"$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
+  --methods exact-mmp,dijkstra,heat-idt,$windows \
+  --surface ellipsoid:1,0.6,0.3:6:0.25 --surface torus:1,0.4:320,128 "${big[@]}" \
+  --surface icosphere:7 --surface icosphere:8 --out "$jsonl"
+/usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$jsonl" --out-dir "$out" \
+  --title "Geodesic curvature flow against exact MMP, heat and Dijkstra"
+# 3. TBB: the batches of the ring propagation on both cores (the rows above use one thread).
+"$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference none --threads 2 \
+  --sources 1 --repeat 1 --methods gcf-window:8 --surface icosphere:7 --out "$out/gcf_threads.jsonl"
+"$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference none --threads 1 \
+  --sources 1 --repeat 1 --methods gcf-window:8 --surface icosphere:7 --append \
+  --out "$out/gcf_threads.jsonl"
