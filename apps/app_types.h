@@ -4,6 +4,7 @@
 #include <tapeline/core/analytic_surfaces.h>
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/geodesic/geodesic_types.h>
+#include <tapeline/geodesic/point_cloud_types.h>
 #include <tapeline/geodesic/sources.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -41,6 +42,17 @@ struct MethodResult {
     geodesic::DistanceReport report;
 };
 
+/// Settings of the gcf-points method (the mesh's vertices taken as a point cloud): grid cell (0:
+/// automatic), neighbours d, projection ("mls" or "plane") and Gaussian noise added to the points
+/// first (sigma as a fraction of the bounding-box diagonal, seeded).
+struct PointsMethodOptions {
+    double cell = 0;
+    std::size_t neighbours = 16;
+    std::string projection = "mls";
+    double noise = 0;
+    std::uint64_t seed = 1;
+};
+
 /// The distance methods the tool knows, in the order they are listed in --help.
 const std::vector<std::string>& distance_methods();
 /// Runs `method` ("exact-mmp", "exact-cgal", "heat", "heat-idt", "dijkstra"); throws InvalidInput
@@ -48,15 +60,20 @@ const std::vector<std::string>& distance_methods();
 /// `window` is the window of gcf-window (samples flowed per vertex) unless the name carries one
 /// ("gcf-window:16").
 MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
-                                 const Sources& sources, std::size_t window = 8);
+                                 const Sources& sources, std::size_t window = 8,
+                                 const PointsMethodOptions& points = {});
 
-/// A method name as given ("gcf-window:16"): the method and its window.
+/// A method name as given ("gcf-window:16", "gcf-exact/faces"): the method, its window, and
+/// whether a curvature-flow method reports the length of its samples on the faces (like for like
+/// with exact polyhedral) instead of the Phong-lifted length (towards the smooth surface).
 struct MethodName {
     std::string base;
     std::size_t window;
+    bool on_faces;
 };
-/// Splits "gcf-window:W" / "gcf-window-thesis:W"; other names are returned whole with `window`.
-/// InvalidInput for a ':W' on another method or a W that is not a positive integer.
+/// Splits "gcf-window:W" / "gcf-window-thesis:W" and a trailing "/faces" on gcf-* methods; other
+/// names are returned whole with `window`. InvalidInput for a ':W' or '/faces' on another method
+/// or a W that is not a positive integer.
 MethodName parse_method_name(const std::string& text, std::size_t window);
 
 // One entry point per method family, each in its own translation unit (compile in parallel).
@@ -67,7 +84,20 @@ MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
 /// gcf-exact (window 0), gcf-window (field anchor) or, with `thesis_anchor`, gcf-window-thesis
 /// (the thesis' prefix rule).
 MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window,
-                     bool thesis_anchor);
+                     bool thesis_anchor, bool on_faces);
+
+/// gcf-points: the vertices of `mesh` as a point cloud (optionally with noise), distances by the
+/// point-cloud flow (geodesic/point_cloud.h) from the one vertex source.
+MethodResult run_gcf_points(const Mesh& mesh, const Sources& sources, std::size_t window,
+                            const PointsMethodOptions& points);
+
+/// Distances on a point set read from a file (.xyz, .csv, .ply): one per point, in file order.
+struct PointCloudRun {
+    std::vector<double> distances;
+    geodesic::PointCloudDistanceReport report;
+};
+PointCloudRun run_point_cloud_file(const std::string& path, std::size_t source, std::size_t window,
+                                   const PointsMethodOptions& points);
 
 /// Peak and current resident set size of this process, in bytes (0 when unknown).
 std::size_t current_rss_bytes();

@@ -52,6 +52,7 @@ struct BenchArgs {
     std::size_t window = 8;
     int threads = 1;
     bool append = false;
+    PointsMethodOptions points;  // gcf-points: --cell, --neighbours, --projection, --noise
 };
 
 std::vector<std::string> split_list(const std::string& text) {
@@ -431,8 +432,10 @@ void run_bench(const BenchArgs& args) {
 #endif
                             Sources sources;
                             sources.vertices.push_back(src);
+                            PointsMethodOptions points = args.points;
+                            points.seed = args.seed;
                             MethodResult r =
-                                run_distance_method(method, mesh, sources, args.window);
+                                run_distance_method(method, mesh, sources, args.window, points);
                             fields["pre_seconds"] = r.report.pre_seconds;
                             fields["query_seconds"] = r.report.query_seconds;
                             fields["unreachable"] = r.report.unreachable;
@@ -475,10 +478,22 @@ void run_bench(const BenchArgs& args) {
                         options["intrinsic_delaunay"] = true;
                     } else if (method == "heat") {
                         options["intrinsic_delaunay"] = false;
-                    } else if (method.rfind("gcf-window", 0) == 0) {
+                    } else if (method.rfind("gcf-", 0) == 0) {
                         const MethodName parsed = parse_method_name(method, args.window);
-                        options["window"] = parsed.window;
-                        options["anchor"] = parsed.base == "gcf-window-thesis" ? "prefix" : "field";
+                        if (parsed.base != "gcf-exact") {
+                            options["window"] = parsed.window;
+                            options["anchor"] =
+                                parsed.base == "gcf-window-thesis" ? "prefix" : "field";
+                        }
+                        options["length"] = parsed.on_faces ? "faces" : "smooth";
+                        if (parsed.base == "gcf-points") {
+                            options.erase("anchor");
+                            options.erase("length");
+                            options["cell"] = args.points.cell;
+                            options["neighbours"] = args.points.neighbours;
+                            options["projection"] = args.points.projection;
+                            options["noise"] = args.points.noise;
+                        }
                     }
                     line["options"] = options;
                     for (const char* key :
@@ -569,6 +584,21 @@ void register_bench_commands(CLI::App& app) {
            "--window", a->window,
            "Samples flowed per vertex by gcf-window (a method 'gcf-window:W' sets its own)")
         ->capture_default_str();
+    geo->add_option("--cell", a->points.cell,
+                    "gcf-points: grid cell size (0: the median distance to the d-th neighbour)")
+        ->capture_default_str();
+    geo->add_option("--neighbours", a->points.neighbours,
+                    "gcf-points: neighbours d of the local surfaces")
+        ->capture_default_str();
+    geo->add_option("--projection", a->points.projection, "gcf-points: mls or plane")
+        ->check(CLI::IsMember({"mls", "plane"}))
+        ->capture_default_str();
+    geo->add_option("--noise", a->points.noise,
+                    "gcf-points: Gaussian noise added to the mesh's vertices, sigma as a fraction "
+                    "of the bounding-box diagonal (seeded by --seed); errors stay against the "
+                    "clean vertices")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     geo->add_flag("--append", a->append, "Append to --out instead of replacing it");
     geo->add_option("--out,-o", a->out, "JSON-lines output")->required();
     geo->callback([a] { run_bench(*a); });

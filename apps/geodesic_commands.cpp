@@ -109,7 +109,53 @@ struct DistancesArgs {
     std::string method = "exact-mmp";
     std::size_t window = 8;
     std::string out;
+    bool point_cloud = false;
+    PointsMethodOptions points;
 };
+
+// --point-cloud: the positional input is a point set (.xyz, .csv, .ply); gcf-points from one
+// point; one distance per point, in file order.
+void run_point_cloud_distances(const DistancesArgs& args, bool method_given) {
+    if (args.mesh.mesh.empty()) {
+        throw InvalidInput("--point-cloud needs a points file (.xyz, .csv or .ply)");
+    }
+    if (method_given && parse_method_name(args.method, args.window).base != "gcf-points") {
+        throw InvalidInput("--point-cloud: method '" + args.method +
+                           "' needs a mesh; point clouds take gcf-points");
+    }
+    if (args.sources.size() != 1 || !args.source_points.empty()) {
+        throw InvalidInput("--point-cloud takes exactly one --source I (a point index)");
+    }
+    if (args.sources.front() < 0) {
+        throw InvalidInput("--source " + std::to_string(args.sources.front()) +
+                           ": point indices start at 0");
+    }
+    if (extension_of(args.out) != ".txt") {
+        throw InvalidInput(args.out +
+                           ": a point cloud's distances are written as .txt (one per "
+                           "point per line)");
+    }
+    const std::size_t window = parse_method_name(args.method, args.window).window;
+    const PointCloudRun run =
+        run_point_cloud_file(args.mesh.mesh, static_cast<std::size_t>(args.sources.front()),
+                             method_given ? window : args.window, args.points);
+    write_file_atomically(args.out, [&](std::ostream& out) {
+        out.precision(17);
+        for (double d : run.distances) {
+            if (std::isfinite(d)) {
+                out << d << '\n';
+            } else {
+                out << "inf\n";
+            }
+        }
+    });
+    const auto& r = run.report;
+    std::cout << "wrote " << args.out << ": gcf-points on " << args.mesh.mesh << " (" << r.points
+              << " points in R^" << r.dimension << ", k " << r.manifold_dimension << ", cell "
+              << r.cell_size << ", " << r.nodes << " nodes), prepare " << r.prepare_seconds
+              << " s, total " << r.seconds << " s, unreachable " << r.unreachable << ", "
+              << r.status << '\n';
+}
 
 void run_distances(const DistancesArgs& args) {
     InputMesh input = load(args.mesh);
@@ -213,15 +259,45 @@ void register_geodesic_commands(CLI::App& app) {
     dist->add_option(
         "--source-point", d->source_points,
         "Source point FACE:B0,B1,B2 in a face of the loaded triangle mesh (repeatable)");
-    dist->add_option("--method", d->method, "Method (default exact-mmp)")
-        ->check(CLI::IsMember(distance_methods()));
+    dist->add_option("--method", d->method,
+                     "Method (default exact-mmp); a gcf-* method with '/faces' reports the length "
+                     "of its samples on the faces instead of the Phong-lifted one")
+        ->check(CLI::Validator(
+            [](std::string& m) {
+                const std::string base = parse_method_name(m, 8).base;
+                const auto& known = distance_methods();
+                return std::find(known.begin(), known.end(), base) == known.end()
+                           ? "unknown method '" + m + "'"
+                           : std::string();
+            },
+            "METHOD"));
     dist->add_option("--window", d->window, "Samples flowed per vertex by gcf-window")
         ->capture_default_str();
     dist->add_option("--out,-o", d->out,
                      "Output: .txt (one distance per input vertex per line, inf if unreachable) "
                      "or .ply (mesh coloured by distance)")
         ->required();
-    dist->callback([d] { run_distances(*d); });
+    dist->add_flag("--point-cloud", d->point_cloud,
+                   "The input is a point set (.xyz, .csv: any dimension; .ply): distances by "
+                   "gcf-points (curvature flow over a grid of cells, the thesis' Algorithm 3)");
+    dist->add_option("--cell", d->points.cell,
+                     "gcf-points: grid cell size (0: the median distance to the d-th neighbour)")
+        ->capture_default_str();
+    dist->add_option("--neighbours", d->points.neighbours,
+                     "gcf-points: neighbours d of the local surfaces (PCA, MLS)")
+        ->capture_default_str();
+    dist->add_option("--projection", d->points.projection,
+                     "gcf-points: local surface, mls (quadric) or plane")
+        ->check(CLI::IsMember({"mls", "plane"}))
+        ->capture_default_str();
+    auto* method_option = dist->get_option("--method");
+    dist->callback([d, method_option] {
+        if (d->point_cloud) {
+            run_point_cloud_distances(*d, method_option->count() > 0);
+        } else {
+            run_distances(*d);
+        }
+    });
 
     auto p = std::make_shared<PathArgs>();
     CLI::App* path = geo->add_subcommand(

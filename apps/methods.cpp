@@ -8,13 +8,25 @@ namespace tapeline::app {
 
 const std::vector<std::string>& distance_methods() {
     static const std::vector<std::string> methods = {
-        "exact-mmp", "exact-cgal", "heat", "heat-idt",
-        "dijkstra",  "gcf-exact",  "gcf-window", "gcf-window-thesis"};
+        "exact-mmp",  "exact-cgal",        "heat",      "heat-idt", "dijkstra", "gcf-exact",
+        "gcf-window", "gcf-window-thesis", "gcf-points"};
     return methods;
 }
 
-MethodName parse_method_name(const std::string& text, std::size_t window) {
-    MethodName out{text, window};
+MethodName parse_method_name(const std::string& given, std::size_t window) {
+    MethodName out{given, window, false};
+    std::string text = given;
+    const std::string faces = "/faces";
+    if (text.size() > faces.size() &&
+        text.compare(text.size() - faces.size(), faces.size(), faces) == 0) {
+        text.resize(text.size() - faces.size());
+        if (text.rfind("gcf-", 0) != 0) {
+            throw InvalidInput("bad method '" + given +
+                               "': only the gcf-* distance methods take '/faces'");
+        }
+        out.on_faces = true;
+        out.base = text;
+    }
     const std::size_t colon = text.find(':');
     if (colon == std::string::npos) {
         return out;
@@ -23,18 +35,18 @@ MethodName parse_method_name(const std::string& text, std::size_t window) {
     const std::string w = text.substr(colon + 1);
     char* end = nullptr;
     const unsigned long long value = std::strtoull(w.c_str(), &end, 10);
-    if (out.base.rfind("gcf-window", 0) != 0 || w.empty() || *end != '\0' || value == 0 ||
-        value > 100000) {
-        throw InvalidInput("bad method '" + text +
-                           "': only gcf-window and gcf-window-thesis take ':W' with W a window of "
-                           "1 to 100000 samples");
+    const bool takes_window = out.base.rfind("gcf-window", 0) == 0 || out.base == "gcf-points";
+    if (!takes_window || w.empty() || *end != '\0' || value == 0 || value > 100000) {
+        throw InvalidInput("bad method '" + given +
+                           "': only gcf-window, gcf-window-thesis and gcf-points take ':W' with W "
+                           "a window of 1 to 100000 samples");
     }
     out.window = static_cast<std::size_t>(value);
     return out;
 }
 
-MethodResult run_distance_method(const std::string& name, const Mesh& mesh,
-                                 const Sources& sources, std::size_t default_window) {
+MethodResult run_distance_method(const std::string& name, const Mesh& mesh, const Sources& sources,
+                                 std::size_t default_window, const PointsMethodOptions& points) {
     const MethodName parsed = parse_method_name(name, default_window);
     const std::string& method = parsed.base;
     const std::size_t window = parsed.window;
@@ -54,14 +66,17 @@ MethodResult run_distance_method(const std::string& name, const Mesh& mesh,
         return run_dijkstra(mesh, sources);
     }
     if (method == "gcf-exact") {
-        return run_gcf(mesh, sources, 0, false);
+        return run_gcf(mesh, sources, 0, false, parsed.on_faces);
     }
     if (method == "gcf-window" || method == "gcf-window-thesis") {
         if (window == 0) {
             throw InvalidInput("--window must be at least 1 for " + method +
                                " (gcf-exact flows all)");
         }
-        return run_gcf(mesh, sources, window, method == "gcf-window-thesis");
+        return run_gcf(mesh, sources, window, method == "gcf-window-thesis", parsed.on_faces);
+    }
+    if (method == "gcf-points") {
+        return run_gcf_points(mesh, sources, window, points);
     }
     std::string known;
     for (const std::string& m : distance_methods()) {

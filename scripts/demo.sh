@@ -9,14 +9,16 @@ out=${2:-$root/out/demo}
 mkdir -p "$out"
 
 echo "== distances on data/spot.obj from vertex 0, every method"
-for method in exact-mmp exact-cgal heat heat-idt dijkstra; do
+for method in exact-mmp exact-cgal heat heat-idt dijkstra gcf-window; do
   "$bin" geodesic distances "$root/data/spot.obj" --source 0 --method "$method" \
       --out "$out/spot_$method.ply"
 done
 "$bin" geodesic distances "$root/data/spot.obj" --source 0 --method exact-mmp --out "$out/spot_exact-mmp.txt"
 
-echo "== exact geodesic path on data/spot.obj"
+echo "== geodesic paths on data/spot.obj: exact, and by curvature flow with its unfolded strip"
 "$bin" geodesic path "$root/data/spot.obj" --from 0 --to 1500 --method exact-mmp --out "$out/spot_path.json"
+"$bin" geodesic path "$root/data/spot.obj" --from 0 --to 1500 --method gcf --out "$out/spot_gcf_path.json" \
+    --svg "$out/spot_gcf_unfold.svg"
 
 echo "== sewing patterns: import the bundled FreeSewing and GarmentCode patterns, export them"
 rm -f "$out/patterns.sqlite"*
@@ -28,11 +30,13 @@ rm -f "$out/patterns.sqlite"*
 
 echo "== side-by-side benchmark on small analytic surfaces"
 "$bin" bench geodesic --surface icosphere:3 --surface ellipsoid:1,1,0.5:3:0.2 --surface icosphere:4 \
-    --methods exact-mmp,exact-cgal,heat,heat-idt,dijkstra --reference exact-mmp --sources 2 --repeat 3 \
+    --methods exact-mmp,exact-cgal,heat,heat-idt,dijkstra,gcf-window:4,gcf-window:8 \
+    --reference exact-mmp --sources 2 --repeat 3 \
     --out "$out/bench.jsonl"
 /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$out/bench.jsonl" --out-dir "$out/bench" \
     --title "Demo: small analytic surfaces"
 cat "$out/bench/table.md"
 echo
 echo "Open the coloured distance fields $out/spot_*.ply in MeshLab or Blender;"
-echo "the benchmark plots are in $out/bench/; the shirt pattern is drawn in $out/shirt.svg and .png."
+echo "the benchmark plots are in $out/bench/; the shirt pattern is drawn in $out/shirt.svg and .png;"
+echo "the curvature-flow path's unfolded strip is $out/spot_gcf_unfold.svg."

@@ -544,7 +544,8 @@ def window_series(report):
         if r.window is None or r.query is None:
             continue
         out.setdefault((r.mesh_info.mesh, r.anchor), []).append((r.window, r.mean_err, r.query))
-    return OrderedDict((k, sorted(v)) for k, v in out.items() if len(v) >= 2)
+    # Sorted by window only: the error is None when the runs had no reference.
+    return OrderedDict((k, sorted(v, key=lambda t: t[0])) for k, v in out.items() if len(v) >= 2)
 
 
 def render_plots(report, title, plt, paths):

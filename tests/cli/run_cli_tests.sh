@@ -189,13 +189,110 @@ import json
 lines = [json.loads(l) for l in open("sweep.jsonl")]
 w = {l["method"]: l for l in lines}
 assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6"}, set(w)
-assert w["gcf-window:2"]["options"] == {"window": 2, "anchor": "field"}
+assert w["gcf-window:2"]["options"] == {"window": 2, "anchor": "field", "length": "smooth"}
 assert w["gcf-window:6"]["options"]["window"] == 6
 assert all(l["threads"] == 2 and l["status"] == "ok" for l in lines)
 assert all(w[m]["max_rel_error"] < 2e-2 for m in ("gcf-window:2", "gcf-window:6"))
 PY
 then ok "bench window sweep lines"; else fail "bench window sweep lines"; fi
 [ ! -e b2.jsonl ] && ok "rejected bench wrote nothing" || fail "rejected bench wrote b2.jsonl"
+
+# --- geodesics on point clouds (gcf-points) -----------------------------------------------------
+# Points on the unit sphere as .xyz, .csv (with a header) and a faceless .ply; distances against
+# the great circle; the same points in R^5 (.csv); readers' line-numbered rejections.
+$py - <<'PY'
+import math, random
+random.seed(3)
+pts = []
+while len(pts) < 3000:
+    v = [random.gauss(0, 1) for _ in range(3)]
+    n = math.sqrt(sum(c * c for c in v))
+    if n > 1e-9:
+        pts.append([c / n for c in v])
+with open("sphere.xyz", "w") as f:
+    f.write("# unit sphere\n")
+    for p in pts:
+        f.write("%.17g %.17g %.17g\n" % tuple(p))
+with open("sphere.csv", "w") as f:
+    f.write("x,y,z\n")
+    for p in pts:
+        f.write("%.17g, %.17g, %.17g\n" % tuple(p))
+with open("sphere.ply", "w") as f:
+    f.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\n"
+            "property double z\nend_header\n" % len(pts))
+    for p in pts:
+        f.write("%.17g %.17g %.17g\n" % tuple(p))
+# R^5: (x, y, z, 0, 0) rotated by a fixed orthogonal matrix (two Givens rotations).
+c, s = math.cos(0.7), math.sin(0.7)
+with open("sphere5.csv", "w") as f:
+    for p in pts:
+        q = [p[0], p[1], p[2], 0.0, 0.0]
+        q[0], q[3] = c * q[0] - s * q[3], s * q[0] + c * q[3]
+        q[2], q[4] = c * q[2] - s * q[4], s * q[2] + c * q[4]
+        f.write(",".join("%.17g" % x for x in q) + "\n")
+PY
+check_sphere() {  # check_sphere NAME FILE: distances from point 0 against the great circle
+  $py - "$2" <<'PY' && ok "$1" || fail "$1"
+import math, sys
+pts = [list(map(float, l.split())) for l in open("sphere.xyz") if not l.startswith("#")]
+d = [float(l) for l in open(sys.argv[1])]
+assert len(d) == len(pts), (len(d), len(pts))
+s = pts[0]; errs = []
+for p, x in zip(pts, d):
+    t = math.atan2(math.sqrt(sum(c * c for c in [s[1]*p[2]-s[2]*p[1], s[2]*p[0]-s[0]*p[2], s[0]*p[1]-s[1]*p[0]])), sum(a * b for a, b in zip(s, p)))
+    if t > 0.5:
+        errs.append(abs(x - t) / t)
+mean = sum(errs) / len(errs)
+print("mean rel error %.2e max %.2e" % (mean, max(errs)))
+assert mean < 1e-2, mean
+PY
+}
+for f in sphere.xyz sphere.csv sphere.ply; do
+  expect_ok "point-cloud distances from $f" "$bin" geodesic distances "$f" --point-cloud --source 0 \
+    --cell 0 --neighbours 16 --window 8 --out "d_${f%.*}_${f##*.}.txt"
+  check_sphere "point-cloud distances from $f match the great circle" "d_${f%.*}_${f##*.}.txt"
+done
+expect_ok "point-cloud distances in R^5" "$bin" geodesic distances sphere5.csv --point-cloud --source 0 \
+  --out d5.txt
+grep -q "R^5, k 2" out.txt && ok "R^5: manifold dimension 2 estimated" || fail "R^5 report: $(cat out.txt)"
+check_sphere "point-cloud distances in R^5 match the great circle" d5.txt
+expect_ok "gcf-points:W with the plane projection" "$bin" geodesic distances sphere.xyz --point-cloud \
+  --source 0 --method gcf-points:4 --projection plane --out d_plane.txt
+printf '1 2 3\n4 5 6\n7 8\n' > bad_cols.xyz
+expect_fail "xyz row of another length" "bad_cols.xyz: line 3: 2 coordinates, but line 1 has 3" \
+  "$bin" geodesic distances bad_cols.xyz --point-cloud --source 0 --out x.txt
+printf 'x,y,z\n1,2,3\n4,abc,6\n' > bad_num.csv
+expect_fail "csv field that is not a number" "bad_num.csv: line 3: coordinate 2 'abc' is not a number" \
+  "$bin" geodesic distances bad_num.csv --point-cloud --source 0 --out x.txt
+printf '1 2 3\n4 nan 6\n' > nan.xyz
+expect_fail "NaN coordinate" "nan.xyz: line 2: coordinate 2 is NaN" \
+  "$bin" geodesic distances nan.xyz --point-cloud --source 0 --out x.txt
+head -n 10 sphere.xyz > few.xyz
+expect_fail "fewer points than neighbours" "9 points, fewer than neighbours \+ 1 = 17" \
+  "$bin" geodesic distances few.xyz --point-cloud --source 0 --out x.txt
+{ cat sphere.xyz; sed -n 2p sphere.xyz; } > dup.xyz
+expect_fail "duplicate points" "points #0 and #3000 coincide" \
+  "$bin" geodesic distances dup.xyz --point-cloud --source 0 --out x.txt
+expect_fail "point index out of range" "point 5000 does not exist" \
+  "$bin" geodesic distances sphere.xyz --point-cloud --source 5000 --out x.txt
+expect_fail "mesh method on a point cloud" "point clouds take gcf-points" \
+  "$bin" geodesic distances sphere.xyz --point-cloud --source 0 --method exact-mmp --out x.txt
+expect_fail "point-cloud output format" "written as .txt" \
+  "$bin" geodesic distances sphere.xyz --point-cloud --source 0 --out x.ply
+expect_fail "unknown point-set format" "expected .xyz, .csv or .ply" \
+  "$bin" geodesic distances "$spot" --point-cloud --source 0 --out x.txt
+[ ! -e x.txt ] && [ ! -e x.ply ] && ok "rejected point-cloud runs wrote nothing" || fail "half-written output"
+expect_ok "gcf-points in the benchmark, with noise" "$bin" bench geodesic --surface icosphere:3 \
+  --methods gcf-points,gcf-points:4 --reference exact-mmp --noise 0.001 --cell 0.15 --out pts.jsonl
+$py - <<'PY' && ok "gcf-points benchmark lines" || fail "gcf-points benchmark lines: $(head -c 300 pts.jsonl)"
+import json
+lines = [json.loads(l) for l in open("pts.jsonl")]
+pts = [l for l in lines if l["method"].startswith("gcf-points")]
+assert len(pts) == 2 and all(l["status"] == "ok" for l in pts), pts
+assert pts[0]["options"]["noise"] == 0.001 and pts[0]["options"]["cell"] == 0.15
+assert pts[1]["options"]["window"] == 4
+assert all(l["mean_rel_error_truth"] < 0.05 for l in pts), [l["mean_rel_error_truth"] for l in pts]
+PY
 
 # --- sewing patterns ----------------------------------------------------------------------------
 fs="$root/data/patterns/aaron_cisFemaleAdult36.json"; gc="$root/data/patterns/shirt_mean_specification.json"

@@ -33,6 +33,61 @@ namespace tapeline::geodesic::internal::gcf {
 using Vec3 = Eigen::Vector3d;
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
+/// Lazily filled per-element values (vertex frames of the mesh, local charts of point sets) that
+/// several threads may fill at once. Filling all of them up front was the alternative: 0.3 us per
+/// 3x3 eigen-decomposition (measured, -O3, one thread), i.e. 12 ms at 41k vertices against a
+/// 15 ms two-point path that needs only a few hundred of them. Here each slot has a state (0
+/// empty, 1 being written, 2 ready): a reader that finds 2 (acquire) reads the value; else it
+/// computes the value itself and publishes it only if it wins the 0 -> 1 exchange, so one thread
+/// writes a slot and nobody waits. The value must be a deterministic function of the input, so
+/// every thread gets bitwise the same one. A copy starts empty (the atomics cannot be copied, and
+/// recomputing is cheap).
+template <class T>
+class LazySlots {
+public:
+    LazySlots() = default;
+    LazySlots(const LazySlots& o) { reset(o.size_); }
+    LazySlots& operator=(const LazySlots& o) {
+        if (this != &o)
+            reset(o.size_);
+        return *this;
+    }
+    LazySlots(LazySlots&&) noexcept = default;
+    LazySlots& operator=(LazySlots&&) noexcept = default;
+
+    void reset(std::size_t n) {
+        size_ = n;
+        state_ = n ? std::make_unique<std::atomic<unsigned char>[]>(n) : nullptr;
+        for (std::size_t i = 0; i < n; ++i)
+            state_[i].store(0, std::memory_order_relaxed);
+        values_.clear();
+        values_.resize(n);  // Eigen types stay uninitialised: nothing touched up front
+    }
+    bool get(std::size_t v, T& f) const {
+        if (state_[v].load(std::memory_order_acquire) != 2)
+            return false;
+        f = values_[v];
+        return true;
+    }
+    /// The stored value, or nullptr while slot v is not ready (no copy).
+    const T* find(std::size_t v) const {
+        return state_[v].load(std::memory_order_acquire) == 2 ? &values_[v] : nullptr;
+    }
+    void put(std::size_t v, const T& f) const {
+        unsigned char empty = 0;
+        if (state_[v].compare_exchange_strong(empty, 1, std::memory_order_acquire)) {
+            values_[v] = f;
+            state_[v].store(2, std::memory_order_release);
+        }
+    }
+    std::size_t size() const { return size_; }
+
+private:
+    std::size_t size_ = 0;
+    std::unique_ptr<std::atomic<unsigned char>[]> state_;
+    mutable std::vector<T> values_;
+};
+
 /// Compact triangle mesh: corners in the PMP Face_location order, per-corner opposite face.
 struct Mesh {
     std::vector<Vec3> xyz;
@@ -61,7 +116,7 @@ struct Mesh {
     }
 
     /// Tangent basis (columns 0, 1) and normal (column 2) at a vertex, computed on first use and
-    /// kept. Safe to call from several threads at once (see FrameCache).
+    /// kept. Safe to call from several threads at once (see LazySlots).
     Eigen::Matrix3d frame(std::uint32_t v) const {
         Eigen::Matrix3d f;
         if (frames_.get(v, f))
@@ -77,55 +132,7 @@ struct Mesh {
     }
 
 private:
-    /// Lazily filled per-vertex frames that several threads may fill at once. Filling all frames
-    /// up front was the alternative: 0.3 us per 3x3 eigen-decomposition (measured, -O3, one
-    /// thread), i.e. 12 ms at 41k vertices against a 15 ms two-point path that needs only a few
-    /// hundred of them. Here each slot has a state
-    /// (0 empty, 1 being written, 2 ready): a reader that finds 2 (acquire) reads the frame; else
-    /// it computes the frame itself and publishes it only if it wins the 0 -> 1 exchange, so one
-    /// thread writes a slot and nobody waits. The frame is a deterministic function of the mesh,
-    /// so every thread gets bitwise the same matrix. A copy starts empty (the atomics cannot be
-    /// copied, and recomputing is cheap).
-    class FrameCache {
-    public:
-        FrameCache() = default;
-        FrameCache(const FrameCache& o) { reset(o.size_); }
-        FrameCache& operator=(const FrameCache& o) {
-            if (this != &o)
-                reset(o.size_);
-            return *this;
-        }
-        FrameCache(FrameCache&&) noexcept = default;
-        FrameCache& operator=(FrameCache&&) noexcept = default;
-
-        void reset(std::size_t n) {
-            size_ = n;
-            state_ = n ? std::make_unique<std::atomic<unsigned char>[]>(n) : nullptr;
-            for (std::size_t i = 0; i < n; ++i)
-                state_[i].store(0, std::memory_order_relaxed);
-            frames_.clear();
-            frames_.resize(n);  // uninitialised (Eigen): no 72 bytes per vertex touched up front
-        }
-        bool get(std::uint32_t v, Eigen::Matrix3d& f) const {
-            if (state_[v].load(std::memory_order_acquire) != 2)
-                return false;
-            f = frames_[v];
-            return true;
-        }
-        void put(std::uint32_t v, const Eigen::Matrix3d& f) const {
-            unsigned char empty = 0;
-            if (state_[v].compare_exchange_strong(empty, 1, std::memory_order_acquire)) {
-                frames_[v] = f;
-                state_[v].store(2, std::memory_order_release);
-            }
-        }
-
-    private:
-        std::size_t size_ = 0;
-        std::unique_ptr<std::atomic<unsigned char>[]> state_;
-        mutable std::vector<Eigen::Matrix3d> frames_;
-    };
-    FrameCache frames_;
+    LazySlots<Eigen::Matrix3d> frames_;
 };
 
 /// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5), with its
@@ -364,7 +371,7 @@ inline bool apply_step(const Mesh& m, std::vector<Sample>& s,
     return true;
 }
 
-/// Up to this many unknowns (two per sample) the normal equations are assembled and factorised
+/// Up to this many unknowns (k per sample) the normal equations are assembled and factorised
 /// densely.
 constexpr std::size_t kDenseColumns = 64;
 
@@ -384,89 +391,91 @@ inline std::atomic<TangentStepSolver>& ceres_step_solver() {
     return solver;
 }
 
-/// One flow step. Unknowns: two tangent coordinates a_i per sample (delta_i = T_i a_i). Chosen
-/// over three coordinates with a penalty row n_i . delta_i = 0 because the constraint then holds
-/// exactly rather than up to a penalty weight, and the system has 2m instead of 3m unknowns.
-/// Rows (overdetermined, 4m - 4 rows for 2m unknowns):
+/// The least-squares system of one flow step, for samples in R^D with k-dimensional tangent
+/// bases (the mesh: D = 3, k = 2; point sets: any D and k). Unknowns: k tangent coordinates a_i per
+/// sample (delta_i = T_i a_i). Chosen over D coordinates with penalty rows N_iᵀ delta_i = 0
+/// because the constraint then holds exactly rather than up to a penalty weight, and the system
+/// has k m instead of D m unknowns. Rows (overdetermined, 2 k (m - 1) rows for k m unknowns):
 ///   T_iᵀ (L (p + delta))_i = 0        interior i: geodesic curvature after the step (linearised)
 ///   mu^{-1/2} a_i = 0                 interior i: step size (damping)
 ///   w a_0 = 0, w a_{m-1} = 0          endpoints
-/// max_update: the largest displacement of a sample (after re-projection); false if the solver
-/// failed.
-inline bool flow_step(const Mesh& m, std::vector<Sample>& s, const CurvatureFlowOptions& o,
-                      double step, double& max_update) {
-    const std::size_t n = s.size();
-    const std::size_t cols = 2 * n;
-    std::vector<Eigen::Matrix<double, 3, 2>> t(n);
-    for (std::size_t i = 0; i < n; ++i)
-        t[i] = sample_frame(m, s[i], o.interpolate_normals).leftCols<2>();
-    Eigen::VectorXd x;
-    if (o.solver == CurvatureFlowSolver::ceres) {
-        const TangentStepSolver solve = ceres_step_solver().load(std::memory_order_acquire);
-        if (!solve || !solve(s, t, o, step, x) || x.size() != static_cast<Eigen::Index>(cols))
-            return false;
-        return apply_step(m, s, t, x, max_update);
-    }
+/// `pos(i)` gives sample i's position (an Eigen vector of size D), t[i] its D x k orthonormal
+/// tangent basis; k is the runtime tangent dimension (must equal K unless K is Eigen::Dynamic).
+/// Writes the k m coordinates into x (the endpoints' are ignored by the caller); false if the
+/// factorisation failed. D and K are compile-time sizes when known (the mesh's 3 x 2: fixed-size
+/// Eigen blocks, no allocation per block) or Eigen::Dynamic.
+template <int D, int K, class Position>
+bool solve_tangent_step(std::size_t n, const Position& pos,
+                        const std::vector<Eigen::Matrix<double, D, K>>& t, Eigen::Index k,
+                        const CurvatureFlowOptions& o, double step, Eigen::VectorXd& x) {
+    using Block = Eigen::Matrix<double, K, K>;
+    using Coords = Eigen::Matrix<double, K, 1>;
+    const auto kk = static_cast<std::size_t>(k);
+    const std::size_t cols = kk * n;
+    const Block identity = Block::Identity(k, k);
     if (o.solver == CurvatureFlowSolver::eigen_normal_ldlt && cols <= kDenseColumns) {
         // Short polylines (the windows of Algorithm 2): the normal equations of the rows below,
         // assembled block by block into a small dense matrix (no sparse symbolic analysis).
         Eigen::MatrixXd normal =
             Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(cols), static_cast<Eigen::Index>(cols));
         Eigen::VectorXd atb = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(cols));
-        Eigen::Matrix2d b[3];
+        Block b[3];
         for (std::size_t i = 1; i + 1 < n; ++i) {
             const auto ti = t[i].transpose();
             b[0] = ti * t[i - 1];
-            b[1] = -2 * Eigen::Matrix2d::Identity();
+            b[1] = -2 * identity;
             b[2] = ti * t[i + 1];
-            const Eigen::Vector2d r = -(ti * (s[i - 1].p - 2 * s[i].p + s[i + 1].p));
+            const Coords r = -(ti * (pos(i - 1) - 2 * pos(i) + pos(i + 1)));
             for (int j = 0; j < 3; ++j) {
-                const auto rj = static_cast<Eigen::Index>(2 * (i - 1 + j));
-                atb.segment<2>(rj) += b[j].transpose() * r;
-                for (int k = 0; k < 3; ++k)
-                    normal.block<2, 2>(rj, static_cast<Eigen::Index>(2 * (i - 1 + k))) +=
-                        b[j].transpose() * b[k];
+                const auto rj = static_cast<Eigen::Index>(kk * (i - 1 + j));
+                atb.template segment<K>(rj, k) += b[j].transpose() * r;
+                for (int c = 0; c < 3; ++c)
+                    normal.template block<K, K>(rj, static_cast<Eigen::Index>(kk * (i - 1 + c)), k,
+                                                k) += b[j].transpose() * b[c];
             }
-            normal.block<2, 2>(static_cast<Eigen::Index>(2 * i), static_cast<Eigen::Index>(2 * i))
+            normal
+                .template block<K, K>(static_cast<Eigen::Index>(kk * i),
+                                      static_cast<Eigen::Index>(kk * i), k, k)
                 .diagonal()
                 .array() += 1.0 / step;
         }
         const double w2 = o.endpoint_weight * o.endpoint_weight;
-        const auto last = static_cast<Eigen::Index>(cols - 2);
-        normal.block<2, 2>(0, 0).diagonal().array() += w2;
-        normal.block<2, 2>(last, last).diagonal().array() += w2;
+        const auto last = static_cast<Eigen::Index>(cols - kk);
+        normal.template block<K, K>(0, 0, k, k).diagonal().array() += w2;
+        normal.template block<K, K>(last, last, k, k).diagonal().array() += w2;
         const Eigen::LDLT<Eigen::MatrixXd> ldlt(normal);
         if (ldlt.info() != Eigen::Success)
             return false;
         x = ldlt.solve(atb);
-        return apply_step(m, s, t, x, max_update);
+        return true;
     }
     std::vector<Eigen::Triplet<double>> trip;
-    trip.reserve(16 * n);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(4 * n - 4));
+    trip.reserve(4 * kk * kk * n);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(2 * kk * (n - 1)));
     std::size_t row = 0;
-    auto block = [&](std::size_t r, std::size_t c, const Eigen::Matrix2d& b) {
-        for (int x = 0; x < 2; ++x)
-            for (int y = 0; y < 2; ++y)
+    auto block = [&](std::size_t r, std::size_t c, const Block& b) {
+        for (Eigen::Index x = 0; x < k; ++x)
+            for (Eigen::Index y = 0; y < k; ++y)
                 if (b(x, y) != 0)
-                    trip.emplace_back(static_cast<int>(r + x), static_cast<int>(2 * c + y),
+                    trip.emplace_back(static_cast<int>(r + static_cast<std::size_t>(x)),
+                                      static_cast<int>(kk * c + static_cast<std::size_t>(y)),
                                       b(x, y));
     };
-    for (std::size_t i = 1; i + 1 < n; ++i, row += 2) {
+    for (std::size_t i = 1; i + 1 < n; ++i, row += kk) {
         const auto ti = t[i].transpose();
         block(row, i - 1, ti * t[i - 1]);
-        block(row, i, -2 * Eigen::Matrix2d::Identity());
+        block(row, i, -2 * identity);
         block(row, i + 1, ti * t[i + 1]);
-        const Vec3 l = s[i - 1].p - 2 * s[i].p + s[i + 1].p;
-        rhs.segment<2>(static_cast<Eigen::Index>(row)) = -(ti * l);
+        rhs.template segment<K>(static_cast<Eigen::Index>(row), k) =
+            -(ti * (pos(i - 1) - 2 * pos(i) + pos(i + 1)));
     }
     const double damp = 1.0 / std::sqrt(step);
-    for (std::size_t i = 1; i + 1 < n; ++i, row += 2)
-        block(row, i, damp * Eigen::Matrix2d::Identity());
-    block(row, 0, o.endpoint_weight * Eigen::Matrix2d::Identity());
-    row += 2;
-    block(row, n - 1, o.endpoint_weight * Eigen::Matrix2d::Identity());
-    row += 2;
+    for (std::size_t i = 1; i + 1 < n; ++i, row += kk)
+        block(row, i, damp * identity);
+    block(row, 0, o.endpoint_weight * identity);
+    row += kk;
+    block(row, n - 1, o.endpoint_weight * identity);
+    row += kk;
     Eigen::SparseMatrix<double> a(static_cast<int>(row), static_cast<int>(cols));
     a.setFromTriplets(trip.begin(), trip.end());
     a.makeCompressed();
@@ -489,6 +498,29 @@ inline bool flow_step(const Mesh& m, std::vector<Sample>& s, const CurvatureFlow
             return false;
         x = ldlt.solve(at * rhs);
     }
+    return true;
+}
+
+/// One flow step on the mesh: the tangent planes of the samples (sample_frame), the system of
+/// solve_tangent_step with D = 3, k = 2 (or the registered Ceres solver), then apply_step.
+/// max_update: the largest displacement of a sample (after re-projection); false if the solver
+/// failed.
+inline bool flow_step(const Mesh& m, std::vector<Sample>& s, const CurvatureFlowOptions& o,
+                      double step, double& max_update) {
+    const std::size_t n = s.size();
+    std::vector<Eigen::Matrix<double, 3, 2>> t(n);
+    for (std::size_t i = 0; i < n; ++i)
+        t[i] = sample_frame(m, s[i], o.interpolate_normals).leftCols<2>();
+    Eigen::VectorXd x;
+    if (o.solver == CurvatureFlowSolver::ceres) {
+        const TangentStepSolver solve = ceres_step_solver().load(std::memory_order_acquire);
+        if (!solve || !solve(s, t, o, step, x) || x.size() != static_cast<Eigen::Index>(2 * n))
+            return false;
+        return apply_step(m, s, t, x, max_update);
+    }
+    const auto pos = [&s](std::size_t i) -> const Vec3& { return s[i].p; };
+    if (!solve_tangent_step<3, 2>(n, pos, t, 2, o, step, x))
+        return false;
     return apply_step(m, s, t, x, max_update);
 }
 
