@@ -10,4 +10,5 @@ void register_mesh_commands(CLI::App& app);
 void register_geodesic_commands(CLI::App& app);
 void register_bench_commands(CLI::App& app);
 void register_pattern_commands(CLI::App& app);
+void register_grade_commands(CLI::App& app);
 }  // namespace tapeline::app

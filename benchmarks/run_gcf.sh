@@ -39,11 +39,17 @@ big=()
   --methods exact-mmp,dijkstra,heat-idt,$windows \
   --surface ellipsoid:1,0.6,0.3:6:0.25 --surface torus:1,0.4:320,128 "${big[@]}" \
   --surface icosphere:7 --surface icosphere:8 --out "$jsonl"
-/usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$jsonl" --out-dir "$out" \
-  --title "Geodesic curvature flow against exact MMP, heat and Dijkstra"
 # 3. TBB: the batches of the ring propagation on both cores (the rows above use one thread).
 "$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference none --threads 2 \
   --sources 1 --repeat 1 --methods gcf-window:8 --surface icosphere:7 --out "$out/gcf_threads.jsonl"
 "$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference none --threads 1 \
   --sources 1 --repeat 1 --methods gcf-window:8 --surface icosphere:7 --append \
   --out "$out/gcf_threads.jsonl"
+# 4. Like for like with the exact polyhedral distance: the length of the samples on the faces
+#    ('/faces') instead of the Phong-lifted length, on the same inputs as part 1.
+"$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 --append \
+  --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces \
+  --surface icosphere:4 --surface icosphere:5 --surface ellipsoid:1,0.6,0.3:5:0.25 \
+  --surface torus:1,0.4:160,64 "${meshes[@]}" "${big[@]}" --out "$jsonl"
+/usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$jsonl" --out-dir "$out" \
+  --title "Geodesic curvature flow against exact MMP, heat and Dijkstra"

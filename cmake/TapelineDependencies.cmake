@@ -15,6 +15,8 @@ endif()
 find_dependency(Eigen3 3.3 NO_MODULE)
 # Optional: only tapeline::geodesic_ceres needs it (Debian package libceres-dev).
 find_package(Ceres 2.1 QUIET)
+# Optional: only tapeline::grading needs it (Debian package libpagmo-dev; NSGA-II).
+find_package(Pagmo QUIET NAMES pagmo)
 include(CGAL_Eigen3_support)
 if(NOT TARGET CGAL::Eigen3_support)
   message(FATAL_ERROR "tapeline: Eigen 3 not found (Debian package libeigen3-dev)")

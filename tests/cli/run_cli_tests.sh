@@ -320,5 +320,46 @@ expect_fail "unknown pattern" "nope" "$bin" pattern export nope --db p.sqlite --
 expect_fail "export without output" "at least one" "$bin" pattern export shirt_mean --db p.sqlite
 [ ! -e n.svg ] && ok "failed export wrote nothing" || fail "failed export wrote n.svg"
 
+# --- grade --------------------------------------------------------------------------------------
+base36='{"biceps": 286, "chest": 979, "hpsToBust": 286, "hpsToWaistBack": 410, "neck": 360,
+ "shoulderToShoulder": 431, "shoulderSlope": 13, "waistToArmpit": 177, "waistToHips": 130,
+ "hips": 953, "highBust": 916}'
+echo "$base36" > base36.json
+echo "$base36" | sed 's/"chest": 979/"chest": 1143/; s/"hips": 953/"hips": 1112/;
+  s/"hpsToWaistBack": 410/"hpsToWaistBack": 455/; s/"shoulderToShoulder": 431/"shoulderToShoulder": 478/;
+  s/"waistToHips": 130/"waistToHips": 144/' > target42.json
+expect_ok "grade aaron 36 to 42" "$bin" grade "$fs" --from base36.json --to target42.json \
+  --out g.json --svg g.svg --pareto front.png --rules rules.json --rul rules.rul --dxf g.dxf \
+  --report report.json --seed 7 --threads 2 --generations 20
+if grep -q '"tapeline-pattern"' g.json && grep -q "<svg" g.svg && head -c 8 front.png | grep -q PNG &&
+   grep -q '"tapeline-grade-rules"' rules.json && grep -q "AC1009" g.dxf && grep -q "^RULE: DELTA" rules.rul
+then ok "grade outputs look right"; else fail "grade outputs"; fi
+if $py - <<'PY'
+import json, sys
+r = json.load(open("report.json"))
+worst = max(abs(f["error_mm"]) for f in r["fit"])
+sys.exit(0 if r["fit"] and worst < 2.0 else 1)
+PY
+then ok "grade: every binding within 2 mm"; else fail "grade: fit $(head -c 400 report.json)"; fi
+expect_ok "graded pattern validates" "$bin" pattern validate g.json
+expect_ok "grade to a smaller size (42 back to 36)" "$bin" grade g.json --from target42.json \
+  --to base36.json --out back.json --threads 2 --generations 10
+$py -c 'import json; m = json.load(open("target42.json")); json.dump({"measurements": [{"name": "iso_" + k, "freesewing_name": k, "value_mm": v} for k, v in m.items()]}, open("measure.json", "w"))'
+expect_ok "grade to a tapeline-measure JSON (Ceres only)" "$bin" grade "$fs" --from base36.json \
+  --to measure.json --out gm.json --threads 2 --generations 0
+echo '{"measurements": [{"freesewing_name": "chest", "value_mm": 1000}]}' > m.json
+expect_fail "target missing a bound measurement" "no measurement 'hips'" "$bin" grade "$fs" \
+  --from base36.json --to m.json --out miss.json
+[ ! -e miss.json ] && ok "failed grade wrote nothing" || fail "failed grade wrote miss.json"
+echo '{"chest": -5, "hips": 1000}' > neg.json
+expect_fail "negative target" "'chest' is -5" "$bin" grade "$fs" --from base36.json --to neg.json --out n.json
+echo '{"waist": 1800, "height": 1600, "chest": 900}' > tall.json
+expect_fail "waist bigger than height" "bigger than the height" "$bin" grade "$fs" --from base36.json \
+  --to tall.json --out n.json
+echo '{"units": "cubits", "chest": 40}' > unit.json
+expect_fail "unknown unit" "unknown unit 'cubits'" "$bin" grade "$fs" --from base36.json --to unit.json --out n.json
+expect_fail "unknown output extension" "\.xyz" "$bin" grade "$fs" --from base36.json --to target42.json --out n.xyz
+[ ! -e n.json ] && ok "rejected grades wrote nothing" || fail "a rejected grade wrote n.json"
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]

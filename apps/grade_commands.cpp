@@ -1,0 +1,282 @@
+// `tapeline grade PATTERN --from BASE --to TARGET --out graded.json`: resize a pattern to a target
+// measurement set (grading/grade.h). Everything is computed in memory first; each output is then
+// written to a temporary name and renamed, so a failure leaves no half-written file.
+#include "commands.h"
+
+#include <tapeline/core/errors.h>
+
+#include <CLI/CLI.hpp>
+
+#ifdef TAPELINE_HAVE_GRADING
+#include <tapeline/core/atomic_write.h>
+#include <tapeline/grading/compare.h>
+#include <tapeline/grading/freesewing_bindings.h>
+#include <tapeline/grading/grade.h>
+#include <tapeline/grading/measurement_input.h>
+#include <tapeline/grading/output.h>
+#include <tapeline/pattern/database.h>
+#include <tapeline/pattern/dxf.h>
+#include <tapeline/pattern/io_freesewing.h>
+#include <tapeline/pattern/io_garmentcode.h>
+#include <tapeline/pattern/io_json.h>
+#include <tapeline/pattern/svg.h>
+#include <tapeline/pattern/validate.h>
+
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#endif
+
+#include <string>
+
+namespace tapeline::app {
+
+#ifdef TAPELINE_HAVE_GRADING
+namespace {
+
+namespace tp = tapeline::pattern;
+namespace tg = tapeline::grading;
+
+struct GradeArgs {
+    std::string pattern, format = "auto", db, from, to, from_set, to_set;
+    std::string out, svg, dxf, pareto, rules, rul, report, fit_table, compare;
+    std::string ease = "proportional";
+    bool store = false, replace = false, no_polish = false, no_fs_bindings = false;
+    std::uint32_t seed = 42;
+    std::size_t population = 32, generations = 60, threads = 0;
+};
+
+bool is_file(const std::string& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+std::string extension(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    const auto slash = path.find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) {
+        return "";
+    }
+    std::string e = path.substr(dot);
+    for (char& c : e) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return e;
+}
+
+tp::Pattern load(const GradeArgs& a) {
+    if (is_file(a.pattern)) {
+        std::string format = a.format;
+        if (format == "auto") {
+            const tp::internal::Json j = tp::internal::parse_json_file(a.pattern);
+            if (j.is_object() && j.value("format", "") == "tapeline-pattern") {
+                format = "json";
+            } else if (j.is_object() && j.contains("pattern") && j["pattern"].is_object()) {
+                format = "garmentcode";
+            } else if (j.is_object() && j.contains("pieces") && j.contains("design")) {
+                format = "freesewing";
+            } else {
+                throw InvalidInput(a.pattern + ": cannot tell the pattern format; give --format");
+            }
+        }
+        if (format == "freesewing") {
+            return tp::read_freesewing(a.pattern);
+        }
+        if (format == "garmentcode") {
+            return tp::read_garmentcode(a.pattern);
+        }
+        if (format == "json") {
+            return tp::read_pattern_json(a.pattern);
+        }
+        throw InvalidInput("--format: unknown pattern format '" + format +
+                           "' (known: auto, freesewing, garmentcode, json)");
+    }
+    const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
+    if (!is_file(path)) {
+        throw InvalidInput(a.pattern + ": no such pattern file, and no pattern database at " +
+                           path);
+    }
+    tp::DatabaseOptions o;
+    o.read_only = true;
+    o.create = false;
+    return tp::PatternDatabase(path, o).load(a.pattern);
+}
+
+void run_grade(const GradeArgs& a) {
+    // Everything is read and checked before anything is computed or written.
+    const std::string out_ext = extension(a.out);
+    if (out_ext != ".json" && out_ext != ".svg" && out_ext != ".dxf") {
+        throw InvalidInput("--out " + a.out + ": unknown extension '" + out_ext +
+                           "' (expected .json, .svg or .dxf)");
+    }
+    if (a.ease != "proportional" && a.ease != "keep_mm") {
+        throw InvalidInput("--ease: unknown mode '" + a.ease + "' (proportional or keep_mm)");
+    }
+    tp::Pattern base = load(a);
+    tp::require_valid(base);
+    const tp::MeasurementSet from = tg::read_measurement_input(a.from, a.from_set);
+    const tp::MeasurementSet to = tg::read_measurement_input(a.to, a.to_set);
+    if (!a.no_fs_bindings && base.designer == "FreeSewing") {
+        tg::add_freesewing_bindings(base);
+    }
+    tg::GradingOptions o;
+    o.seed = a.seed;
+    o.population = a.population;
+    o.generations = a.generations;
+    o.threads = a.threads;
+    o.ceres_polish = !a.no_polish;
+    o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
+    const tg::GradeResult g = tg::grade_pattern(base, from, to, o);
+
+    // Render every output in memory, then write each atomically.
+    std::vector<std::pair<std::string, std::string>> files;
+    auto render = [&](const std::string& path, const std::string& ext) {
+        std::ostringstream s;
+        if (ext == ".json") {
+            tp::write_pattern_json(g.pattern, s);
+        } else if (ext == ".svg") {
+            s << tp::to_svg(g.pattern);
+        } else {
+            tp::write_dxf(g.pattern, s);
+        }
+        files.push_back({path, s.str()});
+    };
+    render(a.out, out_ext);
+    if (!a.svg.empty()) {
+        render(a.svg, ".svg");
+    }
+    if (!a.dxf.empty()) {
+        render(a.dxf, ".dxf");
+    }
+    if (!a.pareto.empty()) {
+        const std::vector<std::uint8_t> png = tg::pareto_png(g.report);
+        files.push_back({a.pareto, std::string(png.begin(), png.end())});
+    }
+    if (!a.rules.empty()) {
+        files.push_back({a.rules, tg::rules_json(g, from.name, to.name).dump(1) + "\n"});
+    }
+    if (!a.rul.empty()) {
+        files.push_back({a.rul, tg::rul_table(g, from.name, to.name)});
+    }
+    if (!a.report.empty()) {
+        files.push_back({a.report, tg::report_json(g.report).dump(1) + "\n"});
+    }
+    if (!a.compare.empty()) {
+        // Validation against a reference draft of the target size (benchmarks/run_grading.sh):
+        // the graded pieces, the unchanged base pieces, and each base piece scaled uniformly by
+        // the ratio of the reference perimeter to its own (an oracle: it needs the answer).
+        GradeArgs ra = a;
+        ra.pattern = a.compare;
+        const tp::Pattern ref = load(ra);
+        nlohmann::json c = nlohmann::json::array();
+        for (const tp::Piece& rp : ref.pieces) {
+            const tp::Piece* bp = tp::find_piece(base, rp.name);
+            const tp::Piece* gp = tp::find_piece(g.pattern, rp.name);
+            if (!bp || !gp) {
+                continue;
+            }
+            const double s = tp::length(rp.outline) / tp::length(bp->outline);
+            const tg::PieceDeviation dg = tg::outline_deviation(rp.outline, gp->outline);
+            const tg::PieceDeviation du = tg::outline_deviation(rp.outline, bp->outline);
+            const tg::PieceDeviation ds =
+                tg::outline_deviation(rp.outline, tg::scaled_piece(*bp, s).outline);
+            c.push_back({{"piece", rp.name},
+                         {"graded_mean_mm", dg.mean_mm},
+                         {"graded_max_mm", dg.max_mm},
+                         {"unchanged_mean_mm", du.mean_mm},
+                         {"unchanged_max_mm", du.max_mm},
+                         {"uniform_oracle_mean_mm", ds.mean_mm},
+                         {"uniform_oracle_max_mm", ds.max_mm}});
+        }
+        nlohmann::json rep = tg::report_json(g.report);
+        rep["comparison"] = c;
+        rep["pattern"] = base.name;
+        rep["from"] = from.name;
+        rep["to"] = to.name;
+        std::cout << "comparison: " << c.dump() << '\n';
+        if (!a.report.empty()) {
+            files.back().second = rep.dump(1) + "\n";  // the report is the last file so far
+        }
+    }
+    if (!a.fit_table.empty()) {
+        files.push_back({a.fit_table, tg::fit_table(g.report)});
+    }
+    for (const auto& [path, text] : files) {
+        write_file_atomically(
+            path, [&](std::ostream& s) { s.write(text.data(), std::streamsize(text.size())); },
+            true);
+    }
+    if (a.store) {
+        const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
+        tp::PatternDatabase database(path, {});
+        database.store(g.pattern, {a.replace});
+    }
+    std::cout << "graded " << base.name << " from " << from.name << " to " << to.name << ": "
+              << g.report.fit.size() << " bindings, " << g.report.seams.size() << " seams, "
+              << g.report.front.size() << " candidates, " << g.report.timings.total_s << " s\n"
+              << tg::fit_table(g.report) << "chosen: " << g.report.chosen << " ("
+              << g.report.chosen_why << ")\nstyle: max angle change "
+              << g.report.style.max_angle_change_deg << " deg, max curve change "
+              << g.report.style.max_curve_change << ", proportion spread "
+              << g.report.style.proportion_spread << '\n';
+    if (!g.report.within_tolerance) {
+        std::cerr << "tapeline: warning: not every binding and seam is within tolerance (worst "
+                  << g.report.max_fit_error_mm << " mm fit, " << g.report.max_seam_mismatch_mm
+                  << " mm seam)\n";
+    }
+}
+
+}  // namespace
+#endif
+
+void register_grade_commands(CLI::App& app) {
+    CLI::App* cmd = app.add_subcommand(
+        "grade", "Resize a pattern to a target measurement set, keeping its style");
+#ifdef TAPELINE_HAVE_GRADING
+    auto a = std::make_shared<GradeArgs>();
+    cmd->add_option("pattern", a->pattern,
+                    "Pattern file (FreeSewing, GarmentCode, tapeline JSON) "
+                    "or a name in the database")
+        ->required();
+    cmd->add_option("--from", a->from, "Base measurement set (.json flat/FreeSewing/measure, .vit)")
+        ->required();
+    cmd->add_option("--to", a->to, "Target measurement set (same formats)")->required();
+    cmd->add_option("--from-set", a->from_set, "Set name inside a FreeSewing sets file");
+    cmd->add_option("--to-set", a->to_set, "Set name inside a FreeSewing sets file");
+    cmd->add_option("--out", a->out, "Graded pattern (.json, .svg or .dxf)")->required();
+    cmd->add_option("--svg", a->svg, "Also write the graded pattern as SVG");
+    cmd->add_option("--dxf", a->dxf, "Also write the graded pattern as AAMA DXF");
+    cmd->add_option("--pareto", a->pareto, "Pareto front plot (PNG)");
+    cmd->add_option("--rules", a->rules, "Grade rules, per point base → graded (JSON)");
+    cmd->add_option("--rul", a->rul, "Grade rules as a .RUL-like delta table");
+    cmd->add_option("--report", a->report, "Grading report (JSON)");
+    cmd->add_option("--fit-table", a->fit_table, "Fit table (text)");
+    cmd->add_option("--compare", a->compare,
+                    "Reference draft of the target size: outline deviation in the report");
+    cmd->add_option("--seed", a->seed, "Random seed (NSGA-II)");
+    cmd->add_option("--population", a->population, "NSGA-II population");
+    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)");
+    cmd->add_option("--threads", a->threads, "Threads (0: all)");
+    cmd->add_option("--ease", a->ease, "Ease mode: proportional (default) or keep_mm");
+    cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");
+    cmd->add_flag("--no-freesewing-bindings", a->no_fs_bindings,
+                  "Only the importer's bindings (no FreeSewing point-name bindings)");
+    cmd->add_option("--format", a->format, "Pattern format: auto, freesewing, garmentcode, json");
+    cmd->add_option("--db", a->db, "Pattern database (SQLite file)");
+    cmd->add_flag("--store", a->store, "Store the graded pattern in the database");
+    cmd->add_flag("--replace", a->replace, "With --store: overwrite a pattern of the same name");
+    cmd->callback([a] { run_grade(*a); });
+#else
+    cmd->allow_extras();
+    cmd->callback([] {
+        throw InvalidInput(
+            "grade: this tapeline was built without Ceres or pagmo "
+            "(install libceres-dev and libpagmo-dev)");
+    });
+#endif
+}
+
+}  // namespace tapeline::app

@@ -1,0 +1,130 @@
+// Options, report and result of pattern grading (grade.h). Light header (the pattern model only):
+// no Ceres, no pagmo, no CGAL, so
+// that loggers, the command-line tool and test facades can include it cheaply (DESIGN.md §3).
+#pragma once
+
+#include <tapeline/pattern/pattern.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tapeline::grading {
+
+/// How a binding's ease follows the measurement it is bound to.
+enum class EaseMode {
+    keep_mm,      ///< the ease in mm stays what the base pattern realises
+    proportional  ///< ease / measurement stays what the base pattern realises (FreeSewing's eases
+                  ///< are fractions of the measurement, e.g. chestEase 0.15)
+};
+
+/// Weights of the residual groups (grading/README.md gives each formula). Fit and seam residuals
+/// are in mm; style and smoothness residuals are made lengths by the reference length
+/// `GradingOptions::reference_length_mm`, so a weight of 1 means "1 unit here costs as much as
+/// 1 mm of fit error".
+struct GradingWeights {
+    double fit = 10;           ///< per mm of binding error
+    double seam = 10;          ///< per mm of seam length difference
+    double angle = 1;          ///< per radian of turn-angle change at an outline vertex, × L_ref
+    double curve = 1;          ///< per unit of Bézier control-polygon shape change, × chord
+    double proportion = 0.05;  ///< per mm of deviation from a uniform per-piece scale
+    double grain = 1;          ///< per radian of grain-direction change, × L_ref
+    double consistency = 5;    ///< per mm of departure from the local affine displacement model
+    double bending = 2;        ///< per unit change of the displacement gradient between neighbours
+    double global = 0.2;       ///< per unit of a node's gradient away from the garment's mean
+};
+
+struct GradingTolerances {
+    double fit_mm = 2;   ///< every bound measurement within this (the default-solution rule)
+    double seam_mm = 1;  ///< every seam's two sides within this
+};
+
+struct GradingOptions {
+    std::uint32_t seed = 42;
+    std::size_t population = 32;   ///< NSGA-II population (rounded up to a multiple of 4, ≥ 8)
+    std::size_t generations = 60;  ///< NSGA-II generations; 0 skips the evolutionary search
+    EaseMode ease = EaseMode::proportional;
+    GradingWeights weights;
+    GradingTolerances tolerances;
+    std::size_t threads = 0;   ///< 0: TBB's default
+    bool ceres_polish = true;  ///< polish each front member by Ceres least squares
+    std::size_t ceres_iterations = 200;
+    double reference_length_mm = 100;  ///< L_ref: turns angles and strains into lengths
+    std::size_t neighbours = 8;        ///< k of the per-piece k-nearest-node smoothness graph
+    /// Pareto members polished by Ceres get fit weights weights.fit · f, f log-spaced over
+    /// [min_fit_factor, max_fit_factor] along the front (low f: style first).
+    double min_fit_factor = 0.01, max_fit_factor = 10;
+};
+
+/// One row of the fit table: the body measurement the pattern now fits (pattern dimension minus
+/// ease) against the target.
+struct FitRow {
+    std::string measurement;
+    std::string where;  ///< pieces of the features
+    double target_mm = 0;
+    double ease_mm = 0;
+    double achieved_mm = 0;
+    double error_mm = 0;  ///< achieved − target
+};
+
+struct SeamRow {
+    std::string name;
+    double length_a_mm = 0, length_b_mm = 0;
+    double mismatch_mm = 0;  ///< |a − b|
+};
+
+/// Style of the graded pattern against the base (each a change, 0 = unchanged).
+struct StyleMetrics {
+    double max_angle_change_deg = 0;  ///< turn angles at outline vertices
+    double mean_angle_change_deg = 0;
+    double max_curve_change = 0;   ///< Bézier control points in their chord frame (fraction)
+    double proportion_spread = 0;  ///< (max − min)/mean of per-edge stretch within a piece
+    double max_grain_change_deg = 0;
+    double cost = 0;  ///< the weighted style objective f2 (mm², see README)
+};
+
+struct ParetoPoint {
+    double fit = 0;    ///< f1: RMS of fit and seam residuals (mm)
+    double style = 0;  ///< f2: RMS of style residuals (mm-equivalent)
+    double max_fit_error_mm = 0;
+    double max_seam_mismatch_mm = 0;
+    bool polished = false;
+    bool within_tolerance = false;
+    std::string origin;  ///< "nsga2", "nsga2+ceres", "ceres"
+};
+
+struct GradingTimings {
+    double setup_s = 0, ceres_fast_path_s = 0, nsga2_s = 0, polish_s = 0, total_s = 0;
+};
+
+struct GradingReport {
+    std::size_t pieces = 0, nodes = 0, variables = 0, residuals = 0;
+    std::vector<FitRow> fit;
+    std::vector<SeamRow> seams;
+    StyleMetrics style;
+    std::vector<ParetoPoint> front;  ///< every candidate, NSGA-II members and polished ones
+    std::size_t chosen = 0;          ///< index into front
+    std::string chosen_why;
+    double max_fit_error_mm = 0, max_seam_mismatch_mm = 0;
+    bool within_tolerance = false;
+    std::size_t ceres_iterations = 0;
+    std::string ceres_status;
+    std::size_t evaluations = 0;  ///< NSGA-II fitness evaluations
+    GradingTimings timings;
+    std::vector<std::string> notes;
+};
+
+/// One grade rule: where a named point or outline vertex of a piece goes.
+struct GradeRule {
+    std::string piece, point;  // point: a named point, or "edge k" for the start of outline edge k
+    pattern::Point2 base, graded;
+};
+
+struct GradeResult {
+    pattern::Pattern pattern;
+    GradingReport report;
+    std::vector<GradeRule> rules;
+};
+
+}  // namespace tapeline::grading

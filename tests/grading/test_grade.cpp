@@ -1,0 +1,175 @@
+// Grading: synthetic patterns with known answers, the FreeSewing size pair, bad inputs.
+#include <tapeline/core/errors.h>
+#include <tapeline_test/grading.h>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace tg = tapeline::grading;
+namespace tp = tapeline::pattern;
+
+namespace {
+
+/// A w × h rectangle piece with named corners and a horizontal span "chest" across it.
+tp::Piece rectangle(const std::string& name, double w, double h) {
+    tp::Piece p;
+    p.name = name;
+    const tp::Point2 a{0, 0}, b{w, 0}, c{w, h}, d{0, h};
+    p.outline.edges = {
+        {tp::Line{a, b}, ""}, {tp::Line{b, c}, ""}, {tp::Line{c, d}, ""}, {tp::Line{d, a}, ""}};
+    p.points = {{"bl", a}, {"br", b}, {"tr", c}, {"tl", d}};
+    p.grain = tp::GrainLine{{w / 2, 0.2 * h}, {w / 2, 0.8 * h}};
+    return p;
+}
+
+tp::MeasurementSet set(const std::string& name, std::map<std::string, double> v) {
+    tp::MeasurementSet m;
+    m.name = name;
+    m.values = std::move(v);
+    return m;
+}
+
+tg::GradingOptions quick() {
+    tg::GradingOptions o;
+    o.population = 16;
+    o.generations = 20;
+    o.threads = 2;
+    return o;
+}
+
+}  // namespace
+
+// One piece, width bound to "chest" (count 2, ease 20), height to "length": the graded rectangle
+// must realise both targets, stay a rectangle (right angles) and keep its grain vertical.
+TEST(Grading, RectangleMeetsBothBindingsAndKeepsItsAngles) {
+    tp::Pattern p;
+    p.name = "rect";
+    p.pieces.push_back(rectangle("body", 250, 600));
+    p.bindings.push_back({"chest", {{"body", {}, "bl", "br", 2}}, 20});  // 2·250 = 480 + 20
+    p.bindings.push_back({"length", {{"body", {}, "bl", "tl", 1}}, 0});
+    const auto from = set("base", {{"chest", 480}, {"length", 600}});
+    const auto to = set("big", {{"chest", 560}, {"length", 630}});
+    tg::GradingOptions o = quick();
+    o.ease = tg::EaseMode::keep_mm;
+    const tg::GradeResult r = tapeline_test::grade(p, from, to, o);
+    ASSERT_EQ(r.report.fit.size(), 2u);
+    for (const tg::FitRow& f : r.report.fit) {
+        std::printf("%s target %.2f achieved %.3f\n", f.measurement.c_str(), f.target_mm,
+                    f.achieved_mm);
+        EXPECT_NEAR(f.achieved_mm, f.target_mm, 2.0) << f.measurement;
+    }
+    const tp::Piece& g = r.pattern.pieces[0];
+    const double width = tp::distance(g.points.at("bl"), g.points.at("br"));
+    EXPECT_NEAR(2 * width, 560 + 20, 4.0);  // keep_mm: ease stays 20 mm
+    // A rectangle stretched in x and y stays a rectangle: angles within 0.5°.
+    EXPECT_LT(r.report.style.max_angle_change_deg, 0.5);
+    EXPECT_LT(r.report.style.max_grain_change_deg, 0.5);
+    EXPECT_TRUE(r.report.within_tolerance);
+    EXPECT_LT(r.report.chosen, r.report.front.size());
+    std::printf("timings: total %.3f s (ceres %.3f, nsga2 %.3f, polish %.3f)\n",
+                r.report.timings.total_s, r.report.timings.ceres_fast_path_s,
+                r.report.timings.nsga2_s, r.report.timings.polish_s);
+}
+
+// Two panels sewn along their side edges; only the front is bound. The seam (a constraint) must
+// bring the back's side to the front's new length.
+TEST(Grading, SeamSidesStayEqual) {
+    tp::Pattern p;
+    p.name = "two";
+    p.pieces.push_back(rectangle("front", 250, 600));
+    p.pieces.push_back(rectangle("back", 240, 600));
+    p.bindings.push_back({"length", {{"front", {}, "bl", "tl", 1}}, 0});
+    p.seams.push_back({"side", {"front", 1, 1}, {"back", 3, 1}, tp::SeamDirection::opposite});
+    const tg::GradeResult r =
+        tapeline_test::grade(p, set("a", {{"length", 600}}), set("b", {{"length", 660}}), quick());
+    ASSERT_EQ(r.report.seams.size(), 1u);
+    std::printf("seam %.3f vs %.3f\n", r.report.seams[0].length_a_mm,
+                r.report.seams[0].length_b_mm);
+    EXPECT_LT(r.report.seams[0].mismatch_mm, 1.0);
+    EXPECT_NEAR(r.report.seams[0].length_a_mm, 660, 2.0);
+}
+
+TEST(Grading, SameSeedSameResult) {
+    tp::Pattern p;
+    p.name = "rect";
+    p.pieces.push_back(rectangle("body", 250, 600));
+    p.bindings.push_back({"chest", {{"body", {}, "bl", "br", 2}}, 20});
+    const auto from = set("a", {{"chest", 480}}), to = set("b", {{"chest", 520}});
+    const tg::GradeResult r1 = tapeline_test::grade(p, from, to, quick());
+    const tg::GradeResult r2 = tapeline_test::grade(p, from, to, quick());
+    ASSERT_EQ(r1.report.front.size(), r2.report.front.size());
+    for (std::size_t i = 0; i < r1.report.front.size(); ++i) {
+        EXPECT_EQ(r1.report.front[i].fit, r2.report.front[i].fit);
+        EXPECT_EQ(r1.report.front[i].style, r2.report.front[i].style);
+    }
+    EXPECT_EQ(r1.report.chosen, r2.report.chosen);
+}
+
+TEST(Grading, TargetMissingABoundMeasurementIsRefused) {
+    tp::Pattern p;
+    p.name = "rect";
+    p.pieces.push_back(rectangle("body", 250, 600));
+    p.bindings.push_back({"chest", {{"body", {}, "bl", "br", 2}}, 20});
+    try {
+        tapeline_test::grade(p, set("a", {{"chest", 480}}), set("tgt", {{"waist", 700}}), quick());
+        FAIL() << "no exception";
+    } catch (const tapeline::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("no measurement 'chest'"), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("tgt"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Grading, PatternWithoutBindingsIsRefused) {
+    tp::Pattern p;
+    p.name = "plain";
+    p.pieces.push_back(rectangle("body", 250, 600));
+    EXPECT_THROW(tapeline_test::grade(p, set("a", {}), set("b", {}), quick()),
+                 tapeline::InvalidInput);
+}
+
+// FreeSewing's own size pair: grade Brian from size 36 to the size-42 set. Every binding within
+// 2 mm, and the outlines much closer to FreeSewing's size-42 draft than the unchanged size 36.
+TEST(Grading, BrianSize36To42BeatsUnchanged) {
+    const tp::Pattern base = tapeline_test::freesewing_draft("brian", "cisFemaleAdult36");
+    const tp::Pattern ref = tapeline_test::freesewing_draft("brian", "cisFemaleAdult42");
+    ASSERT_GE(base.bindings.size(), 4u);
+    tg::GradingOptions o;
+    o.threads = 2;
+    const auto t0 = std::chrono::steady_clock::now();
+    const tg::GradeResult r =
+        tapeline_test::grade(base, tapeline_test::freesewing_set("cisFemaleAdult36"),
+                             tapeline_test::freesewing_set("cisFemaleAdult42"), o);
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (const tg::FitRow& f : r.report.fit) {
+        std::printf("%-20s %-30s target %7.1f achieved %8.2f error %6.2f\n", f.measurement.c_str(),
+                    f.where.c_str(), f.target_mm, f.achieved_mm, f.error_mm);
+        EXPECT_LT(std::abs(f.error_mm), 2.0) << f.measurement << " on " << f.where;
+    }
+    const auto unchanged = tapeline_test::deviation(ref, base);
+    const auto graded = tapeline_test::deviation(ref, r.pattern);
+    std::printf(
+        "outline deviation: graded mean %.2f max %.2f; unchanged mean %.2f max %.2f; "
+        "%.2f s\n",
+        graded.mean_mm, graded.max_mm, unchanged.mean_mm, unchanged.max_mm, secs);
+    EXPECT_LT(graded.mean_mm, 0.5 * unchanged.mean_mm);
+}
+
+TEST(Grading, ParetoPngIsAPng) {
+    tp::Pattern p;
+    p.name = "rect";
+    p.pieces.push_back(rectangle("body", 250, 600));
+    p.bindings.push_back({"chest", {{"body", {}, "bl", "br", 2}}, 20});
+    const tg::GradeResult r =
+        tapeline_test::grade(p, set("a", {{"chest", 480}}), set("b", {{"chest", 520}}), quick());
+    const auto png = tapeline_test::pareto_png(r.report);
+    ASSERT_GT(png.size(), 8u);
+    EXPECT_EQ(png[1], 'P');
+    EXPECT_EQ(png[2], 'N');
+    EXPECT_EQ(png[3], 'G');
+}

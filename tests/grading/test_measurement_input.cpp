@@ -1,0 +1,80 @@
+// Reading base and target measurement sets for grading; every rejection names what and where.
+#include <tapeline/core/errors.h>
+#include <tapeline_test/grading.h>
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+std::string write_temp(const std::string& name, const std::string& text) {
+    const std::string path =
+        "/tmp/tapeline_grading_test_" + std::to_string(::getpid()) + "_" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+void expect_refused(const std::string& path, const std::string& needle) {
+    try {
+        tapeline_test::read_measurement_input(path);
+        ADD_FAILURE() << path << ": no exception";
+    } catch (const tapeline::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    }
+    std::remove(path.c_str());
+}
+
+}  // namespace
+
+TEST(MeasurementInput, FlatJsonInMillimetresAndCentimetres) {
+    const std::string a = write_temp("flat.json", R"({"chest": 979, "waist": 788})");
+    const auto m = tapeline_test::read_measurement_input(a);
+    EXPECT_DOUBLE_EQ(*m.get("chest"), 979);
+    std::remove(a.c_str());
+    const std::string b = write_temp("cm.json", R"({"units": "cm", "chest": 97.9})");
+    EXPECT_DOUBLE_EQ(*tapeline_test::read_measurement_input(b).get("chest"), 979);
+    std::remove(b.c_str());
+}
+
+TEST(MeasurementInput, MeasureJsonKeepsBothNames) {
+    const std::string a = write_temp(
+        "measure.json",
+        R"({"measurements": [{"name": "bust_girth", "freesewing_name": "chest", "value_mm": 1001},
+                             {"freesewing_name": "waist", "value_mm": 812},
+                             {"name": "hip_girth", "value_mm": null}]})");
+    const auto m = tapeline_test::read_measurement_input(a);
+    EXPECT_DOUBLE_EQ(*m.get("chest"), 1001);
+    EXPECT_DOUBLE_EQ(*m.get("bust_girth"), 1001);
+    EXPECT_DOUBLE_EQ(*m.get("waist"), 812);
+    EXPECT_FALSE(m.get("hip_girth"));
+    std::remove(a.c_str());
+}
+
+TEST(MeasurementInput, FreeSewingSetsFileNeedsASetName) {
+    const auto m = tapeline_test::freesewing_set("cisFemaleAdult42");
+    EXPECT_DOUBLE_EQ(*m.get("chest"), 1143);
+    const std::string path =
+        std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json";
+    EXPECT_THROW(tapeline_test::read_measurement_input(path), tapeline::InvalidInput);
+    EXPECT_THROW(tapeline_test::read_measurement_input(path, "nope"), tapeline::InvalidInput);
+}
+
+TEST(MeasurementInput, SeamlyIndividualFile) {
+    const auto m = tapeline_test::read_measurement_input(std::string(TAPELINE_DATA_DIR) +
+                                                         "/patterns/example_individual.vit");
+    EXPECT_FALSE(m.values.empty());
+}
+
+TEST(MeasurementInput, AbsurdSetsAreRefused) {
+    expect_refused(write_temp("neg.json", R"({"chest": -979})"), "must be positive");
+    expect_refused(write_temp("tall.json", R"({"waist": 1900, "height": 1700})"),
+                   "bigger than the height");
+    expect_refused(write_temp("unit.json", R"({"units": "furlong", "chest": 1})"),
+                   "unknown unit 'furlong'");
+    expect_refused(write_temp("text.json", R"({"chest": "big"})"), "chest");
+}

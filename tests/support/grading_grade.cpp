@@ -1,0 +1,54 @@
+// Compiles grading (Ceres, pagmo, TBB) once for the grading tests.
+#include <tapeline/grading/compare.h>
+#include <tapeline/grading/freesewing_bindings.h>
+#include <tapeline/grading/grade.h>
+#include <tapeline/grading/measurement_input.h>
+#include <tapeline/grading/output.h>
+#include <tapeline/pattern/io_freesewing.h>
+#include <tapeline_test/grading.h>
+
+namespace tapeline_test {
+
+namespace tg = tapeline::grading;
+namespace tp = tapeline::pattern;
+
+tg::GradeResult grade(const tp::Pattern& base, const tp::MeasurementSet& from,
+                      const tp::MeasurementSet& to, const tg::GradingOptions& options) {
+    return tg::grade_pattern(base, from, to, options);
+}
+
+tp::Pattern freesewing_draft(const std::string& design, const std::string& size) {
+    tp::Pattern p = tp::read_freesewing(std::string(TAPELINE_SHARED_DATA_DIR) +
+                                        "/patterns/freesewing/" + design + "_" + size + ".json");
+    tg::add_freesewing_bindings(p);
+    return p;
+}
+
+tp::MeasurementSet freesewing_set(const std::string& name) {
+    return tg::read_measurement_input(
+        std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json", name);
+}
+
+tp::MeasurementSet read_measurement_input(const std::string& path, const std::string& set_name) {
+    return tg::read_measurement_input(path, set_name);
+}
+
+Deviation deviation(const tp::Pattern& reference, const tp::Pattern& graded) {
+    Deviation d;
+    const auto rows = tg::pattern_deviation(reference, graded);
+    for (const auto& r : rows) {
+        d.mean_mm += r.mean_mm / rows.size();
+        d.max_mm = std::max(d.max_mm, r.max_mm);
+    }
+    return d;
+}
+
+std::size_t add_freesewing_bindings(tp::Pattern& p) {
+    return tg::add_freesewing_bindings(p);
+}
+
+std::vector<std::uint8_t> pareto_png(const tg::GradingReport& r) {
+    return tg::pareto_png(r);
+}
+
+}  // namespace tapeline_test
