@@ -2,6 +2,7 @@
 // measurement set (grading/grade.h). Everything is computed in memory first; each output is then
 // written to a temporary name and renamed, so a failure leaves no half-written file.
 #include "commands.h"
+#include "pattern_input.h"
 
 #include <tapeline/core/errors.h>
 
@@ -49,11 +50,6 @@ struct GradeArgs {
     std::size_t population = 32, generations = 60, threads = 0;
 };
 
-bool is_file(const std::string& path) {
-    struct stat st {};
-    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
 std::string extension(const std::string& path) {
     const auto dot = path.find_last_of('.');
     const auto slash = path.find_last_of('/');
@@ -69,30 +65,7 @@ std::string extension(const std::string& path) {
 
 tp::Pattern load(const GradeArgs& a) {
     if (is_file(a.pattern)) {
-        std::string format = a.format;
-        if (format == "auto") {
-            const tp::internal::Json j = tp::internal::parse_json_file(a.pattern);
-            if (j.is_object() && j.value("format", "") == "tapeline-pattern") {
-                format = "json";
-            } else if (j.is_object() && j.contains("pattern") && j["pattern"].is_object()) {
-                format = "garmentcode";
-            } else if (j.is_object() && j.contains("pieces") && j.contains("design")) {
-                format = "freesewing";
-            } else {
-                throw InvalidInput(a.pattern + ": cannot tell the pattern format; give --format");
-            }
-        }
-        if (format == "freesewing") {
-            return tp::read_freesewing(a.pattern);
-        }
-        if (format == "garmentcode") {
-            return tp::read_garmentcode(a.pattern);
-        }
-        if (format == "json") {
-            return tp::read_pattern_json(a.pattern);
-        }
-        throw InvalidInput("--format: unknown pattern format '" + format +
-                           "' (known: auto, freesewing, garmentcode, json)");
+        return import_file(a.pattern, a.format, nullptr);
     }
     const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
     if (!is_file(path)) {

@@ -1,6 +1,7 @@
 // `tapeline pattern import|list|show|validate|export`: sewing patterns in one model and one
 // database (SQLite file, `--db`, default under the user's data directory).
 #include "commands.h"
+#include "pattern_input.h"
 
 #include <tapeline/core/errors.h>
 #include <tapeline/pattern/database.h>
@@ -25,8 +26,6 @@ namespace tapeline::app {
 
 // Defined in pattern_mesh.cpp (CGAL 2D meshing compiles in its own translation unit).
 void export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm);
-
-namespace {
 
 namespace tp = tapeline::pattern;
 
@@ -79,6 +78,8 @@ tp::Pattern import_file(const std::string& path, std::string format, tp::ImportR
     throw InvalidInput("--format: unknown pattern format '" + format +
                        "' (known: auto, freesewing, garmentcode, json)");
 }
+
+namespace {
 
 std::string db_path(const std::string& given) {
     return given.empty() ? tp::default_pattern_database_path() : given;

@@ -31,24 +31,6 @@ namespace tg = tapeline_test::geodesic;
 
 namespace {
 
-/// Soup vertex farthest from `a` in angle among vertices with angle closest to `degrees`.
-std::size_t vertex_at_angle(const tg::Soup& soup, std::size_t a, double degrees) {
-    const auto& p = soup.points[a];
-    std::size_t best = a;
-    double best_err = 1e300;
-    for (std::size_t i = 0; i < soup.points.size(); ++i) {
-        const auto& q = soup.points[i];
-        const double c = (p[0] * q[0] + p[1] * q[1] + p[2] * q[2]) /
-                         (tg::euclidean(p, {0, 0, 0}) * tg::euclidean(q, {0, 0, 0}));
-        const double ang = std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / M_PI;
-        if (std::abs(ang - degrees) < best_err) {
-            best_err = std::abs(ang - degrees);
-            best = i;
-        }
-    }
-    return best;
-}
-
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v[v.size() / 2];

@@ -157,6 +157,23 @@ double euclidean(const Vec3& p, const Vec3& q) {
     return std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]);
 }
 
+std::size_t vertex_at_angle(const Soup& soup, std::size_t a, double degrees) {
+    const auto& p = soup.points[a];
+    std::size_t best = a;
+    double best_err = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < soup.points.size(); ++i) {
+        const auto& q = soup.points[i];
+        const double c = (p[0] * q[0] + p[1] * q[1] + p[2] * q[2]) /
+                         (euclidean(p, {0, 0, 0}) * euclidean(q, {0, 0, 0}));
+        const double ang = std::acos(std::max(-1.0, std::min(1.0, c))) * 180.0 / M_PI;
+        if (std::abs(ang - degrees) < best_err) {
+            best_err = std::abs(ang - degrees);
+            best = i;
+        }
+    }
+    return best;
+}
+
 ErrorStats compare(const std::vector<double>& d, const std::vector<double>& truth) {
     ErrorStats s;
     double tmax = 0;

@@ -97,6 +97,9 @@ double mean_edge_length(const Soup& soup);
 double distance_to_surface(const Soup& soup, const Vec3& p);
 Vec3 position(const Soup& soup, const SurfacePoint& p);
 double euclidean(const Vec3& p, const Vec3& q);
+/// The vertex of a sphere-like soup (centred at the origin) whose angle from vertex `a`, seen
+/// from the origin, is closest to `degrees`.
+std::size_t vertex_at_angle(const Soup& soup, std::size_t a, double degrees);
 
 /// Errors of `d` against `truth` over the vertices with truth > 0 (finite).
 struct ErrorStats {

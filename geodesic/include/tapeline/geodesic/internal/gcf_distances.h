@@ -4,6 +4,7 @@
 #pragma once
 
 #include <tapeline/geodesic/curvature_flow_types.h>
+#include <tapeline/geodesic/internal/gcf_batches.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
 
 #include <algorithm>
@@ -15,11 +16,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 namespace tapeline::geodesic::internal::gcf {
 
@@ -252,8 +248,7 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         visited[w] = 1;
     };
 
-    using Item = std::pair<double, std::uint32_t>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+    MinQueue q;
     std::vector<double> tentative(n, inf);
     auto relax = [&](std::uint32_t u) {
         for (std::uint32_t k = m.vv_start[u]; k < m.vv_start[u + 1]; ++k) {
@@ -455,68 +450,13 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         relax(w);
     };
 
-    // Batches (causality): the queue's next vertices within `band` of its minimum, none adjacent
-    // to another of the batch, are the ones the one-at-a-time order would visit next (relaxing
-    // one cannot lower another's tentative distance below the band), and none can be the parent
-    // of another. They are solved against the same visited set, in parallel, then committed in
-    // queue order, so the result does not depend on the number of threads.
-    double band = inf;
-    for (std::size_t v = 0; v < n; ++v)
-        for (std::uint32_t k = m.vv_start[v]; k < m.vv_start[v + 1]; ++k) {
-            const double e = (m.xyz[m.vv[k]] - m.xyz[v]).norm();
-            if (e > 0)
-                band = std::min(band, e);
-        }
+    // Causal batches (gcf_batches.h), band = the shortest edge.
+    const double band = shortest_edge(m.vv_start, m.vv, [&](std::uint32_t v, std::uint32_t u) {
+        return (m.xyz[u] - m.xyz[v]).norm();
+    });
     for (std::size_t v = 0; v < n; ++v)  // fill the frame cache before threads read it
         m.frame(static_cast<std::uint32_t>(v));
-    std::vector<char> in_batch(n, 0);
-    std::vector<std::uint32_t> batch;
-    std::vector<Item> deferred;
-    std::vector<Solved> solved;
-    while (!q.empty()) {
-        batch.clear();
-        deferred.clear();
-        double t0 = inf;
-        while (!q.empty()) {
-            const auto [t, w] = q.top();
-            if (!batch.empty() && t > t0 + band)
-                break;
-            q.pop();
-            if (visited[w] || in_batch[w] || t > tentative[w])
-                continue;
-            bool adjacent = false;
-            for (std::uint32_t k = m.vv_start[w]; k < m.vv_start[w + 1] && !adjacent; ++k)
-                adjacent = in_batch[m.vv[k]] != 0;
-            if (adjacent) {
-                deferred.push_back({t, w});
-                continue;
-            }
-            if (batch.empty())
-                t0 = t;
-            batch.push_back(w);
-            in_batch[w] = 1;
-        }
-        for (const Item& it : deferred)
-            q.push(it);
-        solved.assign(batch.size(), Solved{});
-#ifdef CGAL_LINKED_WITH_TBB
-        if (batch.size() > 1) {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, batch.size(), 1),
-                              [&](const tbb::blocked_range<std::size_t>& range) {
-                                  for (std::size_t i = range.begin(); i != range.end(); ++i)
-                                      solve(batch[i], solved[i]);
-                              });
-        } else
-#endif
-        {
-            for (std::size_t i = 0; i < batch.size(); ++i)
-                solve(batch[i], solved[i]);
-        }
-        for (std::size_t i = 0; i < batch.size(); ++i) {
-            in_batch[batch[i]] = 0;
-            commit(batch[i], solved[i]);
-        }
-    }
+    propagate_in_batches<Solved>(q, tentative, visited, m.vv_start, m.vv, band, solve, commit);
     for (std::size_t v = 0; v < n; ++v)
         out.stored_samples += tail[v].size();
     return out;

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/geodesic/internal/gcf_batches.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
 #include <tapeline/geodesic/internal/gcf_knn.h>
 #include <tapeline/geodesic/point_cloud_types.h>
@@ -703,9 +704,8 @@ QueryResult Engine<D, K>::distances(std::uint32_t src_point) const {
     std::vector<double> d(nodes, kInf), prefix(nodes, 0.0), tentative(nodes, kInf);
     std::vector<Vec> arrival(nodes, Vec::Zero(dim_));
     std::vector<std::vector<Sample>> tail(nodes);
-    std::vector<char> visited(nodes, 0), whole_path(nodes, 0), in_batch(nodes, 0);
-    using Item = std::pair<double, std::uint32_t>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+    std::vector<char> visited(nodes, 0), whole_path(nodes, 0);
+    MinQueue q;
     auto relax = [&](std::uint32_t u) {
         for (std::uint32_t j = pr.adj_start[u]; j < pr.adj_start[u + 1]; ++j) {
             const std::uint32_t w = pr.adj[j];
@@ -893,51 +893,11 @@ QueryResult Engine<D, K>::distances(std::uint32_t src_point) const {
         relax(w);
     };
 
-    // Causal batches, as on meshes: the queue's next nodes within `band` (the shortest edge) of
-    // its minimum, none adjacent to another, solved against the same visited set in parallel and
-    // committed in queue order (the result does not depend on the thread count).
-    double band = kInf;
-    for (std::size_t v = 0; v < nodes; ++v)
-        for (std::uint32_t j = pr.adj_start[v]; j < pr.adj_start[v + 1]; ++j) {
-            const double e = (node(pr.adj[j]).p - node(static_cast<std::uint32_t>(v)).p).norm();
-            if (e > 0)
-                band = std::min(band, e);
-        }
-    std::vector<std::uint32_t> batch;
-    std::vector<Item> deferred;
-    std::vector<Solved> solved;
-    while (!q.empty()) {
-        batch.clear();
-        deferred.clear();
-        double t0b = kInf;
-        while (!q.empty()) {
-            const auto [t, w] = q.top();
-            if (!batch.empty() && t > t0b + band)
-                break;
-            q.pop();
-            if (visited[w] || in_batch[w] || t > tentative[w])
-                continue;
-            bool adjacent = false;
-            for (std::uint32_t j = pr.adj_start[w]; j < pr.adj_start[w + 1] && !adjacent; ++j)
-                adjacent = in_batch[pr.adj[j]] != 0;
-            if (adjacent) {
-                deferred.push_back({t, w});
-                continue;
-            }
-            if (batch.empty())
-                t0b = t;
-            batch.push_back(w);
-            in_batch[w] = 1;
-        }
-        for (const Item& it : deferred)
-            q.push(it);
-        solved.assign(batch.size(), Solved{});
-        knn::parallel_range(batch.size(), [&](std::size_t i) { solve(batch[i], solved[i]); });
-        for (std::size_t i = 0; i < batch.size(); ++i) {
-            in_batch[batch[i]] = 0;
-            commit(batch[i], solved[i]);
-        }
-    }
+    // Causal batches, as on meshes (gcf_batches.h), band = the shortest edge.
+    const double band = shortest_edge(pr.adj_start, pr.adj, [&](std::uint32_t v, std::uint32_t u) {
+        return (node(u).p - node(v).p).norm();
+    });
+    propagate_in_batches<Solved>(q, tentative, visited, pr.adj_start, pr.adj, band, solve, commit);
     out.propagate_seconds = since(t0);
     for (std::size_t v = 0; v < nodes; ++v)
         out.reached_nodes += std::isfinite(d[v]) ? 1 : 0;
@@ -983,8 +943,7 @@ QueryResult Engine<D, K>::path(std::uint32_t from, std::uint32_t to) const {
     const std::size_t nodes = node_.size();
     std::vector<double> dist(nodes, kInf);
     std::vector<std::uint32_t> pred(nodes, kNone);
-    using Item = std::pair<double, std::uint32_t>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+    MinQueue q;
     dist[na] = 0;
     q.push({0.0, na});
     while (!q.empty()) {
