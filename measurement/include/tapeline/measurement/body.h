@@ -1,0 +1,150 @@
+// A body mesh brought into the canonical measuring frame (body_types.h): millimetres, y up,
+// z front, x to the body's left, floor at y = 0.
+//
+// Input is any CGAL FaceListGraph triangle mesh (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...)
+// through boost::graph_traits, with the `vertex_point_map` named parameter; read files with
+// tapeline::read_triangle_mesh (core), which triangulates polygons. The body keeps the mesh's
+// vertex and face order: points[i] is the i-th vertex of vertices(tm), triangles[j] the j-th face
+// of faces(tm), so a landmark can be located on the caller's mesh again.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/internal/sections.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tapeline::measurement {
+
+/// The body in the canonical frame, with the frame that maps it back.
+struct Body {
+    BodyFrame frame;
+    internal::BodyMesh mesh;  ///< canonical mm, with edge/face adjacency
+
+    const std::vector<Vec3>& points() const { return mesh.points; }
+    const std::vector<std::array<std::uint32_t, 3>>& triangles() const { return mesh.triangles; }
+    double height() const { return frame.height; }
+};
+
+/// Builds a Body from points (input coordinates and unit) and triangles. Rejects NaN/infinite
+/// coordinates, out-of-range indices and a bad frame (InvalidInput), and open or non-manifold
+/// meshes (TopologyError), each with a message naming options.name and the element.
+inline Body make_body(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> tris,
+                      const BodyOptions& options) {
+    const std::string& name = options.name;
+    if (options.up.index == options.front.index) {
+        throw InvalidInput(name + ": up axis " + options.up.to_string() + " and front axis " +
+                           options.front.to_string() +
+                           " must be perpendicular (two different coordinate axes)");
+    }
+    if (points.empty() || tris.empty()) {
+        throw InvalidInput(name + ": empty body mesh (" + std::to_string(points.size()) +
+                           " vertices, " + std::to_string(tris.size()) + " triangles)");
+    }
+    for (std::size_t v = 0; v < points.size(); ++v) {
+        for (double c : points[v]) {
+            if (!std::isfinite(c)) {
+                throw InvalidInput(name + ": vertex " + std::to_string(v) + " has a" +
+                                   (std::isnan(c) ? " NaN" : "n infinite") + " coordinate");
+            }
+        }
+    }
+    for (std::size_t f = 0; f < tris.size(); ++f) {
+        for (std::uint32_t v : tris[f]) {
+            if (v >= points.size()) {
+                throw InvalidInput(name + ": face " + std::to_string(f) + " references vertex " +
+                                   std::to_string(v) + " but there are " +
+                                   std::to_string(points.size()) + " vertices");
+            }
+        }
+    }
+    Body body;
+    BodyFrame& fr = body.frame;
+    fr.up = options.up;
+    fr.front = options.front;
+    fr.pose = options.pose;
+    const Vec3 up = options.up.vector(), front = options.front.vector();
+    fr.rows = {internal::cross(up, front), up, front};
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& p : points) {
+        const double h = internal::dot(up, p);
+        lo = std::min(lo, h);
+        hi = std::max(hi, h);
+    }
+    const double input_height = hi - lo;
+    if (!(input_height > 0)) {
+        throw InvalidInput(name + ": the body has zero height along the up axis " +
+                           options.up.to_string());
+    }
+    if (options.unit) {
+        fr.unit = *options.unit;
+    } else {
+        fr.unit = infer_length_unit(input_height, name);
+        fr.unit_inferred = true;
+    }
+    fr.scale = millimetres_per(fr.unit);
+    fr.floor = lo * fr.scale;
+    fr.height = input_height * fr.scale;
+    for (auto& p : points) {
+        p = fr.to_canonical(p);
+    }
+    body.mesh.name = name;
+    body.mesh.points = std::move(points);
+    body.mesh.triangles = std::move(tris);
+    internal::build_adjacency(body.mesh);
+    return body;
+}
+
+/// Builds a Body from a CGAL triangle mesh (FaceListGraph); named parameter: vertex_point_map.
+/// A face with other than three vertices is a TopologyError naming it.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Body make_body(const TriangleMesh& tm, const BodyOptions& options,
+               const NamedParameters& np = CGAL::parameters::default_values()) {
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, tm));
+    auto index = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);
+    std::vector<Vec3> points;
+    points.reserve(num_vertices(tm));
+    for (auto v : vertices(tm)) {
+        put(index, v, static_cast<std::uint32_t>(points.size()));
+        const auto& p = get(vpm, v);
+        points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+    }
+    std::vector<std::array<std::uint32_t, 3>> tris;
+    tris.reserve(num_faces(tm));
+    std::size_t f_index = 0;
+    for (auto f : faces(tm)) {
+        std::array<std::uint32_t, 3> t{};
+        std::size_t k = 0;
+        for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+            if (k < 3) {
+                t[k] = get(index, target(h, tm));
+            }
+            ++k;
+        }
+        if (k != 3) {
+            throw TopologyError(options.name + ": face " + std::to_string(f_index) + " has " +
+                                std::to_string(k) +
+                                " vertices; a body mesh must be triangulated "
+                                "(tapeline::read_triangle_mesh does it)");
+        }
+        tris.push_back(t);
+        ++f_index;
+    }
+    return make_body(std::move(points), std::move(tris), options);
+}
+
+}  // namespace tapeline::measurement

@@ -1,0 +1,172 @@
+// How a body mesh is to be read: length unit, up and front axes, pose (DESIGN.md §3: a plain
+// Options struct, no CGAL), and the BodyFrame that records what was used.
+//
+// Canonical frame used by every measurement: millimetres, y up, z to the body's front and
+// x = y × z, which points to the body's LEFT (a right-handed frame looking at the body from the
+// front has its x axis towards the body's left hand). The floor is y = 0: the lowest vertex of
+// the mesh. x and z keep the input's origin.
+#pragma once
+
+#include <tapeline/core/errors.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+namespace tapeline::measurement {
+
+using Vec3 = std::array<double, 3>;
+
+enum class LengthUnit { m, dm, cm, mm };
+enum class Pose { a_pose, t_pose };
+
+inline const char* to_string(LengthUnit u) {
+    switch (u) {
+        case LengthUnit::m:
+            return "m";
+        case LengthUnit::dm:
+            return "dm";
+        case LengthUnit::cm:
+            return "cm";
+        case LengthUnit::mm:
+            break;
+    }
+    return "mm";
+}
+
+inline double millimetres_per(LengthUnit u) {
+    switch (u) {
+        case LengthUnit::m:
+            return 1000;
+        case LengthUnit::dm:
+            return 100;
+        case LengthUnit::cm:
+            return 10;
+        case LengthUnit::mm:
+            break;
+    }
+    return 1;
+}
+
+/// "m", "dm", "cm" or "mm"; anything else is InvalidInput naming `where` (e.g. "--units").
+inline LengthUnit parse_length_unit(const std::string& text, const std::string& where) {
+    for (LengthUnit u : {LengthUnit::m, LengthUnit::dm, LengthUnit::cm, LengthUnit::mm}) {
+        if (text == to_string(u)) {
+            return u;
+        }
+    }
+    throw InvalidInput(where + ": unknown length unit '" + text + "' (expected m, dm, cm or mm)");
+}
+
+inline const char* to_string(Pose p) {
+    return p == Pose::t_pose ? "T" : "A";
+}
+
+/// "A" or "T" (any case); anything else is InvalidInput naming `where`.
+inline Pose parse_pose(const std::string& text, const std::string& where) {
+    if (text == "A" || text == "a") {
+        return Pose::a_pose;
+    }
+    if (text == "T" || text == "t") {
+        return Pose::t_pose;
+    }
+    throw InvalidInput(where + ": unknown pose '" + text + "' (expected A or T)");
+}
+
+/// A signed coordinate axis of the input mesh: +X, -X, +Y, -Y, +Z or -Z.
+struct Axis {
+    int index = 1;  // 0 = x, 1 = y, 2 = z
+    int sign = 1;   // +1 or -1
+
+    /// "+Y", "-z", "Y" (sign +), any case; anything else is InvalidInput naming `where`.
+    static Axis parse(const std::string& text, const std::string& where) {
+        std::string t = text;
+        int sign = 1;
+        if (!t.empty() && (t[0] == '+' || t[0] == '-')) {
+            sign = t[0] == '-' ? -1 : 1;
+            t = t.substr(1);
+        }
+        if (t.size() == 1) {
+            const char c = t[0];
+            if (c == 'x' || c == 'X' || c == 'y' || c == 'Y' || c == 'z' || c == 'Z') {
+                const int index = (c == 'x' || c == 'X') ? 0 : (c == 'y' || c == 'Y') ? 1 : 2;
+                return Axis{index, sign};
+            }
+        }
+        throw InvalidInput(where + ": unknown axis '" + text +
+                           "' (expected +X, -X, +Y, -Y, +Z or -Z)");
+    }
+    std::string to_string() const {
+        return std::string(sign < 0 ? "-" : "+") + static_cast<char>('X' + index);
+    }
+    Vec3 vector() const {
+        Vec3 v{0, 0, 0};
+        v[static_cast<std::size_t>(index)] = sign;
+        return v;
+    }
+};
+
+/// How to read a body mesh. The unit is required unless the height makes it unambiguous (see
+/// infer_length_unit).
+struct BodyOptions {
+    std::optional<LengthUnit> unit;  ///< empty: inferred from the height
+    Axis up{1, 1};                   ///< +Y
+    Axis front{2, 1};                ///< +Z
+    Pose pose = Pose::a_pose;
+    std::string name = "body";  ///< used in messages (the file name, usually)
+};
+
+/// What was used to map the input into the canonical frame (see the top of this file):
+/// canonical = scale * R * input - (0, floor, 0), R's rows being left, up and front.
+struct BodyFrame {
+    LengthUnit unit = LengthUnit::mm;
+    bool unit_inferred = false;
+    Axis up, front;
+    Pose pose = Pose::a_pose;
+    double scale = 1;            ///< millimetres per input unit
+    std::array<Vec3, 3> rows{};  ///< R: canonical x (left), y (up), z (front) in input coordinates
+    double floor = 0;            ///< input height of the lowest vertex, in mm
+    double height = 0;           ///< body height (floor to the highest vertex), mm
+
+    /// Canonical (mm) point to the input's coordinates and unit.
+    Vec3 to_input(const Vec3& c) const {
+        const Vec3 q{c[0], c[1] + floor, c[2]};
+        Vec3 p{0, 0, 0};
+        for (int r = 0; r < 3; ++r) {
+            for (int k = 0; k < 3; ++k) {
+                p[k] += rows[r][k] * q[r] / scale;
+            }
+        }
+        return p;
+    }
+    /// Input point to canonical millimetres.
+    Vec3 to_canonical(const Vec3& p) const {
+        Vec3 c{0, 0, 0};
+        for (int r = 0; r < 3; ++r) {
+            c[r] = scale * (rows[r][0] * p[0] + rows[r][1] * p[1] + rows[r][2] * p[2]);
+        }
+        c[1] -= floor;
+        return c;
+    }
+};
+
+/// The unit whose reading of `height` (in input units) gives a human height between 0.5 m and
+/// 2.5 m. These bands are a decade apart and do not overlap, so at most one unit fits; a height
+/// in none of them (3.7, 40, 900, ...) is InvalidInput asking for --units.
+inline LengthUnit infer_length_unit(double height, const std::string& where) {
+    for (LengthUnit u : {LengthUnit::m, LengthUnit::dm, LengthUnit::cm, LengthUnit::mm}) {
+        const double mm = height * millimetres_per(u);
+        if (mm >= 500 && mm <= 2500) {
+            return u;
+        }
+    }
+    char h[32];
+    std::snprintf(h, sizeof h, "%.6g", height);
+    throw InvalidInput(where + ": units cannot be inferred from height " + h +
+                       " (a body 0.5-2.5 m tall reads 0.5-2.5 m, 5-25 dm, 50-250 cm or "
+                       "500-2500 mm); pass --units");
+}
+
+}  // namespace tapeline::measurement

@@ -1,0 +1,526 @@
+// Girths as a tailor's tape takes them: the plane section at the level, the section around the
+// right body part (the one containing a seed point on the part's axis, so the torso and not the
+// arms), its convex hull in the plane (the tape bridges hollows), and the hull's perimeter. Where
+// the definition asks for the smallest or largest girth, the level is searched within a band
+// (dense scan, then golden-section search). Limb girths are taken in planes perpendicular to the
+// limb's axis, found from the centres of the limb landmarks' sections. Definitions:
+// measurement/README.md.
+#pragma once
+
+#include <tapeline/measurement/body.h>
+#include <tapeline/measurement/internal/search.h>
+#include <tapeline/measurement/internal/sections.h>
+#include <tapeline/measurement/measurement_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tapeline::measurement {
+
+/// One girth of the catalogue: identifier, ISO 8559-1 clause (by title) and FreeSewing name.
+struct GirthInfo {
+    const char* name;
+    const char* iso_clause;
+    const char* freesewing;
+};
+
+/// Every girth measure_girths produces. Limb girths also come per side ("thigh_girth_left",
+/// "thigh_girth_right", without FreeSewing name); the unsuffixed one is the body's right side
+/// (the left when the right is missing), as a tailor measures it.
+inline const std::vector<GirthInfo>& girth_catalogue() {
+    static const std::vector<GirthInfo> c = {
+        {"head_girth", "head girth", "head"},
+        {"neck_girth", "neck girth", "neck"},
+        {"neck_base_girth", "neck base girth", ""},
+        {"bust_girth", "bust girth", "chest"},
+        {"high_bust_girth", "", "highBust"},
+        {"underbust_girth", "underbust girth", "underbust"},
+        {"waist_girth", "waist girth", "waist"},
+        {"high_hip_girth", "", "hips"},
+        {"hip_girth", "hip girth", "seat"},
+        {"thigh_girth", "thigh girth", "upperLeg"},
+        {"mid_thigh_girth", "mid-thigh girth", ""},
+        {"knee_girth", "knee girth", "knee"},
+        {"calf_girth", "calf girth", ""},
+        {"ankle_girth", "ankle girth", "ankle"},
+        {"upper_arm_girth", "upper arm girth", "biceps"},
+        {"elbow_girth", "elbow girth", ""},
+        {"wrist_girth", "wrist girth", "wrist"},
+    };
+    return c;
+}
+
+namespace internal {
+
+class GirthMeasurer {
+public:
+    GirthMeasurer(const Body& body, const LandmarkSet& landmarks, const MeasureOptions& options,
+                  CutWorkspace& ws)
+        : m_(body.mesh), L_(landmarks), options_(options), ws_(ws) {
+        height_ = m_.max_y - m_.min_y;
+    }
+
+    MeasurementSet run() {
+        stature();
+        head();
+        neck();
+        neck_base();
+        torso();
+        for (int s = 0; s < 2; ++s) {
+            legs(s);
+            arms(s);
+        }
+        unsuffixed();
+        return out_;
+    }
+
+private:
+    struct Tape {
+        double perimeter = std::numeric_limits<double>::infinity();
+        double area = 0;
+        std::vector<Vec3> loop;
+        Plane plane;
+    };
+
+    const BodyMesh& m_;
+    const LandmarkSet& L_;
+    MeasureOptions options_;
+    CutWorkspace& ws_;
+    double height_ = 0;
+    MeasurementSet out_;
+    static constexpr double kInf = std::numeric_limits<double>::infinity();
+
+    static const GirthInfo& info(const std::string& base) {
+        for (const auto& g : girth_catalogue()) {
+            if (base == g.name) {
+                return g;
+            }
+        }
+        static const GirthInfo none{"", "", ""};
+        return none;
+    }
+
+    /// The first missing landmark among `names`, as a reason line for `what`.
+    std::optional<std::string> missing(const std::string& what,
+                                       const std::vector<std::string>& names) const {
+        for (const auto& n : names) {
+            const Landmark* l = L_.find(n);
+            if (!l || !l->available()) {
+                return what + ": needs landmark " + n + " (" + (l ? l->reason : "unknown") + ")";
+            }
+        }
+        return std::nullopt;
+    }
+    Vec3 pt(const std::string& n) const { return L_.find(n)->point; }
+    Vec3 axis_pt(const std::string& n) const { return L_.find(n)->axis_point; }
+
+    /// Tape of the section containing (or nearest to) the seed; +inf perimeter when there is no
+    /// section within 5% of the height of the seed.
+    Tape tape(const Plane& plane, const Vec3& seed) {
+        Tape t;
+        t.plane = plane;
+        const PlaneSection ps = section(m_, plane, ws_);
+        double d = 0;
+        const int s = ps.locate(plane.to2(seed), &d);
+        if (s < 0 || d > 0.05 * height_) {
+            return t;
+        }
+        t.perimeter = ps.sections[static_cast<std::size_t>(s)].perimeter;
+        t.area = ps.sections[static_cast<std::size_t>(s)].area;
+        t.loop = ps.tape(static_cast<std::size_t>(s));
+        return t;
+    }
+
+    void record(const std::string& name, const Tape& t, const std::vector<std::string>& deps) {
+        if (!std::isfinite(t.perimeter)) {
+            out_.add_missing(name, name + ": no body section around the expected point");
+            return;
+        }
+        std::string base = name;
+        for (const char* suffix : {"_left", "_right"}) {
+            const std::string sfx = suffix;
+            if (base.size() > sfx.size() &&
+                base.compare(base.size() - sfx.size(), sfx.size(), sfx) == 0) {
+                base = base.substr(0, base.size() - sfx.size());
+            }
+        }
+        const GirthInfo& gi = info(base);
+        Measurement m;
+        m.name = name;
+        m.kind = MeasurementKind::girth;
+        m.value = t.perimeter;
+        m.iso_clause = gi.iso_clause;
+        m.freesewing = base == name ? gi.freesewing : "";
+        m.points = t.loop;
+        m.closed = true;
+        m.plane_point = t.plane.origin;
+        m.plane_normal = t.plane.normal;
+        m.landmarks = deps;
+        out_.add(std::move(m));
+    }
+
+    /// Along `dir` from `origin`: the tape at distance t, planes perpendicular to dir.
+    std::function<Tape(double)> along(const Vec3& origin, const Vec3& dir,
+                                      std::function<Vec3(double)> seed, const Vec3& u_hint) {
+        return [this, origin, dir, seed, u_hint](double t) {
+            const Vec3 o = add(origin, mul(dir, t));
+            return tape(Plane::make(o, dir, u_hint), seed ? seed(t) : o);
+        };
+    }
+
+    /// Smallest (largest) tape over t in [a, b]; tapes failing `accept` count as absent.
+    Tape extreme(const std::function<Tape(double)>& f, double a, double b, bool largest,
+                 const std::function<bool(const Tape&)>& accept = {}) {
+        auto value = [&](double t) {
+            const Tape tp = f(t);
+            if (!std::isfinite(tp.perimeter) || (accept && !accept(tp))) {
+                return kInf;
+            }
+            return largest ? -tp.perimeter : tp.perimeter;
+        };
+        const int samples = std::max(6, static_cast<int>((b - a) / (0.004 * height_)));
+        const auto best = scan_minimum(value, a, b, samples, options_.level_tolerance);
+        if (!std::isfinite(best.second)) {
+            return Tape{};
+        }
+        return f(best.first);
+    }
+
+    /// Torso axis point at height y: through the crotch, the waist's middle and the neck's.
+    Vec3 torso_seed(double y) const {
+        std::vector<Vec3> axis;
+        if (auto c = L_.point("crotch")) {
+            axis.push_back(*c);
+        }
+        if (auto f = L_.point("waist_front"), b = L_.point("waist_back"); f && b) {
+            axis.push_back(mul(add(*f, *b), 0.5));
+        }
+        if (auto f = L_.point("front_neck"), b = L_.point("cervicale"); f && b) {
+            axis.push_back(mul(add(*f, *b), 0.5));
+        }
+        if (axis.empty()) {
+            const Vec3 top = L_.find("top_of_head")->point;
+            return {top[0], y, top[2]};
+        }
+        std::sort(axis.begin(), axis.end(),
+                  [](const Vec3& a, const Vec3& b) { return a[1] < b[1]; });
+        if (y <= axis.front()[1]) {
+            return {axis.front()[0], y, axis.front()[2]};
+        }
+        for (std::size_t i = 0; i + 1 < axis.size(); ++i) {
+            if (y <= axis[i + 1][1]) {
+                const double s = (y - axis[i][1]) / std::max(1e-9, axis[i + 1][1] - axis[i][1]);
+                const Vec3 p = add(axis[i], mul(sub(axis[i + 1], axis[i]), s));
+                return {p[0], y, p[2]};
+            }
+        }
+        return {axis.back()[0], y, axis.back()[2]};
+    }
+
+    Tape horizontal_torso(double y) { return tape(Plane::horizontal(y), torso_seed(y)); }
+
+    void stature() {
+        const Vec3 top = pt("top_of_head");
+        Measurement m;
+        m.name = "stature";
+        m.kind = MeasurementKind::height;
+        m.value = top[1] - m_.min_y;
+        m.iso_clause = "stature";
+        m.points = {{top[0], m_.min_y, top[2]}, top};
+        m.landmarks = {"top_of_head"};
+        out_.add(std::move(m));
+    }
+
+    void head() {
+        const Vec3 top = pt("top_of_head");
+        auto f = [&](double y) { return tape(Plane::horizontal(y), {top[0], y, top[2]}); };
+        record("head_girth", extreme(f, top[1] - 0.075 * height_, top[1] - 0.02 * height_, true),
+               {"top_of_head"});
+    }
+
+    void neck() {
+        const std::vector<std::string> deps = {"side_neck_left", "side_neck_right", "top_of_head"};
+        if (auto why = missing("neck_girth", deps)) {
+            out_.add_missing("neck_girth", *why);
+            return;
+        }
+        const Vec3 base = mul(add(pt("side_neck_left"), pt("side_neck_right")), 0.5);
+        const Vec3 top = pt("top_of_head");
+        const Vec3 dir = normalized(sub(top, base));
+        const double len = dist(top, base);
+        // Smallest girth over the level along the neck axis and the plane's forward tilt.
+        auto at = [&](double t, double tilt) {
+            const double c = std::cos(tilt), s = std::sin(tilt);
+            // Rotate the axis direction about x (the lateral axis).
+            const Vec3 n{dir[0], c * dir[1] - s * dir[2], s * dir[1] + c * dir[2]};
+            const Vec3 o = add(base, mul(dir, t));
+            return tape(Plane::make(o, n, {1, 0, 0}), o);
+        };
+        const double lo = 0.01 * height_, hi = 0.5 * len;
+        const double max_tilt = options_.max_neck_tilt_degrees * M_PI / 180;
+        auto best_level = [&](double tilt) {
+            return extreme([&](double t) { return at(t, tilt); }, lo, hi, false);
+        };
+        auto tilt_value = [&](double tilt) { return best_level(tilt).perimeter; };
+        const auto tb = max_tilt > 0 ? golden_minimum(tilt_value, -max_tilt, max_tilt, 0.01)
+                                     : std::make_pair(0.0, 0.0);
+        record("neck_girth", best_level(tb.first), deps);
+    }
+
+    void neck_base() {
+        const std::vector<std::string> deps = {"cervicale", "front_neck"};
+        if (auto why = missing("neck_base_girth", deps)) {
+            out_.add_missing("neck_base_girth", *why);
+            return;
+        }
+        const Vec3 cv = pt("cervicale"), fn = pt("front_neck");
+        Vec3 n = cross(sub(fn, cv), {1, 0, 0});
+        if (n[1] < 0) {
+            n = mul(n, -1);
+        }
+        const Vec3 o = mul(add(cv, fn), 0.5);
+        record("neck_base_girth", tape(Plane::make(o, n, {1, 0, 0}), o), deps);
+    }
+
+    void torso() {
+        auto fy = [&](double y) { return horizontal_torso(y); };
+        // Bust: largest horizontal girth within 1% of the height of the bust points' level.
+        if (auto why = missing("bust_girth", {"bust_left", "bust_right"})) {
+            out_.add_missing("bust_girth", *why);
+        } else {
+            const double y = 0.5 * (pt("bust_left")[1] + pt("bust_right")[1]);
+            record("bust_girth", extreme(fy, y - 0.01 * height_, y + 0.01 * height_, true),
+                   {"bust_left", "bust_right"});
+        }
+        // High bust: horizontal, just under the lower armpit.
+        if (auto why = missing("high_bust_girth", {"armpit_left", "armpit_right"})) {
+            out_.add_missing("high_bust_girth", *why);
+        } else {
+            const double y =
+                std::min(pt("armpit_left")[1], pt("armpit_right")[1]) - 0.005 * height_;
+            record("high_bust_girth", fy(y), {"armpit_left", "armpit_right"});
+        }
+        underbust();
+        if (auto why = missing("waist_girth", {"waist_front"})) {
+            out_.add_missing("waist_girth", *why);
+        } else {
+            record("waist_girth", fy(pt("waist_front")[1]), {"waist_front"});
+        }
+        if (auto why = missing("high_hip_girth", {"waist_front", "hip_back"})) {
+            out_.add_missing("high_hip_girth", *why);
+        } else {
+            record("high_hip_girth", fy(0.5 * (pt("waist_front")[1] + pt("hip_back")[1])),
+                   {"waist_front", "hip_back"});
+        }
+        if (auto why = missing("hip_girth", {"hip_back", "crotch"})) {
+            out_.add_missing("hip_girth", *why);
+        } else {
+            const double y = pt("hip_back")[1];
+            const double lo = std::max(y - 0.02 * height_, pt("crotch")[1] + 0.005 * height_);
+            record("hip_girth", extreme(fy, lo, y + 0.02 * height_, true), {"hip_back", "crotch"});
+        }
+    }
+
+    /// Underbust level: on the vertical line through the bust point, the front point deepest
+    /// behind the chord from the bust point to the waist's front (the fold under the breast).
+    void underbust() {
+        const std::vector<std::string> deps = {"bust_left", "bust_right", "waist_front"};
+        if (auto why = missing("underbust_girth", deps)) {
+            out_.add_missing("underbust_girth", *why);
+            return;
+        }
+        const Vec3 bl = pt("bust_left"), br = pt("bust_right"), wf = pt("waist_front");
+        const double x = bl[0];
+        const double y1 = 0.5 * (bl[1] + br[1]), y0 = wf[1];
+        const double z1 = bl[2];
+        std::vector<std::pair<double, double>> contour;
+        const double h = std::max(1.0, 0.002 * height_);
+        for (double y = y1; y >= y0; y -= h) {
+            const PlaneSection ps = section(m_, Plane::horizontal(y), ws_);
+            const int s = ps.locate(Plane::horizontal(y).to2(torso_seed(y)));
+            if (s < 0) {
+                continue;
+            }
+            const auto fb = internal_front_back(ps, ps.sections[static_cast<std::size_t>(s)], x);
+            if (fb) {
+                contour.emplace_back(y, *fb);
+            }
+        }
+        if (contour.size() < 3) {
+            out_.add_missing("underbust_girth",
+                             "underbust_girth: the front below the bust point "
+                             "was not found");
+            return;
+        }
+        const double z0 = contour.back().second;
+        const double dy = y0 - y1, dz = z0 - z1, len = std::hypot(dy, dz);
+        double best = -kInf, at = y1;
+        for (const auto& [y, z] : contour) {
+            const double d = ((y - y1) * dz - (z - z1) * dy) / len;
+            const double behind = dy < 0 ? -d : d;
+            if (behind > best) {
+                best = behind;
+                at = y;
+            }
+        }
+        record("underbust_girth", horizontal_torso(at), deps);
+    }
+
+    static std::optional<double> internal_front_back(const PlaneSection& ps, const Section& s,
+                                                     double x0) {
+        double front = -kInf;
+        for (std::size_t l : s.loops) {
+            const auto& uv = ps.loops[l].uv;
+            for (std::size_t i = 0, j = uv.size() - 1; i < uv.size(); j = i++) {
+                if ((uv[j][0] >= x0) != (uv[i][0] >= x0)) {
+                    const double t = (x0 - uv[j][0]) / (uv[i][0] - uv[j][0]);
+                    front = std::max(front, -(uv[j][1] + t * (uv[i][1] - uv[j][1])));
+                }
+            }
+        }
+        return std::isfinite(front) ? std::optional<double>(front) : std::nullopt;
+    }
+
+    /// Accepts tapes whose area is at most `factor` times the reference tape's (a section that
+    /// swallowed the torso or the other leg is several times larger than the limb's own).
+    static std::function<bool(const Tape&)> area_limit(const Tape& reference, double factor) {
+        const double limit = std::isfinite(reference.perimeter) ? factor * reference.area : kInf;
+        return [limit](const Tape& t) { return t.area <= limit; };
+    }
+
+    void legs(int s) {
+        const std::string side = s == 0 ? "_left" : "_right";
+        const double sg = s == 0 ? 1 : -1;
+        const std::string knee = "knee" + side, ankle = "ankle" + side;
+        // Thigh top: centre of this leg's horizontal section 2% of the height below the crotch.
+        std::optional<Vec3> thigh_top;
+        if (!missing("", {"crotch", knee})) {
+            const Vec3 crotch = pt("crotch");
+            const double y = crotch[1] - 0.02 * height_;
+            const Plane plane = Plane::horizontal(y);
+            const PlaneSection ps = section(m_, plane, ws_);
+            const Vec3 k = axis_pt(knee);
+            const int sec = ps.locate(plane.to2({0.5 * (crotch[0] + k[0]), y, k[2]}));
+            if (sec >= 0 &&
+                sg * (ps.sections[static_cast<std::size_t>(sec)].centroid[0] - crotch[0]) > 0) {
+                thigh_top = plane.to3(ps.sections[static_cast<std::size_t>(sec)].centroid);
+            }
+        }
+        const Vec3 lateral{sg, 0, 0};
+        if (auto why = missing("thigh_girth" + side, {"crotch", knee})) {
+            out_.add_missing("thigh_girth" + side, *why);
+            out_.add_missing("mid_thigh_girth" + side,
+                             "mid_thigh_girth" + side + ": needs crotch and " + knee);
+        } else if (!thigh_top) {
+            out_.add_missing("thigh_girth" + side,
+                             "thigh_girth" + side + ": the leg below the crotch was not found");
+        } else {
+            const Vec3 k = axis_pt(knee);
+            const Vec3 dir = normalized(sub(k, *thigh_top));
+            const double len = dist(k, *thigh_top);
+            auto f = along(*thigh_top, dir, {}, lateral);
+            const Tape ref = f(0.3 * len);
+            record("thigh_girth" + side, extreme(f, 0, 0.3 * len, true, area_limit(ref, 1.8)),
+                   {"crotch", knee});
+            // Mid-thigh: the axis point halfway in height between crotch and knee.
+            const double ymid = 0.5 * (pt("crotch")[1] + pt(knee)[1]);
+            const double t = ((*thigh_top)[1] - ymid) / std::max(1e-9, -dir[1]);
+            record("mid_thigh_girth" + side, f(t), {"crotch", knee});
+        }
+        if (auto why = missing("knee_girth" + side, {knee, ankle})) {
+            out_.add_missing("knee_girth" + side, *why);
+            out_.add_missing("calf_girth" + side,
+                             "calf_girth" + side + ": needs " + knee + " and " + ankle);
+            out_.add_missing("ankle_girth" + side,
+                             "ankle_girth" + side + ": needs " + knee + " and " + ankle);
+            return;
+        }
+        const Vec3 k = axis_pt(knee), a = axis_pt(ankle);
+        const Vec3 shank = normalized(sub(a, k));
+        const double len = dist(a, k);
+        Vec3 knee_dir = shank;
+        if (thigh_top) {
+            knee_dir = normalized(add(shank, normalized(sub(k, *thigh_top))));
+        }
+        record("knee_girth" + side, tape(Plane::make(k, knee_dir, lateral), k), {knee, ankle});
+        auto f = along(k, shank, {}, lateral);
+        record("calf_girth" + side, extreme(f, 0.15 * len, 0.7 * len, true), {knee, ankle});
+        record("ankle_girth" + side,
+               extreme(f, len - 0.015 * height_, len + 0.015 * height_, false), {knee, ankle});
+    }
+
+    void arms(int s) {
+        const std::string side = s == 0 ? "_left" : "_right";
+        const std::string acromion = "acromion" + side, armpit = "armpit" + side;
+        const std::string elbow = "elbow" + side, wrist = "wrist" + side;
+        const std::vector<std::string> deps = {acromion, armpit, elbow, wrist};
+        if (auto why = missing("upper_arm_girth" + side, deps)) {
+            out_.add_missing("upper_arm_girth" + side, *why);
+            out_.add_missing("elbow_girth" + side, "elbow_girth" + side + ": needs " + acromion +
+                                                       ", " + armpit + ", " + elbow + ", " + wrist);
+            out_.add_missing("wrist_girth" + side, "wrist_girth" + side + ": needs " + acromion +
+                                                       ", " + armpit + ", " + elbow + ", " + wrist);
+            return;
+        }
+        const Vec3 joint = mul(add(pt(acromion), pt(armpit)), 0.5);
+        const Vec3 e = axis_pt(elbow), w = axis_pt(wrist);
+        const Vec3 upper = normalized(sub(e, joint)), fore = normalized(sub(w, e));
+        const double ulen = dist(e, joint), flen = dist(w, e);
+        const Vec3 up{0, 1, 0};
+        // Upper arm: midway between the armpit and the elbow, along the upper arm's axis.
+        const double tm = 0.5 * (std::max(0.0, dot(sub(pt(armpit), joint), upper)) + ulen);
+        record("upper_arm_girth" + side,
+               tape(Plane::make(add(joint, mul(upper, tm)), upper, up), add(joint, mul(upper, tm))),
+               deps);
+        record("elbow_girth" + side, tape(Plane::make(e, normalized(add(upper, fore)), up), e),
+               deps);
+        auto ff = along(e, fore, {}, up);
+        record(
+            "wrist_girth" + side,
+            extreme(ff, flen - 0.015 * height_, std::min(flen + 0.01 * height_, 1.2 * flen), false),
+            deps);
+    }
+
+    /// The unsuffixed limb girths: the right side's, else the left's.
+    void unsuffixed() {
+        for (const char* base : {"thigh_girth", "mid_thigh_girth", "knee_girth", "calf_girth",
+                                 "ankle_girth", "upper_arm_girth", "elbow_girth", "wrist_girth"}) {
+            const std::string b = base;
+            const Measurement* m = out_.find(b + "_right");
+            if (!m) {
+                m = out_.find(b + "_left");
+            }
+            if (!m) {
+                out_.add_missing(b, b + ": not measured on either side");
+                continue;
+            }
+            Measurement copy = *m;
+            copy.name = b;
+            copy.freesewing = info(b).freesewing;
+            out_.add(std::move(copy));
+        }
+    }
+};
+
+}  // namespace internal
+
+/// Girths of a body from its landmarks (see the top of this file). Girths whose landmarks are
+/// missing are listed in MeasurementSet::missing with a reason; all others are produced.
+inline MeasurementSet measure_girths(const Body& body, const LandmarkSet& landmarks,
+                                     const MeasureOptions& options = {},
+                                     std::size_t* sections_cut = nullptr) {
+    internal::CutWorkspace ws;
+    internal::GirthMeasurer g(body, landmarks, options, ws);
+    MeasurementSet set = g.run();
+    if (sections_cut) {
+        *sections_cut = ws.cuts;
+    }
+    return set;
+}
+
+}  // namespace tapeline::measurement

@@ -1,0 +1,886 @@
+// Landmarks from the geometry of a closed body mesh in the canonical frame (no vertex ids).
+//
+// A stack of horizontal sections (every `scan_step` mm) is the backbone: the two leg sections are
+// followed upwards until they merge (crotch), the merged torso section is followed to the top of
+// the head, and every other section that merges into it on the way is an arm (armpit). Levels
+// found on the scan are refined by bisection or golden-section search on fresh sections. Arms
+// are sampled by planes perpendicular to their axis (both poses). Definitions, with their ISO
+// 8559-1 / ASTM D5219 terms, are in measurement/README.md.
+#pragma once
+
+#include <tapeline/measurement/internal/search.h>
+#include <tapeline/measurement/internal/sections.h>
+#include <tapeline/measurement/measurement_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tapeline::measurement::internal {
+
+inline std::string mm(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.1f mm", v);
+    return b;
+}
+
+/// Front (max z) and back (min z) of a horizontal section's loops on the line x = x0; nullopt
+/// when the line misses them.
+inline std::optional<std::pair<double, double>> front_back(const PlaneSection& ps, const Section& s,
+                                                           double x0) {
+    double front = -std::numeric_limits<double>::infinity(), back = -front;
+    for (std::size_t l : s.loops) {
+        const auto& uv = ps.loops[l].uv;
+        for (std::size_t i = 0, j = uv.size() - 1; i < uv.size(); j = i++) {
+            const Vec2& a = uv[j];
+            const Vec2& b = uv[i];
+            if ((a[0] >= x0) != (b[0] >= x0)) {
+                const double t = (x0 - a[0]) / (b[0] - a[0]);
+                const double z = -(a[1] + t * (b[1] - a[1]));  // w = -z on horizontal planes
+                front = std::max(front, z);
+                back = std::min(back, z);
+            }
+        }
+    }
+    if (!std::isfinite(front)) {
+        return std::nullopt;
+    }
+    return std::make_pair(front, back);
+}
+
+/// Closest pair of loop vertices between two sections of one plane; returns their midpoint.
+inline Vec3 gap_midpoint(const PlaneSection& ps, const Section& a, const Section& b) {
+    double best = std::numeric_limits<double>::infinity();
+    Vec3 mid{0, 0, 0};
+    for (std::size_t la : a.loops) {
+        for (std::size_t lb : b.loops) {
+            for (const auto& p : ps.loops[la].points) {
+                for (const auto& q : ps.loops[lb].points) {
+                    const double d = dist(p, q);
+                    if (d < best) {
+                        best = d;
+                        mid = mul(add(p, q), 0.5);
+                    }
+                }
+            }
+        }
+    }
+    return mid;
+}
+
+/// A point of a limb profile: a section perpendicular to the limb's axis.
+struct LimbSample {
+    double t = 0;          // distance along the axis from its start
+    double perimeter = 0;  // tape length; +inf where no section was found
+    double area = 0;
+    Vec3 centre{0, 0, 0};  // 3D centroid of the section's hull
+    Vec3 outer{0, 0, 0};   // hull point farthest along the reference direction
+    Vec3 front{0, 0, 0};   // hull point with the largest z
+};
+
+class LandmarkFinder {
+public:
+    /// `overrides`: canonical points that replace whatever the geometry gives (later steps use
+    /// them too).
+    LandmarkFinder(const BodyMesh& mesh, const MeasureOptions& options, Pose pose,
+                   std::map<std::string, Vec3> overrides = {})
+        : m_(mesh), options_(options), pose_(pose), overrides_(std::move(overrides)) {
+        height_ = m_.max_y - m_.min_y;
+        step_ = options_.scan_step > 0 ? options_.scan_step : height_ / 400.0;
+    }
+
+    LandmarkSet run() {
+        scan();
+        find_top();
+        find_crotch();
+        find_torso_and_armpits();
+        find_waist_and_hips();
+        find_neck();
+        find_bust();
+        find_acromions();
+        find_arms();
+        find_legs();
+        for (const auto& [name, p] : overrides_) {
+            if (Landmark* l = set_.find(name); l && l->status != LandmarkStatus::overridden) {
+                set_found(name, p);
+            }
+        }
+        return set_;
+    }
+
+    std::size_t cuts() const { return ws_.cuts; }
+    const std::vector<std::string>& warnings() const { return warnings_; }
+
+    // Profiles kept for diagnostics and tests.
+    std::vector<LimbSample> arm_profile[2], leg_profile[2];
+
+private:
+    struct Level {
+        double y = 0;
+        PlaneSection ps;
+        int torso = -1;
+        int leg[2] = {-1, -1};
+    };
+
+    const BodyMesh& m_;
+    MeasureOptions options_;
+    Pose pose_;
+    std::map<std::string, Vec3> overrides_;
+    double height_ = 0, step_ = 0;
+    CutWorkspace ws_;
+    std::vector<Level> levels_;
+    LandmarkSet set_;
+    std::vector<std::string> warnings_;
+    std::size_t crotch_level_ = 0;
+    std::optional<double> crotch_y_, armpit_y_[2], waist_y_, hip_y_, neck_y_, snp_y_[2];
+    std::optional<std::size_t> arm_merge_level_[2];
+    int arm_section_[2] = {-1, -1};  // the arm's section at its merge level
+    double x_mid_ = 0;
+
+    static double side_sign(int s) { return s == 0 ? 1.0 : -1.0; }
+    static const char* side_name(int s) { return s == 0 ? "left" : "right"; }
+    double y_of(double fraction) const { return m_.min_y + fraction * height_; }
+
+    PlaneSection horizontal(double y) { return section(m_, Plane::horizontal(y), ws_); }
+
+    /// Records a found landmark, or its override; returns the point recorded.
+    Vec3 set_found(const std::string& name, const Vec3& p, const Vec3* axis = nullptr) {
+        Landmark* l = set_.find(name);
+        const auto o = overrides_.find(name);
+        l->status = o != overrides_.end() ? LandmarkStatus::overridden : LandmarkStatus::found;
+        l->point = o != overrides_.end() ? o->second : p;
+        l->axis_point = o != overrides_.end() || !axis ? l->point : *axis;
+        l->reason.clear();
+        return l->point;
+    }
+    void set_missing(const std::string& name, const std::string& why) {
+        if (overrides_.count(name)) {
+            set_found(name, overrides_.at(name));
+            return;
+        }
+        Landmark* l = set_.find(name);
+        l->status = LandmarkStatus::not_found;
+        l->reason = name + ": " + why;
+        warnings_.push_back(l->reason);
+    }
+
+    void scan() {
+        const int n = static_cast<int>(std::floor(height_ / step_));
+        levels_.reserve(static_cast<std::size_t>(n));
+        for (int k = 0; k < n; ++k) {
+            Level level;
+            level.y = m_.min_y + (k + 0.5) * step_;
+            level.ps = horizontal(level.y);
+            levels_.push_back(std::move(level));
+        }
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+        for (const auto& p : m_.points) {
+            lo = std::min(lo, p[0]);
+            hi = std::max(hi, p[0]);
+        }
+        x_mid_ = 0.5 * (lo + hi);
+    }
+
+    /// The section of level k+1 that continues section s of level k (contains its centroid, or is
+    /// the nearest within a tenth of the height); -1 when none.
+    int successor(std::size_t k, int s) const {
+        if (k + 1 >= levels_.size() || s < 0) {
+            return -1;
+        }
+        double d = 0;
+        const int next = levels_[k + 1].ps.locate(
+            levels_[k].ps.sections[static_cast<std::size_t>(s)].centroid, &d);
+        return d <= 0.1 * height_ ? next : -1;
+    }
+
+    void find_top() {
+        std::size_t best = 0;
+        for (std::size_t v = 1; v < m_.points.size(); ++v) {
+            if (m_.points[v][1] > m_.points[best][1]) {
+                best = v;
+            }
+        }
+        set_found("top_of_head", m_.points[best]);
+    }
+
+    void find_crotch() {
+        std::size_t k0 = 0;
+        while (k0 < levels_.size() && levels_[k0].y < y_of(0.02)) {
+            ++k0;
+        }
+        if (k0 >= levels_.size() || levels_[k0].ps.sections.size() < 2) {
+            set_missing("crotch", "the legs are not two separate sections at 2% of the height");
+            return;
+        }
+        // The two largest sections near the floor are the feet.
+        std::vector<int> order(levels_[k0].ps.sections.size());
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            order[i] = static_cast<int>(i);
+        }
+        const auto& secs = levels_[k0].ps.sections;
+        std::sort(order.begin(), order.end(),
+                  [&secs](int a, int b) { return secs[a].perimeter > secs[b].perimeter; });
+        int a = order[0], b = order[1];
+        if (secs[a].centroid[0] < secs[b].centroid[0]) {
+            std::swap(a, b);
+        }
+        levels_[k0].leg[0] = a;
+        levels_[k0].leg[1] = b;
+        for (std::size_t k = k0; k + 1 < levels_.size(); ++k) {
+            const int l = successor(k, levels_[k].leg[0]);
+            const int r = successor(k, levels_[k].leg[1]);
+            if (l < 0 || r < 0) {
+                set_missing("crotch", "a leg section was lost at " + mm(levels_[k].y));
+                return;
+            }
+            if (l != r) {
+                levels_[k + 1].leg[0] = l;
+                levels_[k + 1].leg[1] = r;
+                continue;
+            }
+            // Merged between levels k and k+1: bisect, following both legs from level k.
+            Vec2 cl = levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].leg[0])].centroid;
+            Vec2 cr = levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].leg[1])].centroid;
+            auto merged = [&](double y) {
+                const PlaneSection ps = horizontal(y);
+                return ps.locate(cl) == ps.locate(cr);
+            };
+            const auto [lo, hi] =
+                bisect(merged, levels_[k].y, levels_[k + 1].y, options_.level_tolerance);
+            (void)hi;
+            const PlaneSection ps = horizontal(lo);
+            const int sl = ps.locate(cl), sr = ps.locate(cr);
+            Vec3 p = sl >= 0 && sr >= 0 && sl != sr
+                         ? gap_midpoint(ps, ps.sections[static_cast<std::size_t>(sl)],
+                                        ps.sections[static_cast<std::size_t>(sr)])
+                         : Vec3{0.5 * (cl[0] + cr[0]), lo, -0.5 * (cl[1] + cr[1])};
+            p[1] = lo;
+            crotch_y_ = set_found("crotch", p)[1];
+            crotch_level_ = k + 1;
+            levels_[k + 1].torso = l;
+            x_mid_ = p[0];
+            return;
+        }
+        set_missing("crotch", "the two leg sections never merge");
+    }
+
+    void find_torso_and_armpits() {
+        if (pose_ == Pose::t_pose) {
+            // A horizontal arm meets the horizontal scan all at once: the merge test below does
+            // not locate T-pose armpits (validated on A-poses only).
+            for (int s = 0; s < 2; ++s) {
+                set_missing(std::string("armpit_") + side_name(s),
+                            "T-pose armpit search is not implemented (A-pose only)");
+            }
+        }
+        if (!crotch_y_) {
+            for (int s = 0; s < 2; ++s) {
+                set_missing(std::string("armpit_") + side_name(s), "needs the crotch");
+            }
+            return;
+        }
+        for (std::size_t k = crotch_level_; k + 1 < levels_.size(); ++k) {
+            const int t = levels_[k].torso;
+            const int next = successor(k, t);
+            if (next < 0) {
+                break;
+            }
+            levels_[k + 1].torso = next;
+            const Vec2 tc = levels_[k].ps.sections[static_cast<std::size_t>(t)].centroid;
+            for (std::size_t s = 0; s < levels_[k].ps.sections.size(); ++s) {
+                if (static_cast<int>(s) == t || successor(k, static_cast<int>(s)) != next) {
+                    continue;
+                }
+                const Vec2 sc = levels_[k].ps.sections[s].centroid;
+                const int side = sc[0] > tc[0] ? 0 : 1;
+                if (arm_merge_level_[side] || pose_ == Pose::t_pose) {
+                    continue;
+                }
+                if (levels_[k].y < *crotch_y_ + 0.1 * height_) {
+                    warnings_.push_back(std::string("a ") + side_name(side) +
+                                        " section joins the torso at " + mm(levels_[k].y) +
+                                        ", below the armpit band (hand touching the hip?)");
+                    continue;
+                }
+                arm_merge_level_[side] = k;
+                arm_section_[side] = static_cast<int>(s);
+                refine_armpit(side, k, tc, sc);
+            }
+        }
+        for (int s = 0; s < 2 && pose_ == Pose::a_pose; ++s) {
+            if (!armpit_y_[s]) {
+                set_missing(std::string("armpit_") + side_name(s),
+                            "no arm section joins the torso above the crotch (arm fused to the "
+                            "torso, or a T-pose arm level with the armpit)");
+            }
+        }
+    }
+
+    void refine_armpit(int side, std::size_t k, Vec2 tc, Vec2 sc) {
+        auto merged = [&](double y) {
+            const PlaneSection ps = horizontal(y);
+            return ps.locate(tc) == ps.locate(sc);
+        };
+        const auto [lo, hi] =
+            bisect(merged, levels_[k].y, levels_[k + 1].y, options_.level_tolerance);
+        (void)hi;
+        const PlaneSection ps = horizontal(lo);
+        const int a = ps.locate(tc), b = ps.locate(sc);
+        Vec3 p{sc[0], lo, -sc[1]};
+        if (a >= 0 && b >= 0 && a != b) {
+            p = gap_midpoint(ps, ps.sections[static_cast<std::size_t>(a)],
+                             ps.sections[static_cast<std::size_t>(b)]);
+        }
+        p[1] = lo;
+        armpit_y_[side] = set_found(std::string("armpit_") + side_name(side), p)[1];
+    }
+
+    /// Torso section at a height (fresh cut) located from the nearest scan level's torso.
+    std::optional<std::pair<PlaneSection, int>> torso_at(double y) {
+        const auto k = nearest_level(y);
+        if (!k || levels_[*k].torso < 0) {
+            return std::nullopt;
+        }
+        const Vec2 c =
+            levels_[*k].ps.sections[static_cast<std::size_t>(levels_[*k].torso)].centroid;
+        PlaneSection ps = horizontal(y);
+        const int s = ps.locate(c);
+        if (s < 0) {
+            return std::nullopt;
+        }
+        return std::make_pair(std::move(ps), s);
+    }
+
+    std::optional<std::size_t> nearest_level(double y) const {
+        if (levels_.empty()) {
+            return std::nullopt;
+        }
+        const double k = std::round((y - m_.min_y) / step_ - 0.5);
+        return static_cast<std::size_t>(
+            std::clamp(k, 0.0, static_cast<double>(levels_.size() - 1)));
+    }
+
+    double armpit_level() const {
+        if (armpit_y_[0] && armpit_y_[1]) {
+            return std::min(*armpit_y_[0], *armpit_y_[1]);
+        }
+        if (armpit_y_[0] || armpit_y_[1]) {
+            return armpit_y_[0] ? *armpit_y_[0] : *armpit_y_[1];
+        }
+        return *crotch_y_ + 0.27 * height_;  // typical proportions when no armpit was found
+    }
+
+    void find_waist_and_hips() {
+        if (!crotch_y_) {
+            set_missing("waist_front", "needs the crotch");
+            set_missing("waist_back", "needs the crotch");
+            set_missing("hip_back", "needs the crotch");
+            return;
+        }
+        const double c = *crotch_y_, a = armpit_level();
+        auto girth = [&](double y) {
+            const auto t = torso_at(y);
+            return t ? t->first.sections[static_cast<std::size_t>(t->second)].perimeter
+                     : std::numeric_limits<double>::infinity();
+        };
+        const double lo = c + 0.3 * (a - c), hi = c + 0.85 * (a - c);
+        const int samples = std::max(8, static_cast<int>((hi - lo) / step_));
+        const auto [wy, wg] = scan_minimum(girth, lo, hi, samples, options_.level_tolerance);
+        if (!std::isfinite(wg)) {
+            set_missing("waist_front", "no torso section between crotch and armpits");
+            set_missing("waist_back", "no torso section between crotch and armpits");
+        } else {
+            waist_y_ = wy;
+            if (overrides_.count("waist_front")) {
+                waist_y_ = overrides_.at("waist_front")[1];
+            }
+            const auto t = torso_at(*waist_y_);
+            const auto fb =
+                t ? front_back(t->first, t->first.sections[static_cast<std::size_t>(t->second)],
+                               x_mid_)
+                  : std::nullopt;
+            if (fb) {
+                set_found("waist_front", {x_mid_, *waist_y_, fb->first});
+                set_found("waist_back", {x_mid_, *waist_y_, fb->second});
+            } else {
+                set_missing("waist_front", "the midline misses the waist section");
+                set_missing("waist_back", "the midline misses the waist section");
+            }
+        }
+        // Greatest buttock protrusion: the most posterior point of the torso's tape between the
+        // crotch and the waist.
+        const double top = waist_y_ ? *waist_y_ : c + 0.5 * (a - c);
+        auto back = [&](double y) {
+            const auto t = torso_at(y);
+            if (!t) {
+                return std::numeric_limits<double>::infinity();
+            }
+            const Section& s = t->first.sections[static_cast<std::size_t>(t->second)];
+            return -s.hi[1];  // w = -z: the largest w is the most posterior point; minimise -w
+        };
+        const double b0 = c + 0.01 * height_;
+        const int n = std::max(8, static_cast<int>((top - b0) / step_));
+        const auto [hy, hv] = scan_minimum(back, b0, top, n, options_.level_tolerance);
+        if (!std::isfinite(hv)) {
+            set_missing("hip_back", "no torso section between crotch and waist");
+            return;
+        }
+        hip_y_ = set_found("hip_back", {x_mid_, hy, hv})[1];
+    }
+
+    void find_neck() {
+        // The neck: the smallest torso-chain section between the armpits and the head.
+        const double a = crotch_y_ ? armpit_level() : y_of(0.73);
+        const Vec3 top = set_.find("top_of_head")->point;
+        const double lo = a + 0.04 * height_, hi = top[1] - 0.08 * height_;
+        double best = std::numeric_limits<double>::infinity();
+        std::size_t best_k = 0;
+        for (std::size_t k = 0; k < levels_.size(); ++k) {
+            if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
+                continue;
+            }
+            const double p =
+                levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].torso)].perimeter;
+            if (p < best) {
+                best = p;
+                best_k = k;
+            }
+        }
+        const char* names[] = {"side_neck_left", "side_neck_right", "cervicale", "front_neck"};
+        if (!std::isfinite(best)) {
+            for (const char* n : names) {
+                set_missing(n, "no neck section found between the armpits and the head");
+            }
+            return;
+        }
+        neck_y_ = levels_[best_k].y;
+        // Side neck point: going down from the neck, the first level where the frontal outline
+        // slopes by more than 45 degrees (|dx/dy| > 1): the neck's side turns into the shoulder.
+        for (int s = 0; s < 2; ++s) {
+            const double sg = side_sign(s);
+            auto lateral = [&](std::size_t k) {
+                const Section& sec =
+                    levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].torso)];
+                return sg > 0 ? sec.hi[0] : -sec.lo[0];
+            };
+            std::optional<std::size_t> found;
+            for (std::size_t k = best_k; k >= 1 && levels_[k - 1].torso >= 0; --k) {
+                if (levels_[k - 1].y < a) {
+                    break;
+                }
+                if (lateral(k - 1) - lateral(k) > step_) {
+                    found = k;  // the last level of the neck
+                    break;
+                }
+            }
+            const std::string name = std::string("side_neck_") + side_name(s);
+            if (!found) {
+                set_missing(name, "the neck outline never turns into a shoulder above the armpit");
+                continue;
+            }
+            const Level& lv = levels_[*found];
+            const Section& sec = lv.ps.sections[static_cast<std::size_t>(lv.torso)];
+            Vec2 best_q = sec.hull.front();
+            for (const auto& q : sec.hull) {
+                if (sg * q[0] > sg * best_q[0]) {
+                    best_q = q;
+                }
+            }
+            snp_y_[s] = set_found(name, lv.ps.plane.to3(best_q))[1];
+        }
+        // Cervicale: the back midline at the height of the side neck points.
+        if (snp_y_[0] || snp_y_[1]) {
+            const double y = snp_y_[0] && snp_y_[1] ? 0.5 * (*snp_y_[0] + *snp_y_[1])
+                                                    : (snp_y_[0] ? *snp_y_[0] : *snp_y_[1]);
+            const auto t = torso_at(y);
+            const auto fb =
+                t ? front_back(t->first, t->first.sections[static_cast<std::size_t>(t->second)],
+                               x_mid_)
+                  : std::nullopt;
+            if (fb) {
+                set_found("cervicale", {x_mid_, y, fb->second});
+            } else {
+                set_missing("cervicale", "the midline misses the section at the side neck points");
+            }
+        } else {
+            set_missing("cervicale", "needs a side neck point");
+        }
+        find_front_neck(best_k);
+    }
+
+    /// Front neck point: on the front midline between the neck and the bust level, the point
+    /// deepest behind the chord from the neck's front to the chest's front (the jugular notch).
+    void find_front_neck(std::size_t neck_k) {
+        const double a = crotch_y_ ? armpit_level() : y_of(0.73);
+        const double y1 = levels_[neck_k].y, y0 = a - 0.04 * height_;
+        std::vector<std::pair<double, double>> contour;  // (y, front z)
+        for (std::size_t k = 0; k < levels_.size(); ++k) {
+            if (levels_[k].y < y0 || levels_[k].y > y1 || levels_[k].torso < 0) {
+                continue;
+            }
+            const auto fb = front_back(
+                levels_[k].ps, levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].torso)],
+                x_mid_);
+            if (fb) {
+                contour.emplace_back(levels_[k].y, fb->first);
+            }
+        }
+        if (contour.size() < 5) {
+            set_missing("front_neck", "the front midline between bust and neck was not found");
+            return;
+        }
+        // Chord from the lowest (chest) to the highest (neck) sample; "behind" is -z.
+        const auto p0 = contour.front(), p1 = contour.back();
+        const double dy = p1.first - p0.first, dz = p1.second - p0.second;
+        const double len = std::hypot(dy, dz);
+        double best = -std::numeric_limits<double>::infinity();
+        std::pair<double, double> at = p0;
+        for (const auto& q : contour) {
+            // Signed distance, positive behind the chord (towards -z).
+            const double d = ((q.first - p0.first) * dz - (q.second - p0.second) * dy) / len;
+            if (d > best) {
+                best = d;
+                at = q;
+            }
+        }
+        set_found("front_neck", {x_mid_, at.first, at.second});
+    }
+
+    void find_bust() {
+        if (!crotch_y_) {
+            set_missing("bust_left", "needs the crotch");
+            set_missing("bust_right", "needs the crotch");
+            return;
+        }
+        const double a = armpit_level();
+        const double lo = a - 0.12 * height_, hi = a;
+        for (int s = 0; s < 2; ++s) {
+            const double sg = side_sign(s);
+            double best = -std::numeric_limits<double>::infinity();
+            Vec3 at{0, 0, 0};
+            for (std::size_t k = 0; k < levels_.size(); ++k) {
+                if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
+                    continue;
+                }
+                const PlaneSection& ps = levels_[k].ps;
+                const Section& sec = ps.sections[static_cast<std::size_t>(levels_[k].torso)];
+                const double half = sg > 0 ? sec.hi[0] - x_mid_ : x_mid_ - sec.lo[0];
+                for (std::size_t l : sec.loops) {
+                    for (const auto& p : ps.loops[l].points) {
+                        const double off = sg * (p[0] - x_mid_);
+                        if (off > 0.1 * half && off < 0.8 * half && p[2] > best) {
+                            best = p[2];
+                            at = p;
+                        }
+                    }
+                }
+            }
+            const std::string name = std::string("bust_") + side_name(s);
+            if (!std::isfinite(best)) {
+                set_missing(name, "no torso front found below the armpits");
+            } else {
+                set_found(name, at);
+            }
+        }
+    }
+
+    /// Acromion: corner of the upper outline between the side neck point and the arm, the point
+    /// farthest from the chord joining them. The outline is the highest section point (below
+    /// the side neck point) of sagittal planes x = const, every 0.25% of the height outwards.
+    void find_acromions() {
+        for (int s = 0; s < 2; ++s) {
+            const double sg = side_sign(s);
+            const std::string name = std::string("acromion_") + side_name(s);
+            const auto snp = set_.point(std::string("side_neck_") + side_name(s));
+            if (!snp) {
+                set_missing(name, "needs the side neck point");
+                continue;
+            }
+            double tip = -std::numeric_limits<double>::infinity();
+            for (const auto& p : m_.points) {
+                tip = std::max(tip, sg * p[0]);
+            }
+            const double r0 = sg * (*snp)[0], r1 = r0 + 0.6 * (tip - r0);
+            const double cap = (*snp)[1] + 0.005 * height_;
+            std::vector<Vec3> outline;
+            for (double r = r0; r <= r1; r += 0.0025 * height_) {
+                const Plane plane = Plane::make({sg * r, 0, 0}, {1, 0, 0}, {0, 1, 0});
+                bool any = false;
+                Vec3 best{0, -std::numeric_limits<double>::infinity(), 0};
+                for (const Loop& loop : cut(m_, plane, ws_)) {
+                    for (const auto& p : loop.points) {
+                        if (p[1] <= cap && p[1] > best[1]) {
+                            best = p;
+                            any = true;
+                        }
+                    }
+                }
+                if (any) {
+                    outline.push_back(best);
+                }
+            }
+            if (outline.size() < 5) {
+                set_missing(name, "no shoulder outline beyond the side neck point");
+                continue;
+            }
+            const Vec2 p0{sg * (*snp)[0], (*snp)[1]};
+            const Vec2 p1{sg * outline.back()[0], outline.back()[1]};
+            const double dx = p1[0] - p0[0], dy = p1[1] - p0[1], len = std::hypot(dx, dy);
+            double best = -1;
+            Vec3 at = outline.front();
+            for (const auto& q : outline) {
+                const double d = std::abs((sg * q[0] - p0[0]) * dy - (q[1] - p0[1]) * dx) / len;
+                if (d > best) {
+                    best = d;
+                    at = q;
+                }
+            }
+            set_found(name, at);
+        }
+    }
+
+    /// Samples a limb with planes perpendicular to the polyline `axis` every `h` mm; `reference`
+    /// picks the "outer" hull point (largest component along it).
+    std::vector<LimbSample> limb_profile(const std::vector<Vec3>& axis, double h,
+                                         const Vec3& reference) {
+        std::vector<LimbSample> out;
+        double t0 = 0;
+        for (std::size_t i = 0; i + 1 < axis.size(); ++i) {
+            const Vec3 d = sub(axis[i + 1], axis[i]);
+            const double len = norm(d);
+            if (len <= 0) {
+                continue;
+            }
+            const Vec3 dir = mul(d, 1 / len);
+            for (double t = (i == 0 ? 0.0 : std::fmod(h - std::fmod(t0, h), h)); t < len; t += h) {
+                LimbSample sample;
+                sample.t = t0 + t;
+                const Vec3 o = add(axis[i], mul(dir, t));
+                const Plane plane = Plane::make(o, dir, reference);
+                const PlaneSection ps = section(m_, plane, ws_);
+                double d = 0;
+                const int s = ps.locate({0, 0}, &d);
+                if (s < 0 || d > 0.05 * height_) {
+                    sample.perimeter = std::numeric_limits<double>::infinity();
+                    sample.centre = o;
+                    out.push_back(sample);
+                    continue;
+                }
+                const Section& sec = ps.sections[static_cast<std::size_t>(s)];
+                sample.perimeter = sec.perimeter;
+                sample.area = sec.area;
+                sample.centre = plane.to3(sec.centroid);
+                Vec2 outer = sec.hull.front(), front = sec.hull.front();
+                for (const auto& q : sec.hull) {
+                    if (q[0] > outer[0]) {
+                        outer = q;
+                    }
+                    if (plane.to3(q)[2] > plane.to3(front)[2]) {
+                        front = q;
+                    }
+                }
+                sample.outer = plane.to3(outer);
+                sample.front = plane.to3(front);
+                out.push_back(sample);
+            }
+            t0 += len;
+        }
+        return out;
+    }
+
+    /// Arms: axis from the shoulder joint (between armpit and acromion) to the fingertip, sampled
+    /// twice by perpendicular planes (the second time along the section centres of the first).
+    void find_arms() {
+        for (int s = 0; s < 2; ++s) {
+            const std::string elbow = std::string("elbow_") + side_name(s);
+            const std::string wrist = std::string("wrist_") + side_name(s);
+            const auto ac = set_.point(std::string("acromion_") + side_name(s));
+            const auto ap = set_.point(std::string("armpit_") + side_name(s));
+            if (!ac || !ap) {
+                set_missing(elbow, "needs the acromion and the armpit");
+                set_missing(wrist, "needs the acromion and the armpit");
+                continue;
+            }
+            // Fingertip: the point farthest from the shoulder joint among the arm's sections,
+            // followed down the scan from the level where the arm joins the torso.
+            const Vec3 joint = mul(add(*ac, *ap), 0.5);
+            Vec3 fingertip = joint;
+            if (arm_merge_level_[s]) {
+                std::size_t k = *arm_merge_level_[s];
+                int sec = arm_section_[s];
+                while (sec >= 0) {
+                    const PlaneSection& ps = levels_[k].ps;
+                    for (std::size_t l : ps.sections[static_cast<std::size_t>(sec)].loops) {
+                        for (const auto& p : ps.loops[l].points) {
+                            if (dist(p, joint) > dist(fingertip, joint)) {
+                                fingertip = p;
+                            }
+                        }
+                    }
+                    if (k == 0) {
+                        break;
+                    }
+                    double d = 0;
+                    const Vec2 c = ps.sections[static_cast<std::size_t>(sec)].centroid;
+                    const int below = levels_[k - 1].ps.locate(c, &d);
+                    --k;
+                    sec = (below >= 0 && below != levels_[k].torso && d <= 0.02 * height_ &&
+                           below != levels_[k].leg[0] && below != levels_[k].leg[1])
+                              ? below
+                              : -1;
+                }
+            }
+            if (dist(fingertip, joint) < 0.1 * height_) {
+                set_missing(elbow, "the arm below the armpit was not found");
+                set_missing(wrist, "the arm below the armpit was not found");
+                continue;
+            }
+            // Reference "outer" direction: perpendicular to the arm in the vertical plane, up.
+            const Vec3 along = normalized(sub(fingertip, joint));
+            Vec3 up = sub(Vec3{0, 1, 0}, mul(along, along[1]));
+            up = norm(up) > 1e-6 ? normalized(up) : Vec3{0, 0, 1};
+            const double h = std::max(1.0, height_ / 340);
+            auto first = limb_profile({joint, fingertip}, h, up);
+            std::vector<Vec3> axis;
+            axis.push_back(joint);
+            for (std::size_t i = 0; i < first.size(); i += 6) {
+                if (std::isfinite(first[i].perimeter) &&
+                    first[i].t > 0.2 * dist(joint, fingertip)) {
+                    axis.push_back(first[i].centre);
+                }
+            }
+            axis.push_back(fingertip);
+            auto prof = limb_profile(axis, h, up);
+            arm_profile[s] = prof;
+            const double total = prof.empty() ? 0 : prof.back().t;
+            // Elbow: the first narrowing (local minimum over 1% of the height each way) past 30%
+            // of the way to the fingertip; wrist: the first narrowing after the forearm's
+            // widest section (the hand widens again, the fingers beyond are smaller still).
+            std::size_t from = 0;
+            while (from < prof.size() && prof[from].t < 0.3 * total) {
+                ++from;
+            }
+            const auto em = local_extremum(prof, from, false, 0.01);
+            const auto fm = em ? local_extremum(prof, *em, true, 0.01) : std::nullopt;
+            const auto wm = fm ? local_extremum(prof, *fm, false, 0.01) : std::nullopt;
+            if (!wm || prof[*wm].t > 0.95 * total) {
+                set_missing(wrist, "no narrowing of the arm after the forearm");
+            } else {
+                set_found(wrist, prof[*wm].outer, &prof[*wm].centre);
+            }
+            if (!em) {
+                set_missing(elbow, "no narrowing of the arm past 30% of the way to the fingertip");
+                continue;
+            }
+            const int e = static_cast<int>(*em);
+            const LimbSample& es = prof[static_cast<std::size_t>(e)];
+            set_found(elbow, es.outer, &es.centre);
+        }
+    }
+
+    /// First sample from `from` on that is the largest (smallest) girth within `window` times
+    /// the height on both sides.
+    std::optional<std::size_t> local_extremum(const std::vector<LimbSample>& prof, std::size_t from,
+                                              bool largest, double window = 0.02) const {
+        for (std::size_t i = from; i < prof.size(); ++i) {
+            bool ok = true;
+            std::size_t n = 0;
+            for (std::size_t j = 0; j < prof.size() && ok; ++j) {
+                if (j == i || std::abs(prof[j].t - prof[i].t) > window * height_) {
+                    continue;
+                }
+                ++n;
+                ok = largest ? prof[j].perimeter <= prof[i].perimeter
+                             : prof[j].perimeter >= prof[i].perimeter;
+            }
+            if (ok && n > 2 && prof.back().t - prof[i].t > window * height_) {
+                return i;
+            }
+        }
+        return std::nullopt;
+    }
+
+    /// Legs, on the horizontal scan: ankle = smallest leg girth between 2.5% and 12% of the
+    /// height (above the foot), knee = smallest leg girth between the calf (largest girth from
+    /// the ankle to 35% of the height) and the crotch level minus 5% of the height.
+    void find_legs() {
+        for (int s = 0; s < 2; ++s) {
+            const std::string knee = std::string("knee_") + side_name(s);
+            const std::string ankle = std::string("ankle_") + side_name(s);
+            if (!crotch_y_) {
+                set_missing(knee, "needs the crotch (legs not separated)");
+                set_missing(ankle, "needs the crotch (legs not separated)");
+                continue;
+            }
+            std::vector<LimbSample> prof;
+            for (std::size_t k = 0; k < crotch_level_; ++k) {
+                const int l = levels_[k].leg[s];
+                if (l < 0) {
+                    continue;
+                }
+                const PlaneSection& ps = levels_[k].ps;
+                const Section& sec = ps.sections[static_cast<std::size_t>(l)];
+                LimbSample sample;
+                sample.t = levels_[k].y;
+                sample.perimeter = sec.perimeter;
+                sample.area = sec.area;
+                sample.centre = ps.plane.to3(sec.centroid);
+                const double sg = side_sign(s);
+                Vec2 outer = sec.hull.front(), front = sec.hull.front();
+                for (const auto& q : sec.hull) {
+                    if (sg * q[0] > sg * outer[0]) {
+                        outer = q;
+                    }
+                    if (q[1] < front[1]) {  // w = -z
+                        front = q;
+                    }
+                }
+                sample.outer = ps.plane.to3(outer);
+                sample.front = ps.plane.to3(front);
+                prof.push_back(sample);
+            }
+            leg_profile[s] = prof;
+            auto pick = [&prof](double a, double b, bool largest) {
+                int best = -1;
+                for (std::size_t i = 0; i < prof.size(); ++i) {
+                    if (prof[i].t < a || prof[i].t > b) {
+                        continue;
+                    }
+                    const double v = largest ? -prof[i].perimeter : prof[i].perimeter;
+                    const double bv = best < 0  ? 0
+                                      : largest ? -prof[static_cast<std::size_t>(best)].perimeter
+                                                : prof[static_cast<std::size_t>(best)].perimeter;
+                    if (best < 0 || v < bv) {
+                        best = static_cast<int>(i);
+                    }
+                }
+                return best;
+            };
+            const int a = pick(y_of(0.025), y_of(0.12), false);
+            if (a < 0) {
+                set_missing(ankle, "no leg section between 2.5% and 12% of the height");
+                set_missing(knee, "needs the ankle");
+                continue;
+            }
+            const LimbSample& as = prof[static_cast<std::size_t>(a)];
+            set_found(ankle, as.outer, &as.centre);
+            // Calf: the first local maximum above the ankle; knee: the first local minimum above
+            // the calf (extrema over a window of 2% of the height each way).
+            const auto c = local_extremum(prof, static_cast<std::size_t>(a), true);
+            const auto k = c ? local_extremum(prof, *c, false) : std::nullopt;
+            if (!k || prof[*k].t > *crotch_y_ - 0.05 * height_) {
+                set_missing(knee, "no narrowing of the leg between the calf and the thigh");
+                continue;
+            }
+            const LimbSample& ks = prof[*k];
+            set_found(knee, ks.front, &ks.centre);
+        }
+    }
+};
+
+}  // namespace tapeline::measurement::internal

@@ -1,0 +1,457 @@
+// The body as a plain indexed triangle mesh in the canonical frame, its plane sections and the
+// tape around each section (convex hull in the plane, CGAL::convex_hull_2).
+//
+// Plane sections are cut here rather than with CGAL::Polygon_mesh_slicer because the landmark
+// search cuts many hundreds of planes: this cut is one pass over precomputed edge/face adjacency
+// (no AABB tree, no per-call graph), and deciding each vertex's side once (a vertex on the plane
+// counts as above) makes every section of a closed manifold a set of closed loops, even when the
+// plane passes exactly through vertices or edges. The tests check it against the slicer.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/measurement/body_types.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/convex_hull_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace tapeline::measurement::internal {
+
+using Vec2 = std::array<double, 2>;
+
+inline Vec3 add(const Vec3& a, const Vec3& b) {
+    return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+}
+inline Vec3 sub(const Vec3& a, const Vec3& b) {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline Vec3 mul(const Vec3& a, double s) {
+    return {a[0] * s, a[1] * s, a[2] * s};
+}
+inline double dot(const Vec3& a, const Vec3& b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+inline double norm(const Vec3& a) {
+    return std::sqrt(dot(a, a));
+}
+inline Vec3 normalized(const Vec3& a) {
+    return mul(a, 1.0 / norm(a));
+}
+inline double dist(const Vec3& a, const Vec3& b) {
+    return norm(sub(a, b));
+}
+inline double dist2d(const Vec2& a, const Vec2& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1]);
+}
+
+/// Closed triangle mesh in canonical millimetres with edge/face adjacency.
+struct BodyMesh {
+    std::string name;
+    std::vector<Vec3> points;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    std::vector<std::array<std::uint32_t, 2>> edges;       // end vertices
+    std::vector<std::array<std::uint32_t, 2>> edge_faces;  // the two faces of each edge
+    std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k joins corners k and k+1
+    std::size_t components = 0;
+    double min_y = 0, max_y = 0;
+};
+
+/// Fills edges, edge_faces, face_edges and components. Rejects (TopologyError, naming the mesh
+/// and the first offending edge) boundary edges and edges with more than two faces.
+inline void build_adjacency(BodyMesh& m) {
+    const std::size_t nf = m.triangles.size();
+    struct HalfEdge {
+        std::uint64_t key;
+        std::uint32_t face, corner;
+    };
+    std::vector<HalfEdge> hes;
+    hes.reserve(3 * nf);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            std::uint64_t a = m.triangles[f][k], b = m.triangles[f][(k + 1) % 3];
+            if (a > b) {
+                std::swap(a, b);
+            }
+            hes.push_back({(a << 32) | b, f, k});
+        }
+    }
+    std::sort(hes.begin(), hes.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return x.key < y.key || (x.key == y.key && x.face < y.face);
+    });
+    m.edges.clear();
+    m.edge_faces.clear();
+    m.face_edges.assign(nf, {0, 0, 0});
+    std::size_t boundary = 0, non_manifold = 0;
+    std::uint64_t first_boundary = 0, first_non_manifold = 0;
+    for (std::size_t i = 0; i < hes.size();) {
+        std::size_t j = i;
+        while (j < hes.size() && hes[j].key == hes[i].key) {
+            ++j;
+        }
+        const std::size_t count = j - i;
+        if (count == 1 && boundary++ == 0) {
+            first_boundary = hes[i].key;
+        }
+        if (count > 2 && non_manifold++ == 0) {
+            first_non_manifold = hes[i].key;
+        }
+        const auto e = static_cast<std::uint32_t>(m.edges.size());
+        m.edges.push_back({static_cast<std::uint32_t>(hes[i].key >> 32),
+                           static_cast<std::uint32_t>(hes[i].key & 0xffffffffu)});
+        m.edge_faces.push_back({hes[i].face, hes[count > 1 ? i + 1 : i].face});
+        for (std::size_t k = i; k < j; ++k) {
+            m.face_edges[hes[k].face][hes[k].corner] = e;
+        }
+        i = j;
+    }
+    auto edge_name = [](std::uint64_t key) {
+        return "edge between vertices " + std::to_string(key >> 32) + " and " +
+               std::to_string(key & 0xffffffffu);
+    };
+    if (boundary > 0) {
+        throw TopologyError(m.name + ": the body mesh is not closed: " + edge_name(first_boundary) +
+                            " has one face (" + std::to_string(boundary) +
+                            " boundary edges); measuring needs a closed surface");
+    }
+    if (non_manifold > 0) {
+        throw TopologyError(m.name + ": non-manifold " + edge_name(first_non_manifold) + " (" +
+                            std::to_string(non_manifold) + " edges with more than two faces)");
+    }
+    // Components: union-find over faces sharing an edge.
+    std::vector<std::uint32_t> parent(nf);
+    std::iota(parent.begin(), parent.end(), 0u);
+    auto root = [&parent](std::uint32_t x) {
+        while (parent[x] != x) {
+            x = parent[x] = parent[parent[x]];
+        }
+        return x;
+    };
+    for (const auto& ef : m.edge_faces) {
+        parent[root(ef[0])] = root(ef[1]);
+    }
+    m.components = 0;
+    for (std::uint32_t f = 0; f < nf; ++f) {
+        m.components += root(f) == f ? 1 : 0;
+    }
+    m.min_y = std::numeric_limits<double>::infinity();
+    m.max_y = -m.min_y;
+    for (const auto& p : m.points) {
+        m.min_y = std::min(m.min_y, p[1]);
+        m.max_y = std::max(m.max_y, p[1]);
+    }
+}
+
+/// A plane with an in-plane orthonormal frame (u, w); 2D coordinates are along u and w.
+struct Plane {
+    Vec3 origin{0, 0, 0}, normal{0, 1, 0}, u{1, 0, 0}, w{0, 0, 1};
+
+    /// `u_hint` is projected into the plane (a fallback is used when it is parallel to normal).
+    static Plane make(const Vec3& origin, const Vec3& normal, const Vec3& u_hint) {
+        Plane p;
+        p.origin = origin;
+        p.normal = normalized(normal);
+        Vec3 u = sub(u_hint, mul(p.normal, dot(u_hint, p.normal)));
+        if (norm(u) < 1e-9) {
+            const Vec3 alt = std::abs(p.normal[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
+            u = sub(alt, mul(p.normal, dot(alt, p.normal)));
+        }
+        p.u = normalized(u);
+        p.w = cross(p.normal, p.u);
+        return p;
+    }
+    /// Horizontal plane at height y: u = x (left), w = -z (back), so that u × w = y.
+    static Plane horizontal(double y) { return make({0, y, 0}, {0, 1, 0}, {1, 0, 0}); }
+
+    Vec2 to2(const Vec3& p) const {
+        const Vec3 d = sub(p, origin);
+        return {dot(d, u), dot(d, w)};
+    }
+    Vec3 to3(const Vec2& q) const { return add(origin, add(mul(u, q[0]), mul(w, q[1]))); }
+    double side(const Vec3& p) const { return dot(sub(p, origin), normal); }
+};
+
+/// One closed polyline of a plane section, in 3D and in the plane's 2D frame.
+struct Loop {
+    std::vector<Vec3> points;
+    std::vector<Vec2> uv;
+    Vec2 lo{0, 0}, hi{0, 0};  // 2D bounding box
+};
+
+/// Scratch buffers reused between cuts of the same mesh.
+struct CutWorkspace {
+    std::vector<double> side;
+    std::vector<std::int32_t> crossing;  // per edge: index of its crossing point, or -1
+    std::vector<std::uint32_t> crossing_edges;
+    std::vector<Vec3> crossing_points;
+    std::vector<char> visited;
+    std::size_t cuts = 0;
+};
+
+/// The section of the mesh by the plane, as closed loops (see the top of this file).
+inline std::vector<Loop> cut(const BodyMesh& m, const Plane& plane, CutWorkspace& ws) {
+    ++ws.cuts;
+    const std::size_t nv = m.points.size(), ne = m.edges.size();
+    ws.side.resize(nv);
+    for (std::size_t v = 0; v < nv; ++v) {
+        ws.side[v] = plane.side(m.points[v]);
+    }
+    ws.crossing.assign(ne, -1);
+    ws.crossing_edges.clear();
+    ws.crossing_points.clear();
+    for (std::uint32_t e = 0; e < ne; ++e) {
+        const double sa = ws.side[m.edges[e][0]], sb = ws.side[m.edges[e][1]];
+        if ((sa >= 0) != (sb >= 0)) {
+            const double t = sa / (sa - sb);
+            const Vec3& a = m.points[m.edges[e][0]];
+            const Vec3& b = m.points[m.edges[e][1]];
+            ws.crossing[e] = static_cast<std::int32_t>(ws.crossing_points.size());
+            ws.crossing_points.push_back(add(a, mul(sub(b, a), t)));
+            ws.crossing_edges.push_back(e);
+        }
+    }
+    ws.visited.assign(ws.crossing_points.size(), 0);
+    std::vector<Loop> loops;
+    for (std::uint32_t start : ws.crossing_edges) {
+        if (ws.visited[static_cast<std::size_t>(ws.crossing[start])]) {
+            continue;
+        }
+        Loop loop;
+        std::uint32_t e = start;
+        std::uint32_t f = m.edge_faces[e][0];
+        do {
+            ws.visited[static_cast<std::size_t>(ws.crossing[e])] = 1;
+            loop.points.push_back(ws.crossing_points[static_cast<std::size_t>(ws.crossing[e])]);
+            // The other crossing edge of face f (a face is crossed by 0 or 2 edges).
+            std::uint32_t next = e;
+            for (std::uint32_t fe : m.face_edges[f]) {
+                if (fe != e && ws.crossing[fe] >= 0) {
+                    next = fe;
+                    break;
+                }
+            }
+            if (next == e) {
+                break;  // cannot happen on a closed manifold; guards against a bad adjacency
+            }
+            e = next;
+            f = m.edge_faces[e][0] == f ? m.edge_faces[e][1] : m.edge_faces[e][0];
+        } while (e != start && loop.points.size() <= ws.crossing_points.size());
+        if (loop.points.size() < 3) {
+            continue;
+        }
+        loop.uv.reserve(loop.points.size());
+        loop.lo = {std::numeric_limits<double>::infinity(),
+                   std::numeric_limits<double>::infinity()};
+        loop.hi = {-loop.lo[0], -loop.lo[1]};
+        for (const auto& p : loop.points) {
+            const Vec2 q = plane.to2(p);
+            loop.uv.push_back(q);
+            for (int k = 0; k < 2; ++k) {
+                loop.lo[k] = std::min(loop.lo[k], q[k]);
+                loop.hi[k] = std::max(loop.hi[k], q[k]);
+            }
+        }
+        loops.push_back(std::move(loop));
+    }
+    return loops;
+}
+
+/// Even-odd point-in-polygon test.
+inline bool inside(const std::vector<Vec2>& poly, const Vec2& p) {
+    bool in = false;
+    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+        const Vec2& a = poly[i];
+        const Vec2& b = poly[j];
+        if ((a[1] > p[1]) != (b[1] > p[1]) &&
+            p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]) {
+            in = !in;
+        }
+    }
+    return in;
+}
+
+inline double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+    const double dx = b[0] - a[0], dy = b[1] - a[1];
+    const double l2 = dx * dx + dy * dy;
+    double t = l2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2 : 0;
+    t = std::clamp(t, 0.0, 1.0);
+    return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+}
+
+/// Distance from p to a closed polygon's boundary.
+inline double boundary_distance(const std::vector<Vec2>& poly, const Vec2& p) {
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+        d = std::min(d, segment_distance(p, poly[j], poly[i]));
+    }
+    return d;
+}
+
+/// One body part in a plane: the loops that are nested in or overlap one another (a body given
+/// as a union of overlapping closed parts has such loops), with the tape around them.
+struct Section {
+    std::vector<std::size_t> loops;  // indices into the cut's loops
+    std::vector<Vec2> hull;          // convex hull, counter-clockwise in (u, w)
+    double perimeter = 0;            // tape length: the hull's perimeter
+    double area = 0;                 // hull area
+    Vec2 centroid{0, 0};             // hull centroid
+    Vec2 lo{0, 0}, hi{0, 0};         // bounding box
+};
+
+/// A plane's loops grouped into sections, each with its tape.
+struct PlaneSection {
+    Plane plane;
+    std::vector<Loop> loops;
+    std::vector<Section> sections;
+
+    /// Index of the section whose region (any of its loops) contains p, else of the section
+    /// whose hull is nearest to p; -1 when there is none.
+    int locate(const Vec2& p, double* distance = nullptr) const {
+        int best = -1;
+        double best_d = std::numeric_limits<double>::infinity();
+        for (std::size_t s = 0; s < sections.size(); ++s) {
+            const Section& sec = sections[s];
+            bool in = false;
+            if (p[0] >= sec.lo[0] && p[0] <= sec.hi[0] && p[1] >= sec.lo[1] && p[1] <= sec.hi[1]) {
+                for (std::size_t l : sec.loops) {
+                    if (inside(loops[l].uv, p)) {
+                        in = true;
+                        break;
+                    }
+                }
+            }
+            const double d = in ? 0.0 : boundary_distance(sec.hull, p);
+            if (d < best_d) {
+                best_d = d;
+                best = static_cast<int>(s);
+            }
+        }
+        if (distance) {
+            *distance = best_d;
+        }
+        return best;
+    }
+    /// 3D points of a section's tape (its hull).
+    std::vector<Vec3> tape(std::size_t s) const {
+        std::vector<Vec3> out;
+        for (const auto& q : sections[s].hull) {
+            out.push_back(plane.to3(q));
+        }
+        return out;
+    }
+};
+
+/// Convex hull (CGAL::convex_hull_2, exact predicates), its perimeter, area and centroid.
+inline void compute_tape(const std::vector<Vec2>& points, Section& s) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::vector<K::Point_2> in, out;
+    in.reserve(points.size());
+    for (const auto& p : points) {
+        in.emplace_back(p[0], p[1]);
+    }
+    CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(out));
+    s.hull.clear();
+    for (const auto& p : out) {
+        s.hull.push_back({p.x(), p.y()});
+    }
+    s.perimeter = 0;
+    s.area = 0;
+    double cx = 0, cy = 0;
+    for (std::size_t i = 0, j = s.hull.size() - 1; i < s.hull.size(); j = i++) {
+        const Vec2& a = s.hull[j];
+        const Vec2& b = s.hull[i];
+        s.perimeter += dist2d(a, b);
+        const double c = a[0] * b[1] - b[0] * a[1];
+        s.area += c;
+        cx += (a[0] + b[0]) * c;
+        cy += (a[1] + b[1]) * c;
+    }
+    s.area *= 0.5;
+    if (std::abs(s.area) > 1e-12) {
+        s.centroid = {cx / (6 * s.area), cy / (6 * s.area)};
+    } else {
+        s.centroid = {0, 0};
+        for (const auto& p : s.hull) {
+            s.centroid[0] += p[0] / static_cast<double>(s.hull.size());
+            s.centroid[1] += p[1] / static_cast<double>(s.hull.size());
+        }
+    }
+    s.area = std::abs(s.area);
+}
+
+/// Whether two loops overlap: one has a vertex inside the other (nested or crossing).
+inline bool overlap(const Loop& a, const Loop& b) {
+    if (a.hi[0] < b.lo[0] || b.hi[0] < a.lo[0] || a.hi[1] < b.lo[1] || b.hi[1] < a.lo[1]) {
+        return false;
+    }
+    for (const auto& p : a.uv) {
+        if (inside(b.uv, p)) {
+            return true;
+        }
+    }
+    for (const auto& p : b.uv) {
+        if (inside(a.uv, p)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Cuts the mesh and groups the loops into sections.
+inline PlaneSection section(const BodyMesh& m, const Plane& plane, CutWorkspace& ws) {
+    PlaneSection ps;
+    ps.plane = plane;
+    ps.loops = cut(m, plane, ws);
+    const std::size_t n = ps.loops.size();
+    std::vector<std::size_t> group(n);
+    std::iota(group.begin(), group.end(), std::size_t{0});
+    auto root = [&group](std::size_t x) {
+        while (group[x] != x) {
+            x = group[x] = group[group[x]];
+        }
+        return x;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = i + 1; j < n; ++j) {
+            if (root(i) != root(j) && overlap(ps.loops[i], ps.loops[j])) {
+                group[root(i)] = root(j);
+            }
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (root(i) != i) {
+            continue;
+        }
+        Section s;
+        std::vector<Vec2> pts;
+        for (std::size_t j = 0; j < n; ++j) {
+            if (root(j) == i) {
+                s.loops.push_back(j);
+                pts.insert(pts.end(), ps.loops[j].uv.begin(), ps.loops[j].uv.end());
+            }
+        }
+        compute_tape(pts, s);
+        s.lo = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+        s.hi = {-s.lo[0], -s.lo[1]};
+        for (const auto& q : s.hull) {
+            for (int k = 0; k < 2; ++k) {
+                s.lo[k] = std::min(s.lo[k], q[k]);
+                s.hi[k] = std::max(s.hi[k], q[k]);
+            }
+        }
+        ps.sections.push_back(std::move(s));
+    }
+    return ps;
+}
+
+}  // namespace tapeline::measurement::internal

@@ -1,0 +1,64 @@
+// One call from a body mesh to its landmarks and measurements (DESIGN.md §3: the one-shot free
+// function). Later stages (lengths along the skin, pictures, exports) take a BodyMeasurements
+// and the Body and add to `measurements`.
+#pragma once
+
+#include <tapeline/measurement/body.h>
+#include <tapeline/measurement/girths.h>
+#include <tapeline/measurement/landmarks.h>
+#include <tapeline/measurement/measurement_types.h>
+
+#include <chrono>
+
+namespace tapeline::measurement {
+
+/// Everything measured on one body; points are canonical mm (frame.to_input maps them back).
+struct BodyMeasurements {
+    BodyFrame frame;
+    LandmarkSet landmarks;
+    MeasurementSet measurements;
+    MeasureReport report;
+};
+
+/// Landmarks (with overrides) and girths of a prepared body.
+inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& options = {},
+                                     const LandmarkOverrides& overrides = {}) {
+    using Clock = std::chrono::steady_clock;
+    BodyMeasurements out;
+    out.frame = body.frame;
+    out.report.vertices = body.mesh.points.size();
+    out.report.faces = body.mesh.triangles.size();
+    out.report.components = body.mesh.components;
+    const auto t0 = Clock::now();
+    LandmarkReport lr;
+    out.landmarks = find_landmarks(body, options, overrides, &lr);
+    const auto t1 = Clock::now();
+    std::size_t cuts = 0;
+    out.measurements = measure_girths(body, out.landmarks, options, &cuts);
+    const auto t2 = Clock::now();
+    out.report.landmark_seconds = std::chrono::duration<double>(t1 - t0).count();
+    out.report.girth_seconds = std::chrono::duration<double>(t2 - t1).count();
+    out.report.sections = lr.sections + cuts;
+    out.report.warnings = lr.warnings;
+    out.report.landmarks_found = out.landmarks.available_count();
+    out.report.landmarks_missing = out.landmarks.landmarks.size() - out.report.landmarks_found;
+    return out;
+}
+
+/// Same from a CGAL triangle mesh (named parameter: vertex_point_map); the frame step's time is
+/// report.frame_seconds.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+BodyMeasurements measure_body(const TriangleMesh& tm, const BodyOptions& body_options,
+                              const MeasureOptions& options = {},
+                              const LandmarkOverrides& overrides = {},
+                              const NamedParameters& np = CGAL::parameters::default_values()) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Body body = make_body(tm, body_options, np);
+    const double frame_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    BodyMeasurements out = measure_body(body, options, overrides);
+    out.report.frame_seconds = frame_seconds;
+    return out;
+}
+
+}  // namespace tapeline::measurement

@@ -1,0 +1,202 @@
+// Landmarks, measurements, options and reports of the measurement module (DESIGN.md §3: a light
+// header without CGAL, so loggers, exporters and test facades can include it cheaply).
+//
+// Every point is in the canonical frame of body_types.h (mm, y up, z front, x to the body's left,
+// floor at y = 0); BodyFrame::to_input maps it back to the mesh's own coordinates.
+#pragma once
+
+#include <tapeline/measurement/body_types.h>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tapeline::measurement {
+
+/// found: from the geometry; overridden: from a landmark file; not_found: `reason` says why.
+enum class LandmarkStatus { found, overridden, not_found };
+
+inline const char* to_string(LandmarkStatus s) {
+    switch (s) {
+        case LandmarkStatus::found:
+            return "found";
+        case LandmarkStatus::overridden:
+            return "overridden";
+        case LandmarkStatus::not_found:
+            break;
+    }
+    return "not_found";
+}
+
+struct Landmark {
+    std::string name;
+    LandmarkStatus status = LandmarkStatus::not_found;
+    Vec3 point{0, 0, 0};  ///< canonical mm; meaningless when not_found
+    std::string reason;   ///< not_found: one line naming the landmark and why; else empty
+    /// Limb landmarks (elbows, wrists, knees, ankles): the centre of the limb's cross-section at
+    /// the landmark, which limb girths use as their axis point. Others: equal to `point`.
+    Vec3 axis_point{0, 0, 0};
+
+    bool available() const { return status != LandmarkStatus::not_found; }
+};
+
+/// Every landmark the module knows, in a fixed order (definitions in measurement/README.md).
+/// "left"/"right" are the body's own sides (left = +x in the canonical frame).
+inline const std::vector<std::string>& landmark_names() {
+    static const std::vector<std::string> names = {
+        "top_of_head",    "crotch",          "armpit_left", "armpit_right",  "cervicale",
+        "side_neck_left", "side_neck_right", "front_neck",  "acromion_left", "acromion_right",
+        "bust_left",      "bust_right",      "waist_front", "waist_back",    "hip_back",
+        "elbow_left",     "elbow_right",     "wrist_left",  "wrist_right",   "knee_left",
+        "knee_right",     "ankle_left",      "ankle_right"};
+    return names;
+}
+
+/// One Landmark per landmark_names() entry, in that order.
+struct LandmarkSet {
+    std::vector<Landmark> landmarks;
+
+    LandmarkSet() {
+        for (const auto& n : landmark_names()) {
+            landmarks.push_back(
+                Landmark{n, LandmarkStatus::not_found, {0, 0, 0}, n + ": not set", {0, 0, 0}});
+        }
+    }
+    const Landmark* find(const std::string& name) const {
+        for (const auto& l : landmarks) {
+            if (l.name == name) {
+                return &l;
+            }
+        }
+        return nullptr;
+    }
+    Landmark* find(const std::string& name) {
+        for (auto& l : landmarks) {
+            if (l.name == name) {
+                return &l;
+            }
+        }
+        return nullptr;
+    }
+    /// The point of an available landmark, nullopt otherwise (also for unknown names).
+    std::optional<Vec3> point(const std::string& name) const {
+        const Landmark* l = find(name);
+        return l && l->available() ? std::optional<Vec3>(l->point) : std::nullopt;
+    }
+    std::size_t available_count() const {
+        std::size_t n = 0;
+        for (const auto& l : landmarks) {
+            n += l.available() ? 1 : 0;
+        }
+        return n;
+    }
+};
+
+enum class MeasurementKind { girth, length, height, angle };
+
+inline const char* to_string(MeasurementKind k) {
+    switch (k) {
+        case MeasurementKind::girth:
+            return "girth";
+        case MeasurementKind::length:
+            return "length";
+        case MeasurementKind::height:
+            return "height";
+        case MeasurementKind::angle:
+            break;
+    }
+    return "angle";
+}
+
+/// One measurement with where it was taken.
+struct Measurement {
+    std::string name;  ///< our identifier, snake_case: "waist_girth", "hip_girth", ...
+    MeasurementKind kind = MeasurementKind::girth;
+    double value = 0;  ///< mm (angle: degrees)
+    /// The ISO 8559-1:2017 clause, named by its title ("waist girth"); empty when ISO 8559-1 has
+    /// no such item.
+    std::string iso_clause;
+    std::string freesewing;  ///< FreeSewing measurement name ("waist"); empty when none
+    /// Canonical mm. Girths: the tape loop (the convex hull of the section, in order, closed
+    /// implicitly). Lengths: the path from start to end. Heights: floor point, then top point.
+    std::vector<Vec3> points;
+    bool closed = false;                 ///< points form a loop
+    Vec3 plane_point{0, 0, 0};           ///< girths: a point of the tape's plane
+    Vec3 plane_normal{0, 1, 0};          ///< girths: the plane's unit normal
+    std::vector<std::string> landmarks;  ///< the landmarks it depends on
+};
+
+/// A measurement that could not be taken, with a one-line reason naming it and its cause.
+struct MissingMeasurement {
+    std::string name;
+    std::string reason;
+};
+
+/// Named measurements of one body, in the order they were taken.
+struct MeasurementSet {
+    std::vector<Measurement> measurements;
+    std::vector<MissingMeasurement> missing;
+
+    const Measurement* find(const std::string& name) const {
+        for (const auto& m : measurements) {
+            if (m.name == name) {
+                return &m;
+            }
+        }
+        return nullptr;
+    }
+    std::optional<double> value(const std::string& name) const {
+        const Measurement* m = find(name);
+        return m ? std::optional<double>(m->value) : std::nullopt;
+    }
+    /// Adds or replaces (by name); a measurement replaces a missing entry of the same name.
+    void add(Measurement m) {
+        remove(m.name);
+        measurements.push_back(std::move(m));
+    }
+    void add_missing(const std::string& name, const std::string& reason) {
+        remove(name);
+        missing.push_back({name, reason});
+    }
+
+private:
+    void remove(const std::string& name) {
+        for (auto it = measurements.begin(); it != measurements.end(); ++it) {
+            if (it->name == name) {
+                measurements.erase(it);
+                break;
+            }
+        }
+        for (auto it = missing.begin(); it != missing.end(); ++it) {
+            if (it->name == name) {
+                missing.erase(it);
+                break;
+            }
+        }
+    }
+};
+
+/// How landmarks are searched and girth levels optimised.
+struct MeasureOptions {
+    /// Distance between the horizontal sections of the landmark scan, mm; 0: height / 400.
+    double scan_step = 0;
+    /// Levels found by bisection or golden-section search are located to within this, mm.
+    double level_tolerance = 0.1;
+    /// The neck girth plane may tilt forward or backward by up to this (the neck leans forward;
+    /// ISO takes the girth perpendicular to the neck's axis).
+    double max_neck_tilt_degrees = 30;
+};
+
+/// What one measuring run did. Times are wall-clock seconds.
+struct MeasureReport {
+    std::size_t vertices = 0, faces = 0, components = 0;
+    std::size_t sections = 0;     ///< plane sections cut (scan, refinements, girths)
+    double frame_seconds = 0;     ///< mesh to canonical frame and adjacency
+    double landmark_seconds = 0;  ///< scan and landmark search
+    double girth_seconds = 0;     ///< girth levels, sections and hulls
+    std::size_t landmarks_found = 0, landmarks_missing = 0;
+    std::vector<std::string> warnings;  ///< one line each (landmarks not found, ...)
+};
+
+}  // namespace tapeline::measurement

@@ -1,0 +1,207 @@
+// The synthetic body (synthetic_body.h) has exactly known girths (ellipse perimeters) and
+// landmark levels. Tolerances are ISO 20685-1's for scan-derived measurements: 4 mm for small
+// girths and heights, 9 mm for bust, waist and hip (and the other torso girths); the mesh itself
+// misses the smooth girth by at most P·π²/(6n²) (0.9 mm for the 860 mm bust with n = 40
+// vertices around), well inside them.
+#include <tapeline_test/measurement.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace {
+
+using namespace tapeline_test::measurement;
+
+struct Resolution {
+    const char* name;
+    SyntheticBodyOptions options;
+};
+
+const Resolution kResolutions[] = {{"coarse", {40, 10, 40}}, {"fine", {96, 4, 40}}};
+
+class SyntheticBodyTest : public ::testing::TestWithParam<Resolution> {};
+
+double level(const Result& r, const std::string& name) {
+    const Measurement* m = r.measurements.find(name);
+    return m ? m->plane_point[1] : NAN;
+}
+
+TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
+    const SyntheticBody body(GetParam().options);
+    const Result r = measure_synthetic(GetParam().options);
+    for (const auto& l : r.landmarks.landmarks) {
+        EXPECT_TRUE(l.available()) << l.reason;
+    }
+    const double step = SyntheticBody::kHeight / 400;  // the scan's spacing
+    EXPECT_NEAR(r.landmarks.point("top_of_head")->at(1), SyntheticBody::kHeight, 1e-9);
+    EXPECT_NEAR(r.landmarks.point("crotch")->at(1), SyntheticBody::kCrotch, 0.5);
+    const double armpit = body.armpit_height();
+    EXPECT_NEAR(r.landmarks.point("armpit_left")->at(1), armpit, 2.0);
+    EXPECT_NEAR(r.landmarks.point("armpit_right")->at(1), armpit, 2.0);
+    // Flat extrema (zero slope by construction) make levels ill-conditioned; girths are not.
+    EXPECT_NEAR(r.landmarks.point("waist_front")->at(1), SyntheticBody::kWaist, 6.0);
+    EXPECT_NEAR(r.landmarks.point("hip_back")->at(1), SyntheticBody::kHip, 4.0);
+    EXPECT_NEAR(r.landmarks.point("hip_back")->at(2), -body.torso_depth(SyntheticBody::kHip), 0.5);
+    EXPECT_NEAR(level(r, "bust_girth"), SyntheticBody::kBust, 9.0);
+    // Side neck points: the corner of the flat shoulder and the neck, within one scan step.
+    EXPECT_NEAR(r.landmarks.point("side_neck_left")->at(1), SyntheticBody::kShoulder, step + 0.5);
+    EXPECT_NEAR(r.landmarks.point("front_neck")->at(1), SyntheticBody::kShoulder, step + 0.5);
+    for (const char* side : {"left", "right"}) {
+        const std::string s = side;
+        const int sign = s == "left" ? 1 : -1;
+        EXPECT_NEAR(r.landmarks.find("knee_" + s)->axis_point[1], SyntheticBody::kKnee, 4.0);
+        EXPECT_NEAR(r.landmarks.find("ankle_" + s)->axis_point[1], SyntheticBody::kAnkle, 4.0);
+        EXPECT_NEAR(r.landmarks.find("knee_" + s)->axis_point[0], sign * SyntheticBody::kLegX, 0.5);
+        // Elbow and wrist along the arm's axis (the profile is sampled every height/340 mm).
+        const Vec3 e = r.landmarks.find("elbow_" + s)->axis_point;
+        const Vec3 w = r.landmarks.find("wrist_" + s)->axis_point;
+        EXPECT_NEAR(body.arm_parameter(sign, e), SyntheticBody::kElbowT, 6.0) << s;
+        EXPECT_NEAR(body.arm_parameter(sign, w), SyntheticBody::kWristT, 6.0) << s;
+    }
+}
+
+TEST_P(SyntheticBodyTest, GirthsWithinIsoToleranceOfTheEllipsePerimeters) {
+    const SyntheticBody body(GetParam().options);
+    const Result r = measure_synthetic(GetParam().options);
+    struct Check {
+        std::string name;
+        double truth, tolerance;
+    };
+    auto plane_y = [&](const std::string& n) { return level(r, n); };
+    auto arm_truth = [&](const std::string& n, int sign) {
+        return body.arm_girth(body.arm_parameter(sign, r.measurements.find(n)->plane_point));
+    };
+    std::vector<Check> checks = {
+        {"head_girth", body.head_girth(SyntheticBody::kHead), 4},
+        {"neck_girth", body.neck_girth(SyntheticBody::kNeck), 4},
+        {"neck_base_girth", body.neck_girth(plane_y("neck_base_girth")), 4},
+        {"bust_girth", body.torso_girth(SyntheticBody::kBust), 9},
+        {"high_bust_girth", body.torso_girth(plane_y("high_bust_girth")), 9},
+        {"underbust_girth", body.torso_girth(plane_y("underbust_girth")), 9},
+        {"waist_girth", body.torso_girth(SyntheticBody::kWaist), 9},
+        {"high_hip_girth", body.torso_girth(plane_y("high_hip_girth")), 9},
+        {"hip_girth", body.torso_girth(SyntheticBody::kHip), 9},
+    };
+    for (const char* side : {"left", "right"}) {
+        const std::string s = std::string("_") + side;
+        const int sign = s == "_left" ? 1 : -1;
+        for (const char* leg : {"thigh_girth", "mid_thigh_girth", "knee_girth", "calf_girth"}) {
+            checks.push_back({leg + s, body.leg_girth(plane_y(leg + s)), 4});
+        }
+        checks.push_back({"calf_girth" + s + "@max", body.leg_girth(SyntheticBody::kCalf), 4});
+        checks.push_back({"ankle_girth" + s, body.leg_girth(SyntheticBody::kAnkle), 4});
+        for (const char* arm : {"upper_arm_girth", "elbow_girth"}) {
+            checks.push_back({arm + s, arm_truth(arm + s, sign), 4});
+        }
+        checks.push_back({"wrist_girth" + s, body.arm_girth(SyntheticBody::kWristT), 4});
+    }
+    std::printf("%s: %zu vertices, %.3f s\n", GetParam().name, r.report.vertices, r.seconds);
+    std::printf("  %-26s %10s %10s %8s\n", "girth", "measured", "exact", "error");
+    for (const auto& c : checks) {
+        const std::string name = c.name.substr(0, c.name.find('@'));
+        const Measurement* m = r.measurements.find(name);
+        ASSERT_NE(m, nullptr) << name;
+        std::printf("  %-26s %10.2f %10.2f %+8.2f\n", c.name.c_str(), m->value, c.truth,
+                    m->value - c.truth);
+        EXPECT_NEAR(m->value, c.truth, c.tolerance) << c.name;
+    }
+    EXPECT_NEAR(r.measurements.value("stature").value(), SyntheticBody::kHeight, 1e-9);
+    EXPECT_EQ(r.measurements.missing.size(), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Resolutions, SyntheticBodyTest, ::testing::ValuesIn(kResolutions),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SyntheticBody, EllipsePerimeterMatchesTheCircleAndRamanujansBound) {
+    EXPECT_NEAR(ellipse_perimeter(10, 10), 20 * M_PI, 1e-12);
+    // Ramanujan's second approximation is low by O(h^5): within 1e-9 relative for b/a = 0.7.
+    const double a = 160, b = 112, h = std::pow((a - b) / (a + b), 2);
+    const double ramanujan = M_PI * (a + b) * (1 + 3 * h / (10 + std::sqrt(4 - 3 * h)));
+    EXPECT_NEAR(ellipse_perimeter(a, b), ramanujan, 1e-9 * ramanujan);
+    EXPECT_GE(ellipse_perimeter(a, b), ramanujan);
+    EXPECT_NEAR(ellipse_perimeter(1, 0), 4.0, 1e-12);
+}
+
+TEST(SyntheticBody, OurPlaneSectionsMatchCgalsSlicer) {
+    const SyntheticBodyOptions coarse{40, 10, 40};
+    const std::vector<std::pair<Vec3, Vec3>> planes = {
+        {{0, 1000, 0}, {0, 1, 0}},          {{0, 700, 0}, {0, 1, 0}}, {{0, 1300, 0}, {0.3, 1, 0.2}},
+        {{200, 1100, 0}, {0.64, -0.77, 0}}, {{0, 880, 0}, {0, 1, 0}}, {{90, 460, 0}, {1, 0, 0}},
+    };
+    for (const auto& [p, n] : planes) {
+        const SliceComparison c = compare_with_cgal_slicer(coarse, p, n);
+        EXPECT_EQ(c.loops, c.cgal_polylines) << p[1];
+        EXPECT_TRUE(c.cgal_all_closed);
+        EXPECT_NEAR(c.length, c.cgal_length, 1e-9 * c.cgal_length) << p[1];
+    }
+}
+
+TEST(SyntheticBody, SameResultsOnSurfaceMeshAndPolyhedron) {
+    const SyntheticBody body({40, 10, 40});
+    BodyOptions o;
+    o.unit = LengthUnit::mm;
+    const Result a = measure_mesh(body.points(), body.triangles(), o, MeshKind::surface_mesh);
+    const Result b = measure_mesh(body.points(), body.triangles(), o, MeshKind::polyhedron);
+    ASSERT_EQ(a.measurements.measurements.size(), b.measurements.measurements.size());
+    for (const auto& m : a.measurements.measurements) {
+        ASSERT_TRUE(b.measurements.value(m.name)) << m.name;
+        EXPECT_NEAR(m.value, *b.measurements.value(m.name), 1e-9) << m.name;
+    }
+}
+
+TEST(SyntheticBody, UnitsAndAxesOfTheInputDoNotChangeTheMeasurements) {
+    // The same body in decimetres with +Z up and -X front.
+    const SyntheticBody body({40, 10, 40});
+    std::vector<Vec3> pts;
+    for (const auto& p : body.points()) {
+        // canonical (x left, y up, z front) -> input: up = +Z, front = -X, so left = up x front
+        // = +Z x -X = -Y.
+        pts.push_back({-p[2] / 100, -p[0] / 100, p[1] / 100});
+    }
+    BodyOptions o;  // unit inferred: 17.2 dm
+    o.up = Axis::parse("+Z", "up");
+    o.front = Axis::parse("-X", "front");
+    const Result r = measure_mesh(pts, body.triangles(), o);
+    EXPECT_EQ(r.frame.unit, LengthUnit::dm);
+    EXPECT_TRUE(r.frame.unit_inferred);
+    const Result ref = measure_synthetic({40, 10, 40});
+    for (const auto& m : ref.measurements.measurements) {
+        ASSERT_TRUE(r.measurements.value(m.name)) << m.name;
+        EXPECT_NEAR(*r.measurements.value(m.name), m.value, 1e-6 * m.value + 1e-6) << m.name;
+    }
+    // Landmarks map back to the input's coordinates.
+    const Vec3 crotch = r.frame.to_input(*r.landmarks.point("crotch"));
+    EXPECT_NEAR(crotch[2], SyntheticBody::kCrotch / 100, 0.01);
+}
+
+TEST(SyntheticBody, FusedArmsLeaveArmLandmarksMissingAndTheRestMeasured) {
+    // Arms 5 degrees from the body overlap the torso down to the hips: no armpit.
+    const Result r = measure_synthetic({40, 10, 5});
+    const Landmark* armpit = r.landmarks.find("armpit_left");
+    EXPECT_FALSE(armpit->available());
+    EXPECT_NE(armpit->reason.find("armpit_left"), std::string::npos) << armpit->reason;
+    ASSERT_FALSE(r.measurements.value("wrist_girth_left"));
+    bool named = false;
+    for (const auto& m : r.measurements.missing) {
+        named = named ||
+                (m.name == "wrist_girth_left" && m.reason.find("armpit_left") != std::string::npos);
+    }
+    EXPECT_TRUE(named);
+    for (const char* g : {"waist_girth", "hip_girth", "neck_girth", "thigh_girth", "knee_girth"}) {
+        EXPECT_TRUE(r.measurements.value(g)) << g;
+    }
+}
+
+TEST(SyntheticBody, TPoseArmpitsAreReportedAsNotImplemented) {
+    BodyOptions o;
+    o.pose = Pose::t_pose;
+    const Result r = measure_synthetic({40, 10, 90}, o);
+    EXPECT_FALSE(r.landmarks.find("armpit_left")->available());
+    EXPECT_NE(r.landmarks.find("armpit_left")->reason.find("T-pose"), std::string::npos);
+    EXPECT_TRUE(r.measurements.value("waist_girth"));
+}
+
+}  // namespace

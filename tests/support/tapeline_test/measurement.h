@@ -1,0 +1,58 @@
+// Test facade for the measurement module (DESIGN.md §5): plain functions compiled once in
+// tapeline_test_support_measurement (support/measurement_*.cpp); test files include gtest, this
+// header and, for analytic truth, <tapeline/measurement/synthetic_body.h> (no CGAL).
+#pragma once
+
+#include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/measurement_types.h>
+#include <tapeline/measurement/synthetic_body.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tapeline_test::measurement {
+
+using namespace tapeline::measurement;
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+/// What measure_body returned, in plain types.
+struct Result {
+    BodyFrame frame;
+    LandmarkSet landmarks;
+    MeasurementSet measurements;
+    MeasureReport report;
+    double seconds = 0;  ///< wall clock of the whole call (load excluded)
+};
+
+enum class MeshKind { surface_mesh, polyhedron };
+
+/// read_triangle_mesh<Surface_mesh<Epick>> then measure_body; `overrides` is a landmark file
+/// path or empty.
+Result measure_file(const std::string& path, const BodyOptions& options,
+                    const std::string& overrides = "", const MeasureOptions& measure = {});
+
+/// A CGAL mesh built directly from points and triangles (no validation or repair, so bad
+/// coordinates reach the measurement module), then measure_body on it.
+Result measure_mesh(const std::vector<Vec3>& points, const Triangles& triangles,
+                    const BodyOptions& options, MeshKind kind = MeshKind::surface_mesh,
+                    const std::string& overrides = "");
+
+/// The synthetic body measured through the plain make_body overload.
+Result measure_synthetic(const SyntheticBodyOptions& synthetic, const BodyOptions& options = {},
+                         const std::string& overrides = "");
+
+/// One plane section of the synthetic body by our cut and by CGAL::Polygon_mesh_slicer.
+struct SliceComparison {
+    std::size_t loops = 0, cgal_polylines = 0;
+    double length = 0, cgal_length = 0;  ///< total polyline lengths
+    bool cgal_all_closed = true;
+};
+SliceComparison compare_with_cgal_slicer(const SyntheticBodyOptions& synthetic, const Vec3& point,
+                                         const Vec3& normal);
+
+/// parse_landmark_overrides on a string (throws as the library does).
+std::size_t parse_overrides(const std::string& json);
+
+}  // namespace tapeline_test::measurement
