@@ -5,6 +5,7 @@
 // failure leaves no half-written picture.
 #pragma once
 
+#include <tapeline/core/xml_escape.h>
 #include <tapeline/geodesic/unfold_types.h>
 
 #include <algorithm>
@@ -19,26 +20,7 @@ namespace tapeline::geodesic {
 namespace internal {
 
 inline std::string svg_escape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
+    return xml_escape(text);
 }
 
 inline std::string svg_number(double v) {

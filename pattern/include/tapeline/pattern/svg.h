@@ -9,6 +9,7 @@
 #pragma once
 
 #include <tapeline/core/atomic_write.h>
+#include <tapeline/core/xml_escape.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <algorithm>
@@ -41,30 +42,8 @@ struct SvgReport {
 
 namespace internal {
 
-inline std::string svg_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&apos;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
+inline std::string svg_escape(const std::string& text) {
+    return xml_escape(text);
 }
 
 inline std::string num(double v) {
