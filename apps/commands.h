@@ -11,4 +11,5 @@ void register_geodesic_commands(CLI::App& app);
 void register_bench_commands(CLI::App& app);
 void register_pattern_commands(CLI::App& app);
 void register_grade_commands(CLI::App& app);
+void register_measure_commands(CLI::App& app);
 }  // namespace tapeline::app

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     tapeline::app::register_bench_commands(app);
     tapeline::app::register_pattern_commands(app);
     tapeline::app::register_grade_commands(app);
+    tapeline::app::register_measure_commands(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -28,6 +28,10 @@ rm -f "$out/patterns.sqlite"*
 "$bin" pattern export shirt_mean --db "$out/patterns.sqlite" --svg "$out/shirt.svg" --png "$out/shirt.png" \
     --dxf "$out/shirt.dxf" --mesh "$out/shirt_mesh.obj"
 
+echo "== body measurement: the bundled MakeHuman body (CC0, decimetres)"
+"$bin" measure "$root/data/bodies/mh_female_average.obj" --units dm --out "$out/body_measurements.json" \
+    --vit "$out/body_measurements.vit"
+
 echo "== side-by-side benchmark on small analytic surfaces"
 "$bin" bench geodesic --surface icosphere:3 --surface ellipsoid:1,1,0.5:3:0.2 --surface icosphere:4 \
     --methods exact-mmp,exact-cgal,heat,heat-idt,dijkstra,gcf-window:4,gcf-window:8 \
@@ -39,4 +43,6 @@ cat "$out/bench/table.md"
 echo
 echo "Open the coloured distance fields $out/spot_*.ply in MeshLab or Blender;"
 echo "the benchmark plots are in $out/bench/; the shirt pattern is drawn in $out/shirt.svg and .png;"
-echo "the curvature-flow path's unfolded strip is $out/spot_gcf_unfold.svg."
+echo "the curvature-flow path's unfolded strip is $out/spot_gcf_unfold.svg; the body's measurements"
+echo "(girths with their tape loops, lengths with their paths, landmarks) are in"
+echo "$out/body_measurements.json and, for Seamly2D, $out/body_measurements.vit."

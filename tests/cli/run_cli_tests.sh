@@ -27,7 +27,8 @@ expect_ok() {
 spot="$root/data/spot.obj"
 
 # --- help ---------------------------------------------------------------------------------------
-for sub in "" "mesh generate" "mesh check" "geodesic distances" "geodesic path" "bench geodesic"; do
+for sub in "" "mesh generate" "mesh check" "geodesic distances" "geodesic path" "bench geodesic" \
+           "measure"; do
   # shellcheck disable=SC2086
   if "$bin" $sub --help >help.txt 2>&1 && grep -q "Usage" help.txt; then ok "help: tapeline $sub"
   else fail "help: tapeline $sub"; fi
@@ -360,6 +361,91 @@ echo '{"units": "cubits", "chest": 40}' > unit.json
 expect_fail "unknown unit" "unknown unit 'cubits'" "$bin" grade "$fs" --from base36.json --to unit.json --out n.json
 expect_fail "unknown output extension" "\.xyz" "$bin" grade "$fs" --from base36.json --to target42.json --out n.xyz
 [ ! -e n.json ] && ok "rejected grades wrote nothing" || fail "a rejected grade wrote n.json"
+
+# --- measure ------------------------------------------------------------------------------------
+# A closed octahedron 40 units tall: no unit makes it a human height, so --units is required.
+printf 'v 3 20 0\nv -3 20 0\nv 0 20 3\nv 0 20 -3\nv 0 40 0\nv 0 0 0\n' > tall.obj
+printf 'f 5 3 1\nf 5 2 3\nf 5 4 2\nf 5 1 4\nf 6 1 3\nf 6 3 2\nf 6 2 4\nf 6 4 1\n' >> tall.obj
+expect_fail "measure: units not inferable" "tall.obj.*cannot be inferred.*--units" \
+  "$bin" measure tall.obj --out mx.json
+expect_fail "measure: unknown unit" "--units.*unknown length unit 'inch'" \
+  "$bin" measure tall.obj --units inch --out mx.json
+expect_fail "measure: unwritable output" "no_such_dir" \
+  "$bin" measure tall.obj --units cm --out no_such_dir/mx.json
+expect_fail "measure: --out must be JSON" "--out.*\.json" "$bin" measure tall.obj --units cm \
+  --out mx.txt
+expect_fail "measure: --vit must be .vit" "--vit.*\.vit" "$bin" measure tall.obj --units cm \
+  --out mx.json --vit mx.xml
+echo '{"landmarks": {"crotch": [0, 1' > bad_landmarks.json
+expect_fail "measure: malformed landmarks file" "bad_landmarks.json" \
+  "$bin" measure tall.obj --units cm --out mx.json --landmarks bad_landmarks.json
+echo '{"landmarks": {"navel": [0, 1, 0]}}' > unknown_landmark.json
+expect_fail "measure: unknown landmark" "unknown landmark 'navel'" \
+  "$bin" measure tall.obj --units cm --out mx.json --landmarks unknown_landmark.json
+expect_fail "measure: bad pose" "--pose.*'Y'" "$bin" measure tall.obj --units cm --pose Y \
+  --out mx.json
+if ls mx.* no_such_dir >/dev/null 2>&1 || ls ./*.tmp-* >/dev/null 2>&1; then
+  fail "a rejected measure wrote a file: $(ls mx.* ./*.tmp-* 2>/dev/null)"
+else ok "rejected measures wrote nothing"; fi
+bodies="$root/../shared/data/bodies"
+if [ -f "$bodies/mh_female_average.obj" ] && [ -f "$bodies/measurements.json" ]; then
+  expect_ok "measure a MakeHuman body (dm)" "$bin" measure "$bodies/mh_female_average.obj" \
+    --units dm --out body.json --vit body.vit
+  if $py - "$bodies/measurements.json" <<'PY'
+import json, sys
+j = json.load(open("body.json"))
+truth = json.load(open(sys.argv[1]))["bodies"]["mh_female_average"]
+keys = ["format", "body", "frame", "measurements", "missing", "landmarks", "timings_seconds"]
+assert set(keys) <= set(j), list(j)
+assert j["frame"]["unit"] == "dm" and j["frame"]["unit_inferred"] is False
+m = {e["name"]: e for e in j["measurements"]}
+for e in j["measurements"]:
+    keys = {"name", "kind", "value_mm", "iso_clause", "freesewing_name", "points", "closed"}
+    assert keys <= set(e), e["name"]
+    assert e["points"], e["name"]
+chest = m["bust_girth"]
+assert chest["freesewing_name"] == "chest" and chest["kind"] == "girth" and chest["closed"]
+assert 700 < chest["value_mm"] < 1300, chest["value_mm"]
+assert 550 < m["waist_girth"]["value_mm"] < chest["value_mm"] + 100, m["waist_girth"]["value_mm"]
+assert 800 < m["hip_girth"]["value_mm"] < 1400, m["hip_girth"]["value_mm"]
+height = m["stature"]["value_mm"]
+assert abs(height - truth["height_cm"] * 10) <= 1.0, (height, truth["height_cm"])
+lm = {l["name"]: l for l in j["landmarks"]}
+assert len(lm) == 23 and all(l["status"] == "found" for l in lm.values()), \
+    [l for l in lm.values() if l["status"] != "found"]
+assert j["missing"] == [], j["missing"]
+assert j["timings_seconds"]["total"] > 0 and "lengths" in j["timings_seconds"]
+fs = {e["freesewing_name"]: e for e in j["measurements"] if e["kind"] == "length"}
+for n in ["shoulderToShoulder", "hpsToWaistBack", "hpsToWaistFront", "shoulderToElbow",
+          "shoulderToWrist", "inseam", "waistToFloor"]:
+    assert n in fs and len(fs[n]) and len(fs[n]["points"]) >= 2 and not fs[n]["closed"], n
+# A tape down the inside of the leg is at least the crotch height; the outseam is longer.
+crotch_y = [l for l in j["landmarks"] if l["name"] == "crotch"][0]["point"][1]
+assert fs["inseam"]["value_mm"] >= 0.99 * crotch_y, (fs["inseam"]["value_mm"], crotch_y)
+assert fs["waistToFloor"]["value_mm"] > fs["inseam"]["value_mm"]
+PY
+  then ok "measure: JSON keys and plausible values"
+  else fail "measure: JSON $(head -c 300 body.json)"; fi
+  if grep -q '<m name="bust_circ" value=' body.vit && grep -q '<unit>mm</unit>' body.vit &&
+     grep -q '<m name="leg_crotch_to_floor" value=' body.vit; then
+    ok "measure: .vit has bust_circ in mm"; else fail "measure: .vit $(head -c 300 body.vit)"; fi
+  # An override in the mesh's own coordinates: the found crotch moved 1 cm (0.1 dm) down.
+  $py - <<'PY' > override.json
+import json
+j = json.load(open("body.json"))
+crotch = [l for l in j["landmarks"] if l["name"] == "crotch"][0]["point_input"]
+moved = [crotch[0], crotch[1] - 0.1, crotch[2]]
+print(json.dumps({"frame": "input", "landmarks": {"crotch": moved}}))
+PY
+  expect_ok "measure with a landmark override" "$bin" measure "$bodies/mh_female_average.obj" \
+    --units dm --out over.json --landmarks override.json
+  if $py -c 'import json, sys
+l = {e["name"]: e for e in json.load(open("over.json"))["landmarks"]}
+sys.exit(l["crotch"]["status"] != "overridden")'
+  then ok "measure: overridden landmark reported"; else fail "measure: override not reported"; fi
+else
+  echo "skip - measure on MakeHuman bodies ($bodies absent)"
+fi
 
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]

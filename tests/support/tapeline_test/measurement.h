@@ -55,4 +55,21 @@ SliceComparison compare_with_cgal_slicer(const SyntheticBodyOptions& synthetic, 
 /// parse_landmark_overrides on a string (throws as the library does).
 std::size_t parse_overrides(const std::string& json);
 
+/// One geodesic segment of a length along the skin, measured twice: by the curvature flow (the
+/// on-mesh path the measurement uses) and by exact MMP between the same surface points; with the
+/// straight distance between them. Millimetres.
+struct SegmentCheck {
+    std::string measurement;
+    double gcf = 0, exact = 0, euclidean = 0;
+};
+
+/// measure_file, then the lengths along the skin (lengths.h) added to result.measurements, and
+/// every segment of every length checked against exact MMP.
+struct LengthsResult {
+    Result result;
+    std::vector<SegmentCheck> segments;
+    double length_seconds = 0;  ///< measure_skin_lengths alone
+};
+LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptions& options);
+
 }  // namespace tapeline_test::measurement

@@ -1,0 +1,244 @@
+// `tapeline measure BODY --units dm --out m.json [--vit m.vit]`: landmarks, tape girths and lengths
+// along the skin of a body mesh (measurement module), written as JSON (mm, ISO 8559-1 and
+// FreeSewing names, the tape loops and paths) and optionally as a Seamly2D individual measurement
+// file.
+#include "commands.h"
+
+#include <tapeline/core/atomic_write.h>
+#include <tapeline/core/errors.h>
+#include <tapeline/core/mesh_io.h>
+#include <tapeline/measurement/lengths.h>
+#include <tapeline/measurement/measure.h>
+#include <tapeline/measurement/seamly_vit.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace tapeline::app {
+namespace {
+
+namespace tm = tapeline::measurement;
+using Json = nlohmann::ordered_json;
+using MeasureMesh =
+    CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+
+struct MeasureArgs {
+    std::string body;
+    std::string units;
+    std::string out;
+    std::string up = "+Y";
+    std::string front = "+Z";
+    std::string pose = "A";
+    std::string landmarks;
+    std::string vit;
+};
+
+std::string lower_extension(const std::string& path) {
+    std::string e = std::filesystem::path(path).extension().string();
+    for (char& c : e) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return e;
+}
+
+/// Refuses an output path whose extension is wrong or whose directory cannot be written, before
+/// any work is done (so a run never writes one output and then fails on the next).
+void check_output(const std::string& path, const std::string& ext, const std::string& option) {
+    if (lower_extension(path) != ext) {
+        throw InvalidInput(option + ": " + path + ": expected a " + ext + " file");
+    }
+    std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    if (dir.empty()) {
+        dir = ".";
+    }
+    std::error_code ec;
+    if (!std::filesystem::is_directory(dir, ec)) {
+        throw InvalidInput(option + ": " + path + ": directory " + dir.string() +
+                           " does not exist");
+    }
+    if (::access(dir.c_str(), W_OK) != 0) {
+        throw InvalidInput(option + ": " + path + ": cannot write in directory " + dir.string());
+    }
+}
+
+Json vec(const tm::Vec3& p) {
+    // 0.001 mm is far below any mesh's resolution; rounding keeps the file readable.
+    Json a = Json::array();
+    for (double x : p) {
+        a.push_back(std::round(x * 1000.0) / 1000.0);
+    }
+    return a;
+}
+
+Json frame_json(const tm::BodyFrame& f) {
+    Json j;
+    j["unit"] = tm::to_string(f.unit);
+    j["unit_inferred"] = f.unit_inferred;
+    j["up"] = f.up.to_string();
+    j["front"] = f.front.to_string();
+    j["pose"] = tm::to_string(f.pose);
+    j["millimetres_per_unit"] = f.scale;
+    j["height_mm"] = f.height;
+    j["floor_mm"] = f.floor;
+    j["points"] =
+        "canonical frame: millimetres, x to the body's left, y up, z to the front, floor at y = 0";
+    Json rows = Json::array();
+    for (const auto& r : f.rows) {
+        rows.push_back(vec(r));
+    }
+    j["canonical_axes_in_input"] = rows;
+    return j;
+}
+
+Json landmark_json(const tm::Landmark& l, const tm::BodyFrame& f) {
+    Json j;
+    j["name"] = l.name;
+    j["status"] = tm::to_string(l.status);
+    if (l.available()) {
+        j["point"] = vec(l.point);
+        j["point_input"] = vec(f.to_input(l.point));
+    } else {
+        j["point"] = nullptr;
+        j["reason"] = l.reason;
+    }
+    return j;
+}
+
+Json measurement_json(const tm::Measurement& m) {
+    Json j;
+    j["name"] = m.name;
+    j["kind"] = tm::to_string(m.kind);
+    // `tapeline grade` reads value_mm and both names; an angle has no millimetre value.
+    const bool angle = m.kind == tm::MeasurementKind::angle;
+    j["value_mm"] = angle ? Json(nullptr) : Json(std::round(m.value * 100.0) / 100.0);
+    if (angle) {
+        j["value_degrees"] = std::round(m.value * 100.0) / 100.0;
+    }
+    j["iso_clause"] = m.iso_clause.empty() ? Json(nullptr) : Json(m.iso_clause);
+    j["freesewing_name"] = m.freesewing.empty() ? Json(nullptr) : Json(m.freesewing);
+    const std::string seamly = tm::seamly_name(m.name);
+    j["seamly2d_name"] = seamly.empty() ? "@" + m.name : seamly;
+    j["landmarks"] = m.landmarks;
+    j["closed"] = m.closed;
+    if (m.kind == tm::MeasurementKind::girth) {
+        j["plane"] = {{"point", vec(m.plane_point)}, {"normal", vec(m.plane_normal)}};
+    }
+    Json pts = Json::array();
+    for (const auto& p : m.points) {
+        pts.push_back(vec(p));
+    }
+    j["points"] = pts;
+    return j;
+}
+
+void run_measure(const MeasureArgs& a) {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    tm::BodyOptions body;
+    body.name = a.body;
+    if (!a.units.empty()) {
+        body.unit = tm::parse_length_unit(a.units, "--units");
+    }
+    body.up = tm::Axis::parse(a.up, "--up");
+    body.front = tm::Axis::parse(a.front, "--front");
+    body.pose = tm::parse_pose(a.pose, "--pose");
+    check_output(a.out, ".json", "--out");
+    if (!a.vit.empty()) {
+        check_output(a.vit, ".vit", "--vit");
+    }
+    const tm::LandmarkOverrides overrides =
+        a.landmarks.empty() ? tm::LandmarkOverrides{} : tm::read_landmark_overrides(a.landmarks);
+
+    const auto loaded = read_triangle_mesh<MeasureMesh>(a.body);
+    const auto t1 = Clock::now();
+    tm::BodyMeasurements r = tm::measure_body(loaded.mesh, body, {}, overrides);
+    const double length_seconds =
+        tm::measure_skin_lengths(loaded.mesh, r.frame, r.landmarks, r.measurements);
+    const auto t2 = Clock::now();
+
+    Json j;
+    j["format"] = "tapeline-measurements";
+    j["version"] = 1;
+    j["body"] = a.body;
+    j["frame"] = frame_json(r.frame);
+    Json ms = Json::array();
+    for (const auto& m : r.measurements.measurements) {
+        ms.push_back(measurement_json(m));
+    }
+    j["measurements"] = ms;
+    Json missing = Json::array();
+    for (const auto& m : r.measurements.missing) {
+        missing.push_back({{"name", m.name}, {"reason", m.reason}});
+    }
+    j["missing"] = missing;
+    Json ls = Json::array();
+    for (const auto& l : r.landmarks.landmarks) {
+        ls.push_back(landmark_json(l, r.frame));
+    }
+    j["landmarks"] = ls;
+    j["report"] = {{"vertices", r.report.vertices},
+                   {"faces", r.report.faces},
+                   {"components", r.report.components},
+                   {"sections", r.report.sections},
+                   {"landmarks_found", r.report.landmarks_found},
+                   {"landmarks_missing", r.report.landmarks_missing},
+                   {"warnings", r.report.warnings}};
+    j["timings_seconds"] = {{"load", std::chrono::duration<double>(t1 - t0).count()},
+                            {"frame", r.report.frame_seconds},
+                            {"landmarks", r.report.landmark_seconds},
+                            {"girths", r.report.girth_seconds},
+                            {"lengths", length_seconds},
+                            {"total", std::chrono::duration<double>(t2 - t0).count()}};
+
+    for (const auto& w : r.report.warnings) {
+        std::cerr << "tapeline: warning: " << w << '\n';
+    }
+    const std::string text = j.dump(1) + "\n";
+    if (!a.vit.empty()) {
+        write_file_atomically(a.vit, [&](std::ostream& out) {
+            tm::write_seamly_individual(out, r.measurements, a.body);
+        });
+    }
+    write_file_atomically(a.out, [&](std::ostream& out) { out << text; });
+    std::cout << a.out << ": " << r.measurements.measurements.size() << " measurements, "
+              << r.measurements.missing.size() << " missing, " << r.report.landmarks_found << "/"
+              << r.landmarks.landmarks.size() << " landmarks (unit " << tm::to_string(r.frame.unit)
+              << (r.frame.unit_inferred ? ", inferred" : "") << ", height " << std::fixed
+              << std::setprecision(1) << r.frame.height << " mm)\n";
+}
+
+}  // namespace
+
+void register_measure_commands(CLI::App& app) {
+    auto args = std::make_shared<MeasureArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "measure",
+        "Measure a body mesh: landmarks, tape girths and lengths along the skin (mm, ISO 8559-1, "
+        "FreeSewing and Seamly2D names)");
+    cmd->add_option("BODY", args->body, "Closed body mesh (OBJ, OFF, PLY, STL)")->required();
+    cmd->add_option("--units", args->units,
+                    "Length unit of the mesh: m, dm, cm or mm (required when the height does not "
+                    "tell it)");
+    cmd->add_option("--out", args->out, "Output JSON file")->required();
+    cmd->add_option("--up", args->up, "Up axis of the mesh (+X, -X, +Y, -Y, +Z, -Z)")
+        ->capture_default_str();
+    cmd->add_option("--front", args->front, "Axis the body faces")->capture_default_str();
+    cmd->add_option("--pose", args->pose, "A or T")->capture_default_str();
+    cmd->add_option("--landmarks", args->landmarks, "JSON file overriding landmarks");
+    cmd->add_option("--vit", args->vit, "Also write a Seamly2D individual measurement file");
+    cmd->callback([args] { run_measure(*args); });
+}
+
+}  // namespace tapeline::app

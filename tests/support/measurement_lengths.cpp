@@ -1,0 +1,58 @@
+// Lengths along the skin on a Surface_mesh<Epick>, and the exact-MMP check of their segments
+// (compiled once here: the curvature flow and MMP are heavy templates, DESIGN.md §5).
+#include <tapeline/core/mesh_io.h>
+#include <tapeline/geodesic/exact_mmp.h>
+#include <tapeline/measurement/lengths.h>
+#include <tapeline/measurement/measure.h>
+#include <tapeline_test/measurement.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace tapeline_test::measurement {
+
+namespace {
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Epick::Point_3>;
+namespace meas = tapeline::measurement;
+namespace geo = tapeline::geodesic;
+using NP = CGAL::parameters::Default_named_parameters;
+}  // namespace
+
+LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptions& options) {
+    const auto loaded = tapeline::read_triangle_mesh<SurfaceMesh>(path);
+    const SurfaceMesh& tm = loaded.mesh;
+    auto m = meas::measure_body(tm, options);
+    LengthsResult out;
+    const auto t0 = std::chrono::steady_clock::now();
+    const meas::SkinLocator<SurfaceMesh, NP> at(tm, m.frame);
+    const geo::GeodesicPathSolver<SurfaceMesh, NP> solver(tm);
+    const auto plan = meas::plan_skin_lengths(at, m.landmarks);
+    meas::take_skin_lengths(solver, at, m.frame, plan, m.measurements);
+    out.length_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    for (const auto& s : plan.lengths) {
+        for (std::size_t i = 0; i + 1 < s.waypoints.size(); ++i) {
+            const Vec3 a = at.canonical(s.waypoints[i]), b = at.canonical(s.waypoints[i + 1]);
+            SegmentCheck c;
+            c.measurement = s.name;
+            c.euclidean = std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+            c.gcf = solver.path(s.waypoints[i], s.waypoints[i + 1]).on_mesh.length * m.frame.scale;
+            c.exact = geo::exact_mmp_path(tm, geo::SurfacePoint<SurfaceMesh>(s.waypoints[i]),
+                                          geo::SurfacePoint<SurfaceMesh>(s.waypoints[i + 1]))
+                          .length *
+                      m.frame.scale;
+            out.segments.push_back(c);
+        }
+    }
+    out.result.frame = m.frame;
+    out.result.landmarks = std::move(m.landmarks);
+    out.result.measurements = std::move(m.measurements);
+    out.result.report = std::move(m.report);
+    return out;
+}
+
+}  // namespace tapeline_test::measurement
