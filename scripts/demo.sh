@@ -32,6 +32,12 @@ echo "== body measurement: the bundled MakeHuman body (CC0, decimetres)"
 "$bin" measure "$root/data/bodies/mh_female_average.obj" --units dm --out "$out/body_measurements.json" \
     --vit "$out/body_measurements.vit"
 
+echo "== grading: the aaron tank top (drafted for FreeSewing's cisFemaleAdult36) to the measured body"
+"$bin" grade "$root/data/patterns/aaron_cisFemaleAdult36.json" \
+    --from "$root/data/patterns/aaron_cisFemaleAdult36_measurements.json" \
+    --to "$out/body_measurements.json" --out "$out/aaron_graded.json" --svg "$out/aaron_graded.svg" \
+    --pareto "$out/aaron_pareto.png" --rules "$out/aaron_grade_rules.json" --seed 7
+
 echo "== side-by-side benchmark on small analytic surfaces"
 "$bin" bench geodesic --surface icosphere:3 --surface ellipsoid:1,1,0.5:3:0.2 --surface icosphere:4 \
     --methods exact-mmp,exact-cgal,heat,heat-idt,dijkstra,gcf-window:4,gcf-window:8 \
@@ -45,4 +51,5 @@ echo "Open the coloured distance fields $out/spot_*.ply in MeshLab or Blender;"
 echo "the benchmark plots are in $out/bench/; the shirt pattern is drawn in $out/shirt.svg and .png;"
 echo "the curvature-flow path's unfolded strip is $out/spot_gcf_unfold.svg; the body's measurements"
 echo "(girths with their tape loops, lengths with their paths, landmarks) are in"
-echo "$out/body_measurements.json and, for Seamly2D, $out/body_measurements.vit."
+echo "$out/body_measurements.json and, for Seamly2D, $out/body_measurements.vit; the aaron tank top"
+echo "graded to that body is $out/aaron_graded.svg (fit table above, Pareto front aaron_pareto.png)."

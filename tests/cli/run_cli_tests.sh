@@ -443,6 +443,22 @@ PY
 l = {e["name"]: e for e in json.load(open("over.json"))["landmarks"]}
 sys.exit(l["crotch"]["status"] != "overridden")'
   then ok "measure: overridden landmark reported"; else fail "measure: override not reported"; fi
+  # The chain: grade the bundled aaron from its own base set to the measured body.
+  expect_ok "grade aaron to the measured body" "$bin" grade "$fs" \
+    --from "$root/data/patterns/aaron_cisFemaleAdult36_measurements.json" --to body.json \
+    --out chain.json --report chain_report.json --seed 7 --threads 2
+  if $py - <<'PY'
+import json
+j = json.load(open("body.json"))
+want = {e["freesewing_name"]: e["value_mm"] for e in j["measurements"] if e.get("freesewing_name")}
+rows = json.load(open("chain_report.json"))["fit"]
+assert {r["measurement"] for r in rows} == {"chest", "hips", "waistToHips"}, rows
+for row in rows:
+    assert abs(row["error_mm"]) <= 2.0, row
+    assert abs(row["target_mm"] - want[row["measurement"]]) < 0.01, (row, want)
+PY
+  then ok "grade to the measured body: every binding within 2 mm"
+  else fail "grade to the measured body: $(head -c 300 chain_report.json)"; fi
 else
   echo "skip - measure on MakeHuman bodies ($bodies absent)"
 fi

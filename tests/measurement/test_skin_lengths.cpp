@@ -31,7 +31,9 @@ const std::map<std::string, std::pair<double, double>> kRanges = {
     {"shoulder_to_elbow", {180, 450}},
     {"shoulder_to_wrist", {350, 800}},
     {"inseam", {600, 1000}},
-    {"outseam", {850, 1300}}};
+    {"outseam", {850, 1300}},
+    {"waist_to_hips", {60, 250}},
+    {"waist_to_armpit", {100, 330}}};
 
 class SkinLengths : public ::testing::TestWithParam<std::string> {};
 

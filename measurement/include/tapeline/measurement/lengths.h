@@ -230,6 +230,29 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
                 return f.empty() ? ankle_point(s, out) : f;
             });
     }
+    // Along the side of the torso: waist to hip level, and armpit down to the waist (the side
+    // points are where a ray from the torso's centre at that level leaves the skin sideways).
+    {
+        const std::string side = side_of({"armpit"});
+        const double out = side == "right" ? -1.0 : 1.0;  // x is the body's left
+        const std::string armpit = "armpit_" + side;
+        auto waist_side = [&](SkinLength<TriangleMesh>& s) {
+            return hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+        };
+        add({"waist_to_hips", "", "waistToHips", {}, {}, 0},
+            {"waist_front", "waist_back", "hip_back"}, [&](auto& s) {
+                const std::string f = waist_side(s);
+                if (!f.empty())
+                    return f;
+                const Vec3 w = mid(P("waist_front"), P("waist_back"));
+                return hit({w[0], P("hip_back")[1], w[2]}, {out, 0, 0}, s, "hip side");
+            });
+        add({"waist_to_armpit", "", "waistToArmpit", {}, {}, 0},
+            {armpit, "waist_front", "waist_back"}, [&](auto& s) {
+                s.waypoints.push_back(at.nearest(P(armpit)));
+                return waist_side(s);
+            });
+    }
     return plan;
 }
 
