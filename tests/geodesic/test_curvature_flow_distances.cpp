@@ -137,14 +137,14 @@ TEST(CurvatureFlowDistances, IcosphereAgainstExactPolyhedralAndGreatCircle) {
         const Errors exact_vs_truth = relative_errors(soup, src, mmp.d, truth);
         std::printf("[ gcf-dist ] %s: exact polyhedral vs great circle: mean %.2e max %.2e\n",
                     spec.c_str(), exact_vs_truth.mean, exact_vs_truth.max);
-        for (const Config c : {Config{0, false, true, "window 0 (Algorithm 1)"},
-                               Config{0, false, false, "window 0, on-face length"},
-                               Config{8, false, true, "window 8 (Algorithm 2)"},
-                               Config{8, true, true, "window 8, shortest parent"},
-                               Config{8, false, true, "window 8, field anchor",
-                                      tg::WindowAnchor::field},
-                               Config{8, false, false, "window 8, field anchor, on-face length",
-                                      tg::WindowAnchor::field}}) {
+        for (const Config c :
+             {Config{0, false, true, "window 0 (Algorithm 1)"},
+              Config{0, false, false, "window 0, on-face length"},
+              Config{8, false, true, "window 8 (Algorithm 2)"},
+              Config{8, true, true, "window 8, shortest parent"},
+              Config{8, false, true, "window 8, field anchor", tg::WindowAnchor::field},
+              Config{8, false, false, "window 8, field anchor, on-face length",
+                     tg::WindowAnchor::field}}) {
             tg::CurvatureFlowDistanceOptions o;
             o.window = c.window;
             o.shortest_parent = c.shortest_parent;

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/vec3.h>
 
 #include <algorithm>
 #include <array>
@@ -91,29 +92,14 @@ inline SurfaceSoup generate_surface(const SurfaceSpec& spec);
 // -------------------------------------------------------------------------------------------------
 namespace internal {
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 add(const Vec3& p, const Vec3& q) {
-    return {p[0] + q[0], p[1] + q[1], p[2] + q[2]};
-}
-inline Vec3 sub(const Vec3& p, const Vec3& q) {
-    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-inline Vec3 scale(const Vec3& p, double s) {
-    return {p[0] * s, p[1] * s, p[2] * s};
-}
-inline double dot(const Vec3& p, const Vec3& q) {
-    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-}
-inline Vec3 cross(const Vec3& p, const Vec3& q) {
-    return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
-}
-inline double norm(const Vec3& p) {
-    return std::sqrt(dot(p, p));
-}
-inline Vec3 normalized(const Vec3& p) {
-    return scale(p, 1.0 / norm(p));
-}
+using vec3::add;
+using vec3::cross;
+using vec3::dot;
+using vec3::norm;
+using vec3::normalized;
+using vec3::scale;
+using vec3::sub;
+using Vec3 = vec3::Vec3;
 
 /// Uniform double in [0, 1) from the top 53 bits of one mt19937_64 draw. The standard fixes the
 /// engine's output but not std::uniform_real_distribution's, hence this.

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/vec3.h>
 #include <tapeline/measurement/body_types.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -27,26 +28,14 @@ namespace tapeline::measurement::internal {
 
 using Vec2 = std::array<double, 2>;
 
-inline Vec3 add(const Vec3& a, const Vec3& b) {
-    return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-inline Vec3 sub(const Vec3& a, const Vec3& b) {
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
+using vec3::add;
+using vec3::cross;
+using vec3::dot;
+using vec3::norm;
+using vec3::normalized;
+using vec3::sub;
 inline Vec3 mul(const Vec3& a, double s) {
-    return {a[0] * s, a[1] * s, a[2] * s};
-}
-inline double dot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double norm(const Vec3& a) {
-    return std::sqrt(dot(a, a));
-}
-inline Vec3 normalized(const Vec3& a) {
-    return mul(a, 1.0 / norm(a));
+    return vec3::scale(a, s);
 }
 inline double dist(const Vec3& a, const Vec3& b) {
     return norm(sub(a, b));
