@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -92,8 +93,18 @@ void run_grade(const GradeArgs& a) {
     tp::require_valid(base);
     const tp::MeasurementSet from = tg::read_measurement_input(a.from, a.from_set);
     const tp::MeasurementSet to = tg::read_measurement_input(a.to, a.to_set);
+    std::vector<tg::SeamSpec> seams;
+    std::vector<std::string> skipped_seams;
     if (!a.no_fs_bindings && base.designer == "FreeSewing") {
         tg::add_freesewing_bindings(base);
+        // A pattern graded before already holds the derived seams it can (pattern_seams below).
+        for (tg::SeamSpec& s : tg::freesewing_seams(base, &skipped_seams)) {
+            const bool held = std::any_of(base.seams.begin(), base.seams.end(),
+                                          [&](const tp::Seam& q) { return q.name == s.name; });
+            if (!held) {
+                seams.push_back(std::move(s));
+            }
+        }
     }
     tg::GradingOptions o;
     o.seed = a.seed;
@@ -102,7 +113,19 @@ void run_grade(const GradeArgs& a) {
     o.threads = a.threads;
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
-    const tg::GradeResult g = tg::grade_pattern(base, from, to, o);
+    tg::GradeResult g = tg::grade_pattern(base, from, to, o, seams);
+    if (!a.no_fs_bindings && base.designer == "FreeSewing" && seams.empty() && base.seams.empty() &&
+        skipped_seams.empty()) {
+        g.report.notes.push_back("no seam table for FreeSewing design '" + base.name +
+                                 "': graded without seams");
+    }
+    for (const tp::Seam& s : tg::pattern_seams(seams)) {
+        g.pattern.seams.push_back(s);  // the graded pattern keeps the seams it was graded with
+    }
+    for (const std::string& s : skipped_seams) {
+        g.report.notes.push_back("seam rule '" + s + "' not applied: a chain end is not an " +
+                                 "outline vertex of this draft");
+    }
 
     // Render every output in memory, then write each atomically.
     std::vector<std::pair<std::string, std::string>> files;
@@ -236,7 +259,7 @@ void register_grade_commands(CLI::App& app) {
     cmd->add_option("--ease", a->ease, "Ease mode: proportional (default) or keep_mm");
     cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");
     cmd->add_flag("--no-freesewing-bindings", a->no_fs_bindings,
-                  "Only the importer's bindings (no FreeSewing point-name bindings)");
+                  "Only the importer's bindings (no FreeSewing point-name bindings or seams)");
     cmd->add_option("--format", a->format, "Pattern format: auto, freesewing, garmentcode, json");
     cmd->add_option("--db", a->db, "Pattern database (SQLite file)");
     cmd->add_flag("--store", a->store, "Store the graded pattern in the database");

@@ -60,7 +60,10 @@ with open(os.path.join(out, "table.md"), "w") as t:
     t.write("Made by `benchmarks/run_grading.sh` (2 threads). Outline deviation: per piece, 400 "
             "arc-length samples, centred, best rotation, mean symmetric nearest-point distance; "
             "the columns give the mean over pieces / the max over pieces of the max distance. "
-            "Oracle: each base piece scaled uniformly by the reference perimeter ratio.\n\n")
+            "Oracle: each base piece scaled uniformly by the reference perimeter ratio. "
+            "Seams: derived per design from FreeSewing's point names (grading/README.md); "
+            "mismatch = |a − ratio·b|, max over the seams. The target-size draft is read only "
+            "here, for validation: grading sees the base draft and the two measurement sets.\n\n")
     t.write("| run | bindings | max binding error mm | seam mismatch mm | graded mean / max mm "
             "| unchanged mean / max mm | uniform oracle mean / max mm | grading s | binding "
             "errors mm |\n|---|---|---|---|---|---|---|---|---|\n")

@@ -70,6 +70,45 @@ TEST(MeasurementInput, SeamlyIndividualFile) {
     EXPECT_FALSE(m.values.empty());
 }
 
+// A .vit as `tapeline measure --vit` writes it: Seamly2D known names, and "@" + our name where
+// Seamly2D has none. Patterns bind FreeSewing names: each known one gets its FreeSewing alias.
+TEST(MeasurementInput, SeamlyNamesGetTheirFreeSewingNames) {
+    const std::string a = write_temp("body.vit", R"(<?xml version="1.0" encoding="UTF-8"?>
+<vit>
+  <version>0.3.3</version>
+  <read-only>false</read-only>
+  <notes/>
+  <unit>mm</unit>
+  <pm_system>998</pm_system>
+  <personal>
+    <family-name/>
+    <given-name/>
+    <birth-date>1800-01-01</birth-date>
+    <gender>unknown</gender>
+    <email/>
+  </personal>
+  <body-measurements>
+    <m name="height" value="1590"/>
+    <m name="bust_circ" value="1001.5"/>
+    <m name="neck_side_to_waist_b" value="420"/>
+    <m name="hip_circ" value="1050"/>
+    <m name="highhip_circ" value="990"/>
+    <m name="@waist_to_armpit" value="190"/>
+    <m name="@mid_thigh_girth" value="520"/>
+  </body-measurements>
+</vit>
+)");
+    const auto m = tapeline_test::read_measurement_input(a);
+    EXPECT_DOUBLE_EQ(*m.get("chest"), 1001.5);
+    EXPECT_DOUBLE_EQ(*m.get("bust_circ"), 1001.5);
+    EXPECT_DOUBLE_EQ(*m.get("hpsToWaistBack"), 420);
+    EXPECT_DOUBLE_EQ(*m.get("seat"), 1050);  // Seamly2D's hip is FreeSewing's seat
+    EXPECT_DOUBLE_EQ(*m.get("hips"), 990);   // and its high hip FreeSewing's hips
+    EXPECT_DOUBLE_EQ(*m.get("waistToArmpit"), 190);
+    EXPECT_DOUBLE_EQ(*m.get("mid_thigh_girth"), 520);
+    std::remove(a.c_str());
+}
+
 TEST(MeasurementInput, AbsurdSetsAreRefused) {
     expect_refused(write_temp("neg.json", R"({"chest": -979})"), "must be positive");
     expect_refused(write_temp("tall.json", R"({"waist": 1900, "height": 1700})"),

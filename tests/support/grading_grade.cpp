@@ -13,8 +13,14 @@ namespace tg = tapeline::grading;
 namespace tp = tapeline::pattern;
 
 tg::GradeResult grade(const tp::Pattern& base, const tp::MeasurementSet& from,
-                      const tp::MeasurementSet& to, const tg::GradingOptions& options) {
-    return tg::grade_pattern(base, from, to, options);
+                      const tp::MeasurementSet& to, const tg::GradingOptions& options,
+                      const std::vector<tg::SeamSpec>& seams) {
+    return tg::grade_pattern(base, from, to, options, seams);
+}
+
+std::vector<tg::SeamSpec> freesewing_seams(const tp::Pattern& p,
+                                           std::vector<std::string>* skipped) {
+    return tg::freesewing_seams(p, skipped);
 }
 
 tp::Pattern freesewing_draft(const std::string& design, const std::string& size) {

@@ -14,7 +14,13 @@ namespace tapeline_test {
 tapeline::grading::GradeResult grade(const tapeline::pattern::Pattern& base,
                                      const tapeline::pattern::MeasurementSet& from,
                                      const tapeline::pattern::MeasurementSet& to,
-                                     const tapeline::grading::GradingOptions& options);
+                                     const tapeline::grading::GradingOptions& options,
+                                     const std::vector<tapeline::grading::SeamSpec>& seams = {});
+
+/// The seams freesewing_bindings.h derives for a FreeSewing draft; `skipped` gets the rules that
+/// did not apply.
+std::vector<tapeline::grading::SeamSpec> freesewing_seams(const tapeline::pattern::Pattern& p,
+                                                          std::vector<std::string>* skipped);
 
 /// FreeSewing draft `design` at `size` from ../shared/data (with the FreeSewing span bindings).
 tapeline::pattern::Pattern freesewing_draft(const std::string& design, const std::string& size);

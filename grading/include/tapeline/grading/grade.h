@@ -3,10 +3,11 @@
 //
 // Variables: a displacement of every node of every piece (outline control points, named points,
 // grain ends) and its 2×2 gradient, so that the graded pattern is the base one plus per-point
-// grade rules. Objectives (grading/README.md has every formula): fit of the bindings and equal seam
-// sides (f1), style — turn angles at outline vertices, the shape of curved edges in their chord
-// frame, proportions between nodes, grain direction — (f2), and a smooth displacement field
-// (locally affine, gradient varying slowly).
+// grade rules. Objectives (grading/README.md has every formula): fit of the bindings (a girth's
+// growth split between its pieces by their base shares) and the seams — equal sides, or the base
+// draft's deliberate ratio — (f1); style — turn angles at outline vertices, the shape of curved
+// edges in their chord frame, proportions between nodes, grain direction — (f2); and a smooth
+// displacement field (locally affine, gradient varying slowly; trims grow in length only).
 //
 // Search: NSGA-II (Deb, Pratap, Agarwal & Meyarivan 2002, through pagmo2) on a reduced genome —
 // a quadratic displacement field per piece — gives a Pareto front of f1 against f2; each member is
@@ -115,6 +116,23 @@ struct DifferenceCost {  // w·(a − b) on 4-vectors (bending; the global prior
     }
 };
 
+/// The global prior of a trim (GradingOptions::trim_aspect): across the strip the displacement
+/// gradient vanishes (A u⊥ = 0: no widening, no shear), along it the strip follows the garment
+/// (u∥ᵀ (A − Ā) u∥ = 0); u∥ = (ux, uy) the strip's long axis.
+struct TrimCost {
+    double ux, uy, w;
+    template <typename T>
+    bool operator()(const T* A, const T* G, T* r) const {
+        const double vx = -uy, vy = ux;
+        r[0] = T(w) * (A[0] * vx + A[1] * vy);
+        r[1] = T(w) * (A[2] * vx + A[3] * vy);
+        const T along = ux * (A[0] * ux + A[1] * uy) + uy * (A[2] * ux + A[3] * uy);
+        const T galong = ux * (G[0] * ux + G[1] * uy) + uy * (G[2] * ux + G[3] * uy);
+        r[2] = T(w) * (along - galong);
+        return true;
+    }
+};
+
 struct ProportionCost {
     double bx, by, l0, w;  // base difference p_j − p_i
     template <typename T>
@@ -168,6 +186,10 @@ inline CeresOutcome ceres_solve(const Model& m, const GradingOptions& o, double 
     for (const LengthTerm& t : m.seams) {
         add_slot_term(pb, m, t, s);
     }
+    for (LengthTerm t : m.shares) {
+        t.weight *= fit_factor;
+        add_slot_term(pb, m, t, s);
+    }
     for (const TurnTerm& t : m.turns) {
         if (t.idx[0] != t.idx[2]) {
             add_slot_term(pb, m, t, s);
@@ -199,9 +221,16 @@ inline CeresOutcome ceres_solve(const Model& m, const GradingOptions& o, double 
             nullptr, s.A[i].data(), s.A[j].data());
     }
     for (std::size_t i = 0; i < m.base.size(); ++i) {
-        pb.AddResidualBlock(
-            new ceres::AutoDiffCostFunction<DifferenceCost, 4, 4, 4>(new DifferenceCost{w.global}),
-            nullptr, s.A[i].data(), G.data());
+        const PieceModel& pm = m.pieces[m.piece_of[i]];
+        if (pm.trim) {
+            pb.AddResidualBlock(new ceres::AutoDiffCostFunction<TrimCost, 3, 4, 4>(
+                                    new TrimCost{pm.axis.x, pm.axis.y, w.trim}),
+                                nullptr, s.A[i].data(), G.data());
+        } else {
+            pb.AddResidualBlock(new ceres::AutoDiffCostFunction<DifferenceCost, 4, 4, 4>(
+                                    new DifferenceCost{w.global}),
+                                nullptr, s.A[i].data(), G.data());
+        }
         pb.AddResidualBlock(
             new ceres::AutoDiffCostFunction<DampingCost, 2, 2>(new DampingCost{1e-3}), nullptr,
             &s.d[i].x);
@@ -364,10 +393,12 @@ inline StyleMetrics style_metrics(const Model& m, const Solution& s, double styl
 
 }  // namespace internal
 
-/// Grades `base` (drafted for `from`) to the measurements `to`. Throws InvalidInput when a binding
-/// names a measurement `to` lacks, SolverFailure when Ceres fails.
+/// Grades `base` (drafted for `from`) to the measurements `to`, keeping the pattern's own seams and
+/// `seams` (e.g. freesewing_seams(base)). Throws InvalidInput when a binding names a measurement
+/// `to` lacks or a seam names a missing piece or edge, SolverFailure when Ceres fails.
 inline GradeResult grade_pattern(const tp::Pattern& base, const tp::MeasurementSet& from,
-                                 const tp::MeasurementSet& to, const GradingOptions& o = {}) {
+                                 const tp::MeasurementSet& to, const GradingOptions& o = {},
+                                 const std::vector<SeamSpec>& seams = {}) {
     using namespace internal;
     const auto t0 = std::chrono::steady_clock::now();
     std::unique_ptr<tbb::global_control> limit;
@@ -379,7 +410,7 @@ inline GradeResult grade_pattern(const tp::Pattern& base, const tp::MeasurementS
         throw InvalidInput("pattern '" + base.name +
                            "': no measurement bindings, nothing to grade to");
     }
-    auto model = std::make_shared<Model>(build_model(base, from, to, o));
+    auto model = std::make_shared<Model>(build_model(base, from, to, o, seams));
     const Model& m = *model;
     GradeResult result;
     GradingReport& rep = result.report;
@@ -510,11 +541,15 @@ inline GradeResult grade_pattern(const tp::Pattern& base, const tp::MeasurementS
         b.items.erase(std::remove_if(b.items.begin(), b.items.end(),
                                      [](const LengthItem& it) { return it.coef > 0; }),
                       b.items.end());
+        for (LengthItem& it : b.items) {
+            it.coef = 1;
+        }
         SeamRow row;
         row.name = m.seam_names[i];
+        row.ratio = m.seam_ratio[i];
         row.length_a_mm = length_of(a, x);
-        row.length_b_mm = -length_of(b, x);
-        row.mismatch_mm = std::abs(row.length_a_mm - row.length_b_mm);
+        row.length_b_mm = length_of(b, x);
+        row.mismatch_mm = std::abs(row.length_a_mm - row.ratio * row.length_b_mm);
         rep.seams.push_back(row);
     }
     rep.style = style_metrics(m, chosen.solution, chosen.point.style);

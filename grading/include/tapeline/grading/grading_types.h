@@ -24,21 +24,44 @@ enum class EaseMode {
 /// `GradingOptions::reference_length_mm`, so a weight of 1 means "1 unit here costs as much as
 /// 1 mm of fit error".
 struct GradingWeights {
-    double fit = 10;           ///< per mm of binding error
-    double seam = 10;          ///< per mm of seam length difference
-    double angle = 1;          ///< per radian of turn-angle change at an outline vertex, × L_ref
+    double fit = 100;          ///< per mm of binding error
+    double seam = 100;         ///< per mm of seam length difference
+    double angle = 10;         ///< per radian of turn-angle change at an outline vertex, × L_ref
     double curve = 1;          ///< per unit of Bézier control-polygon shape change, × chord
     double proportion = 0.05;  ///< per mm of deviation from a uniform per-piece scale
     double grain = 1;          ///< per radian of grain-direction change, × L_ref
     double consistency = 5;    ///< per mm of departure from the local affine displacement model
     double bending = 2;        ///< per unit change of the displacement gradient between neighbours
     double global = 0.2;       ///< per unit of a node's gradient away from the garment's mean
+    double trim = 1;  ///< per unit of a trim's gradient across it (GradingOptions::trim_aspect)
 };
 
 struct GradingTolerances {
     double fit_mm = 2;   ///< every bound measurement within this (the default-solution rule)
     double seam_mm = 1;  ///< every seam's two sides within this
 };
+
+/// A seam to keep while grading: the outline edges of side A are sewn to those of side B. A side
+/// may span several pieces (a sleeve cap against the front and the back armhole). The pattern's
+/// own seams (`Pattern::seams`) are used as well.
+struct SeamSpec {
+    std::string name;
+    std::vector<pattern::EdgeRange> a, b;
+    /// For a seam of one range per side: how the ranges meet (a pattern::Seam can record it).
+    pattern::SeamDirection direction = pattern::SeamDirection::opposite;
+};
+
+/// The seams of `seams` that a pattern can hold (one edge range per side), as pattern seams, for
+/// the graded pattern (ranges keep their edge indices: grading moves points, never edges).
+inline std::vector<pattern::Seam> pattern_seams(const std::vector<SeamSpec>& seams) {
+    std::vector<pattern::Seam> out;
+    for (const SeamSpec& s : seams) {
+        if (s.a.size() == 1 && s.b.size() == 1) {
+            out.push_back({s.name, s.a[0], s.b[0], s.direction});
+        }
+    }
+    return out;
+}
 
 struct GradingOptions {
     std::uint32_t seed = 42;
@@ -47,14 +70,22 @@ struct GradingOptions {
     EaseMode ease = EaseMode::proportional;
     GradingWeights weights;
     GradingTolerances tolerances;
-    std::size_t threads = 0;   ///< 0: TBB's default
-    bool ceres_polish = true;  ///< polish each front member by Ceres least squares
-    std::size_t ceres_iterations = 200;
-    double reference_length_mm = 100;  ///< L_ref: turns angles and strains into lengths
-    std::size_t neighbours = 8;        ///< k of the per-piece k-nearest-node smoothness graph
+    std::size_t threads = 0;            ///< 0: TBB's default
+    bool ceres_polish = true;           ///< polish each front member by Ceres least squares
+    std::size_t ceres_iterations = 50;  ///< per solve; more changed no table entry (measured)
+    double reference_length_mm = 100;   ///< L_ref: turns angles and strains into lengths
+    std::size_t neighbours = 8;         ///< k of the per-piece k-nearest-node smoothness graph
     /// Pareto members polished by Ceres get fit weights weights.fit · f, f log-spaced over
     /// [min_fit_factor, max_fit_factor] along the front (low f: style first).
     double min_fit_factor = 0.01, max_fit_factor = 10;
+    /// A girth bound over several pieces grows each piece's part in proportion to its base share
+    /// (the way commercial grade rules split a girth increment between front and back), instead of
+    /// only fixing the sum.
+    bool split_girths = true;
+    /// A straight strip (at least this many times longer than wide, filling ≥ 80 % of its box: a
+    /// binding strip, a placket) is a trim: graded in length only, as commercial grade rules treat
+    /// trims (its width is held by the trim prior instead of growing with the garment). 0: off.
+    double trim_aspect = 5;
 };
 
 /// One row of the fit table: the body measurement the pattern now fits (pattern dimension minus
@@ -71,7 +102,10 @@ struct FitRow {
 struct SeamRow {
     std::string name;
     double length_a_mm = 0, length_b_mm = 0;
-    double mismatch_mm = 0;  ///< |a − b|
+    /// a / b kept from the base draft: 1 for a seam whose sides are equal there (within the seam
+    /// tolerance), else the base draft's deliberate ratio (sleeve-cap ease, a stretched binding)
+    double ratio = 1;
+    double mismatch_mm = 0;  ///< |a − ratio · b|
 };
 
 /// Style of the graded pattern against the base (each a change, 0 = unchanged).

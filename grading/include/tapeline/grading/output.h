@@ -29,8 +29,8 @@ inline std::string fit_table(const GradingReport& r) {
         o << line;
     }
     for (const SeamRow& s : r.seams) {
-        std::snprintf(line, sizeof line, "seam %-26s %9.2f %9.2f  mismatch %6.2f mm\n",
-                      s.name.c_str(), s.length_a_mm, s.length_b_mm, s.mismatch_mm);
+        std::snprintf(line, sizeof line, "seam %-26s %9.2f %9.2f  ratio %.3f  mismatch %6.2f mm\n",
+                      s.name.c_str(), s.length_a_mm, s.length_b_mm, s.ratio, s.mismatch_mm);
         o << line;
     }
     return o.str();
@@ -57,6 +57,7 @@ inline nlohmann::json report_json(const GradingReport& r) {
         j["seams"].push_back({{"name", s.name},
                               {"length_a_mm", s.length_a_mm},
                               {"length_b_mm", s.length_b_mm},
+                              {"ratio", s.ratio},
                               {"mismatch_mm", s.mismatch_mm}});
     }
     j["style"] = {{"max_angle_change_deg", r.style.max_angle_change_deg},
@@ -81,6 +82,7 @@ inline nlohmann::json report_json(const GradingReport& r) {
     j["max_seam_mismatch_mm"] = r.max_seam_mismatch_mm;
     j["ceres"] = {{"iterations", r.ceres_iterations}, {"status", r.ceres_status}};
     j["nsga2_evaluations"] = r.evaluations;
+    j["notes"] = r.notes;
     j["timings_s"] = {{"setup", r.timings.setup_s},
                       {"ceres_fast_path", r.timings.ceres_fast_path_s},
                       {"nsga2", r.timings.nsga2_s},

@@ -41,6 +41,8 @@ struct PieceModel {
     tp::Point2 centroid;
     double radius = 1;
     std::vector<EdgeNodes> outline;
+    bool trim = false;      // a long narrow strip (GradingOptions::trim_aspect)
+    tp::Point2 axis{1, 0};  // its long axis
 };
 
 struct BindingInfo {
@@ -54,6 +56,8 @@ struct Model {
     std::vector<PieceModel> pieces;
     std::vector<std::pair<std::size_t, std::size_t>> graph;
     std::vector<LengthTerm> fit, seams;
+    std::vector<LengthTerm> shares;  // girth split between pieces (GradingOptions::split_girths)
+    std::vector<double> seam_ratio;
     std::vector<BindingInfo> bindings;
     std::vector<std::string> seam_names;
     std::vector<TurnTerm> turns;
@@ -154,6 +158,53 @@ public:
         }
     }
 
+    /// Marks straight strips: the principal axes of the outline (sampled every 1 mm, so that
+    /// control points do not weigh) have extents whose ratio is at least `aspect`, and the piece
+    /// fills at least 80 % of that box.
+    void mark_trims(double aspect) {
+        if (aspect <= 0) {
+            return;
+        }
+        for (std::size_t pi = 0; pi < p_.pieces.size(); ++pi) {
+            const std::vector<tp::Point2> ring = tp::sample(p_.pieces[pi].outline, 1.0).points;
+            if (ring.size() < 3) {
+                continue;
+            }
+            tp::Point2 c{0, 0};
+            for (const tp::Point2& q : ring) {
+                c = c + q;
+            }
+            c = (1.0 / ring.size()) * c;
+            double sxx = 0, sxy = 0, syy = 0;
+            for (const tp::Point2& q : ring) {
+                sxx += (q.x - c.x) * (q.x - c.x);
+                sxy += (q.x - c.x) * (q.y - c.y);
+                syy += (q.y - c.y) * (q.y - c.y);
+            }
+            const double th = 0.5 * std::atan2(2 * sxy, sxx - syy);
+            const tp::Point2 u{std::cos(th), std::sin(th)}, v{-u.y, u.x};
+            double lo_u = 1e300, hi_u = -1e300, lo_v = 1e300, hi_v = -1e300;
+            for (const tp::Point2& q : ring) {
+                lo_u = std::min(lo_u, tp::dot(q, u));
+                hi_u = std::max(hi_u, tp::dot(q, u));
+                lo_v = std::min(lo_v, tp::dot(q, v));
+                hi_v = std::max(hi_v, tp::dot(q, v));
+            }
+            // Straight strips only: a curved band (a collar) fills little of its box, and its
+            // "across" direction turns along it.
+            double area = 0;
+            for (std::size_t k = 0; k + 1 < ring.size(); ++k) {
+                area += 0.5 * tp::cross(ring[k] - c, ring[k + 1] - c);
+            }
+            const double box = (hi_u - lo_u) * (hi_v - lo_v);
+            if (hi_u - lo_u >= aspect * std::max(1e-9, hi_v - lo_v) &&
+                std::abs(area) >= 0.8 * box) {
+                m_.pieces[pi].trim = true;
+                m_.pieces[pi].axis = u;
+            }
+        }
+    }
+
     /// Node of a named point of piece `pi` that lies on or inside it, or npos.
     std::size_t named_node(std::size_t pi, const std::string& name) const {
         const auto it = p_.pieces[pi].points.find(name);
@@ -190,7 +241,7 @@ public:
     }
 
     void build_bindings(const tp::MeasurementSet& from, const tp::MeasurementSet& to, EaseMode ease,
-                        double weight) {
+                        double weight, bool split_girths) {
         for (const tp::MeasurementBinding& b : p_.bindings) {
             LengthTerm t;
             t.weight = weight;
@@ -240,25 +291,90 @@ public:
                 e = b.ease_mm * *target / *base;
             }
             t.constant = *target + e;
+            // Split: each piece's part grows in proportion to its base share of the girth.
+            if (split_girths && b.features.size() > 1) {
+                std::vector<LengthTerm> parts;
+                std::map<std::string, std::size_t> part_of;
+                const LengthTerm& all = t;
+                // Items were added feature by feature, in order; regroup them per piece.
+                std::size_t item = 0;
+                for (const tp::BoundFeature& f : b.features) {
+                    const std::size_t n_items = f.edges.empty() ? 1 : f.edges.size();
+                    auto [pos, fresh] = part_of.insert({f.piece, parts.size()});
+                    if (fresh) {
+                        parts.emplace_back();
+                        parts.back().weight = weight;
+                    }
+                    LengthTerm& part = parts[pos->second];
+                    for (std::size_t k = 0; k < n_items; ++k, ++item) {
+                        LengthItem li = all.items[item];
+                        for (std::size_t s = 0; s < 4; ++s) {
+                            if (li.kind == LengthItem::cubic || s < 2) {
+                                li.slot[s] = slot(part, all.idx[li.slot[s]]);
+                            }
+                        }
+                        part.items.push_back(li);
+                    }
+                }
+                if (parts.size() > 1) {
+                    const double total0 = length_at_base(all);
+                    for (LengthTerm& part : parts) {
+                        part.constant = t.constant * length_at_base(part) / total0;
+                        m_.shares.push_back(std::move(part));
+                    }
+                }
+            }
             m_.fit.push_back(std::move(t));
             m_.bindings.push_back({b.measurement, where, *target, e});
         }
     }
 
-    void build_seams(double weight) {
+    /// Seams: the pattern's own and `extra`. Sides equal in the base draft (within `tolerance`)
+    /// are held equal; otherwise the base ratio a/b is kept (a deliberate difference such as
+    /// sleeve-cap ease). Residual w (len(a) − ratio · len(b)).
+    void build_seams(double weight, double tolerance, const std::vector<SeamSpec>& extra) {
+        std::vector<SeamSpec> all;
         for (const tp::Seam& s : p_.seams) {
-            LengthTerm t;
-            t.weight = weight;
-            for (int side = 0; side < 2; ++side) {
-                const tp::EdgeRange& r = side == 0 ? s.a : s.b;
-                const std::size_t pi = piece_index(r.piece, "seam '" + s.name + "'");
-                const std::size_t n = m_.pieces[pi].outline.size();
-                for (std::size_t k = 0; k < r.count; ++k) {
-                    add_edge_items(pi, (r.first_edge + k) % n, side == 0 ? 1.0 : -1.0, t);
+            all.push_back({s.name.empty() ? s.a.piece + "/" + s.b.piece : s.name, {s.a}, {s.b}});
+        }
+        all.insert(all.end(), extra.begin(), extra.end());
+        for (const SeamSpec& s : all) {
+            LengthTerm side[2];
+            for (int k = 0; k < 2; ++k) {
+                const std::vector<tp::EdgeRange>& ranges = k == 0 ? s.a : s.b;
+                if (ranges.empty()) {
+                    throw InvalidInput("seam '" + s.name + "': side " + (k == 0 ? "a" : "b") +
+                                       " has no edges");
+                }
+                for (const tp::EdgeRange& r : ranges) {
+                    const std::size_t pi = piece_index(r.piece, "seam '" + s.name + "'");
+                    const std::size_t n = m_.pieces[pi].outline.size();
+                    if (r.count == 0 || r.count > n || r.first_edge >= n) {
+                        throw InvalidInput("seam '" + s.name + "': piece '" + r.piece +
+                                           "' has no edges " + std::to_string(r.first_edge) +
+                                           " + " + std::to_string(r.count));
+                    }
+                    for (std::size_t e = 0; e < r.count; ++e) {
+                        add_edge_items(pi, (r.first_edge + e) % n, 1.0, side[k]);
+                    }
                 }
             }
+            const double la = length_at_base(side[0]), lb = length_at_base(side[1]);
+            const double ratio = (std::abs(la - lb) <= tolerance || lb <= 0) ? 1.0 : la / lb;
+            LengthTerm t = side[0];
+            t.weight = weight;
+            for (LengthItem it : side[1].items) {
+                for (std::size_t q = 0; q < 4; ++q) {
+                    if (it.kind == LengthItem::cubic || q < 2) {
+                        it.slot[q] = slot(t, side[1].idx[it.slot[q]]);
+                    }
+                }
+                it.coef = -ratio;
+                t.items.push_back(it);
+            }
             m_.seams.push_back(std::move(t));
-            m_.seam_names.push_back(s.name.empty() ? s.a.piece + "/" + s.b.piece : s.name);
+            m_.seam_names.push_back(s.name);
+            m_.seam_ratio.push_back(ratio);
         }
     }
 
@@ -378,6 +494,14 @@ private:
         throw InvalidInput(what + ": no piece '" + name + "'");
     }
 
+    double length_at_base(const LengthTerm& t) const {
+        auto pos = [&](std::size_t k) {
+            const tp::Point2& q = m_.base[t.idx[k]];
+            return V2<double>{q.x, q.y};
+        };
+        return t.template length<double>(pos);
+    }
+
     static std::size_t slot(LengthTerm& t, std::size_t node) {
         for (std::size_t k = 0; k < t.idx.size(); ++k) {
             if (t.idx[k] == node) {
@@ -394,12 +518,14 @@ private:
 
 /// Builds the whole problem. Bindings must name measurements of `to` (InvalidInput otherwise).
 inline Model build_model(const tp::Pattern& p, const tp::MeasurementSet& from,
-                         const tp::MeasurementSet& to, const GradingOptions& o) {
+                         const tp::MeasurementSet& to, const GradingOptions& o,
+                         const std::vector<SeamSpec>& seams = {}) {
     Model m;
     ModelBuilder b(p, m);
     b.build_nodes();
-    b.build_bindings(from, to, o.ease, o.weights.fit);
-    b.build_seams(o.weights.seam);
+    b.mark_trims(o.trim_aspect);
+    b.build_bindings(from, to, o.ease, o.weights.fit, o.split_girths);
+    b.build_seams(o.weights.seam, o.tolerances.seam_mm, seams);
     b.build_style(o.weights, o.reference_length_mm);
     b.build_graph(o.neighbours, o.weights.proportion);
     return m;
@@ -459,6 +585,11 @@ inline Objectives objectives(const Model& m, const std::vector<tp::Point2>& x) {
         s2 += e * e;
         ++n;
         o.max_seam = std::max(o.max_seam, std::abs(e));
+    }
+    for (const LengthTerm& t : m.shares) {
+        const double e = length_of(t, x) - t.constant;
+        s2 += e * e;
+        ++n;
     }
     o.fit = n ? std::sqrt(s2 / n) : 0;
     double st = 0;
