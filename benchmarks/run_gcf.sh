@@ -22,6 +22,23 @@ for m in spot.obj bob_tri.obj blub_triangulated.obj kitten.off fandisk.obj; do
   [ -f "$shared/$m" ] && meshes+=(--mesh "$shared/$m")
 done
 
+# Issue 4, shared meshes (GCF_SHARED_ONLY=1): the on-face ('/faces') errors on the shared meshes
+# and icospheres 5-7 only, into $out/issue4_shared (the full run below takes hours).
+if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
+  sub="$out/issue4_shared"
+  mkdir -p "$sub"
+  "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
+    --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8 \
+    "${meshes[@]}" $( [ -f "$shared/armadillo.obj" ] && echo --mesh "$shared/armadillo.obj" ) \
+    --out "$sub/gcf_shared.jsonl"
+  "$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
+    --methods exact-mmp,gcf-window:8/faces,gcf-window:8 \
+    --surface icosphere:5 --surface icosphere:6 --surface icosphere:7 --out "$sub/gcf_shared.jsonl"
+  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_shared.jsonl" \
+    --out-dir "$sub" --title "Issue 4: gcf-window on the shared meshes (on-face length)"
+  exit 0
+fi
+
 # 1. Accuracy, up to ~10k vertices: 2 sources x 2 repetitions.
 "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 2 \
   --methods exact-mmp,dijkstra,heat-idt,gcf-exact,$windows \

@@ -568,6 +568,8 @@ CurvatureFlowDistanceReport gcf_distances(
     pp.window = options.window;
     pp.spacing = r.sample_spacing;
     pp.smooth = options.smooth_length;
+    pp.traced = options.polyhedral_length;
+    pp.straighten = options.polyhedral_length;
     pp.shortest_parent = options.shortest_parent;
     pp.field_anchor = options.anchor == WindowAnchor::field;
     pp.near_source_samples = options.near_source_samples;
