@@ -116,7 +116,7 @@ struct CurvatureFlowReport {
     double scaled_max_geodesic_curvature = 0;  ///< the same times the mean edge length
     double residual = 0;                       ///< final sqrt(sum_i |T_iᵀ second difference_i|^2)
     double max_update = 0;                     ///< largest sample displacement of the last step
-    std::size_t trace_fallbacks = 0;   ///< on-mesh segments that could not be traced (chords)
+    std::size_t trace_fallbacks = 0;   ///< on-mesh segments not plane-cut (joined by edge paths)
     double traced_length = 0;          ///< length of the plane-cut trace through the samples
     bool straightened = false;         ///< on_mesh is the straightened trace (options.straighten)
     std::size_t straighten_flips = 0;  ///< vertices the strip was moved across while straightening

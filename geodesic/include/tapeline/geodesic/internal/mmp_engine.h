@@ -190,11 +190,19 @@ public:
         const auto P = m_.layout(f, 0);
         const Vec2 p = b[0] * P[0] + b[1] * P[1] + b[2] * P[2];
         face_sources_.push_back({f, p});
-        // A point on an edge is also a point of the neighbouring face.
+        // A point on an edge is also a point of the neighbouring face. "On the edge" must be
+        // emit_across's test (within kLenTol of the edge's length from its line), not b[k] == 0:
+        // emit_across sends no window over an edge whose line holds the source, so a point just
+        // inside (b[k] = 1e-14, the 1e-14 snap of the location check does not catch it) left the
+        // neighbour to be reached only around the edge's ends (measured on a MakeHuman body:
+        // 278.83 mm from such a point against 276.29 mm in the other direction and with CGAL).
         for (int k = 0; k < 3; ++k) {
-            if (b[k] != 0.0)
-                continue;
             const std::uint32_t h = 3 * f + (k + 1) % 3;  // opposite corner k
+            const Vec2 ea = P[(k + 1) % 3], eb = P[(k + 2) % 3];
+            const Vec2 d = eb - ea, r = p - ea;
+            const double el = norm(d);
+            if (b[k] != 0.0 && !(std::abs(d.x * r.y - d.y * r.x) <= 4 * kLenTol * el * el))
+                continue;
             const std::uint32_t t = m_.twin[h];
             if (t == kNone)
                 continue;
