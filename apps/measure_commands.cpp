@@ -1,7 +1,7 @@
-// `tapeline measure BODY --units dm --out m.json [--vit m.vit]`: landmarks, tape girths and lengths
-// along the skin of a body mesh (measurement module), written as JSON (mm, ISO 8559-1 and
-// FreeSewing names, the tape loops and paths) and optionally as a Seamly2D individual measurement
-// file.
+// `tapeline measure BODY --units dm --out m.json [--vit m.vit] [--picture m.svg]`: landmarks, tape
+// girths and lengths along the skin of a body mesh (measurement module), written as JSON (mm,
+// ISO 8559-1 and FreeSewing names, the tape loops and paths), optionally as a Seamly2D individual
+// measurement file and as a picture (front and side views with every tape, SVG or PNG).
 #include "commands.h"
 
 #include <tapeline/core/atomic_write.h>
@@ -9,6 +9,7 @@
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/measurement/lengths.h>
 #include <tapeline/measurement/measure.h>
+#include <tapeline/measurement/picture.h>
 #include <tapeline/measurement/seamly_vit.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -25,6 +26,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace tapeline::app {
 namespace {
@@ -43,6 +45,7 @@ struct MeasureArgs {
     std::string pose = "A";
     std::string landmarks;
     std::string vit;
+    std::vector<std::string> pictures;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -127,6 +130,7 @@ Json measurement_json(const tm::Measurement& m) {
         j["value_degrees"] = std::round(m.value * 100.0) / 100.0;
     }
     j["iso_clause"] = m.iso_clause.empty() ? Json(nullptr) : Json(m.iso_clause);
+    j["iso_number"] = m.iso_number.empty() ? Json(nullptr) : Json(m.iso_number);
     j["freesewing_name"] = m.freesewing.empty() ? Json(nullptr) : Json(m.freesewing);
     const std::string seamly = tm::seamly_name(m.name);
     j["seamly2d_name"] = seamly.empty() ? "@" + m.name : seamly;
@@ -157,6 +161,10 @@ void run_measure(const MeasureArgs& a) {
     check_output(a.out, ".json", "--out");
     if (!a.vit.empty()) {
         check_output(a.vit, ".vit", "--vit");
+    }
+    for (const std::string& picture : a.pictures) {
+        tm::picture_format(picture, "--picture");  // .svg or .png, else refused before any work
+        check_output(picture, lower_extension(picture), "--picture");
     }
     const tm::LandmarkOverrides overrides =
         a.landmarks.empty() ? tm::LandmarkOverrides{} : tm::read_landmark_overrides(a.landmarks);
@@ -206,6 +214,15 @@ void run_measure(const MeasureArgs& a) {
         std::cerr << "tapeline: warning: " << w << '\n';
     }
     const std::string text = j.dump(1) + "\n";
+    if (!a.pictures.empty()) {
+        tm::PictureOptions po;
+        po.title = std::filesystem::path(a.body).filename().string();
+        const tm::PictureMesh pm = tm::picture_mesh(loaded.mesh, r.frame);
+        for (const std::string& picture : a.pictures) {
+            tm::write_measurement_picture(picture, pm.points, pm.triangles, r.measurements,
+                                          r.landmarks, po);
+        }
+    }
     if (!a.vit.empty()) {
         write_file_atomically(a.vit, [&](std::ostream& out) {
             tm::write_seamly_individual(out, r.measurements, a.body);
@@ -238,6 +255,11 @@ void register_measure_commands(CLI::App& app) {
     cmd->add_option("--pose", args->pose, "A or T")->capture_default_str();
     cmd->add_option("--landmarks", args->landmarks, "JSON file overriding landmarks");
     cmd->add_option("--vit", args->vit, "Also write a Seamly2D individual measurement file");
+    cmd->add_option("--picture", args->pictures,
+                    "Also draw front and side views with every tape and label (.svg or .png; may "
+                    "be given more than once)")
+        ->expected(1)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->callback([args] { run_measure(*args); });
 }
 

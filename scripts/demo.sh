@@ -30,7 +30,8 @@ rm -f "$out/patterns.sqlite"*
 
 echo "== body measurement: the bundled MakeHuman body (CC0, decimetres)"
 "$bin" measure "$root/data/bodies/mh_female_average.obj" --units dm --out "$out/body_measurements.json" \
-    --vit "$out/body_measurements.vit"
+    --vit "$out/body_measurements.vit" --picture "$out/body_measurements.svg" \
+    --picture "$out/body_measurements.png"
 
 echo "== grading: the aaron tank top (drafted for FreeSewing's cisFemaleAdult36) to the measured body"
 "$bin" grade "$root/data/patterns/aaron_cisFemaleAdult36.json" \
@@ -51,5 +52,6 @@ echo "Open the coloured distance fields $out/spot_*.ply in MeshLab or Blender;"
 echo "the benchmark plots are in $out/bench/; the shirt pattern is drawn in $out/shirt.svg and .png;"
 echo "the curvature-flow path's unfolded strip is $out/spot_gcf_unfold.svg; the body's measurements"
 echo "(girths with their tape loops, lengths with their paths, landmarks) are in"
-echo "$out/body_measurements.json and, for Seamly2D, $out/body_measurements.vit; the aaron tank top"
+echo "$out/body_measurements.json and, for Seamly2D, $out/body_measurements.vit (drawn, front and"
+echo "side views with every tape labelled, in $out/body_measurements.svg and .png); the aaron tank top"
 echo "graded to that body is $out/aaron_graded.svg (fit table above, Pareto front aaron_pareto.png)."

@@ -4,6 +4,7 @@
 // band, not truth. The proxies (other topology, same body) must agree with their base bodies
 // within ISO 20685-1's tolerances. Skipped when the shared data is absent.
 #include <tapeline_test/measurement.h>
+#include <tapeline_test/measurement_landmarks.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -88,9 +89,6 @@ TEST(MakeHumanBodies, EveryLandmarkFoundAndGirthsNearTheRulers) {
     }
 }
 
-const std::map<std::string, double> kKnownOutside = {{"neck_base_girth", 30},
-                                                     {"mid_thigh_girth", 10}};
-
 TEST(MakeHumanBodies, ProxyMeshesAgreeWithTheirBaseBodies) {
     if (!have_data()) {
         GTEST_SKIP() << "no " << kDir;
@@ -119,25 +117,91 @@ TEST(MakeHumanBodies, ProxyMeshesAgreeWithTheirBaseBodies) {
                                m.name == "high_bust_girth" || m.name == "high_hip_girth";
             const double tol = large ? 9 : 4;
             const double diff = *v - m.value;
-            // Known to miss ISO (see measurement/README.md): the neck base plane follows the
-            // cervicale and front neck point, whose heights are ill-conditioned on smooth necks;
-            // mid-thigh follows the knee level (a flat minimum of the leg's girth). Guarded by
-            // looser bounds so that regressions still show.
-            const auto known = kKnownOutside.find(m.name);
+            // Every girth, neck base and mid-thigh included: their levels (side neck points,
+            // knee) are defined to move with the surface, not with its triangles.
             const bool out = std::abs(diff) > tol;
             std::printf("  %-18s %9.1f %9.1f %+8.1f %5.0f%s\n", m.name.c_str(), m.value, *v, diff,
-                        tol,
-                        !out                           ? ""
-                        : known != kKnownOutside.end() ? "  OUTSIDE (known)"
-                                                       : "  OUTSIDE");
-            if (known != kKnownOutside.end()) {
-                EXPECT_LT(std::abs(diff), known->second) << proxy << " " << m.name;
-                continue;
-            }
+                        tol, out ? "  OUTSIDE" : "");
+            EXPECT_LE(std::abs(diff), tol) << proxy << " " << m.name;
             outside += out ? 1 : 0;
         }
         std::printf("  %d outside the ISO tolerance\n", outside);
         EXPECT_EQ(outside, 0) << proxy;
+    }
+}
+
+// MakeHuman's arm rulers are straight lines between fixed vertices: upperarm_length from its
+// shoulder vertex (on the back of the shoulder's top, 25-50 mm inside our acromion, the lateral
+// tip) to the olecranon, lowerarm_length from the elbow's front to the wrist. Our lengths follow
+// the skin from the acromion over the olecranon to the wrist. Before the elbow was the bend of
+// the arm's centre line (it was the narrowest section, on the lateral side), both came out
+// 10-13% short. Bands: the whole arm within 5%, the upper arm within 10% (the different shoulder
+// point), both as relative errors since the bodies span 131-195 cm.
+TEST(MakeHumanBodies, ArmLengthsNearTheMakeHumanRulers) {
+    if (!have_data()) {
+        GTEST_SKIP() << "no " << kDir;
+    }
+    const auto doc = nlohmann::json::parse(std::ifstream(kDir + "measurements.json"));
+    std::printf("  %-24s %8s %8s %7s %8s %8s %7s\n", "body", "upper MH", "ours", "diff %", "arm MH",
+                "ours", "diff %");
+    for (const char* body : kBodies) {
+        BodyOptions o;
+        o.unit = LengthUnit::dm;
+        o.name = std::string(body) + ".obj";
+        const Result r = measure_file_with_skin_lengths(kDir + body + ".obj", o);
+        const auto& ruler = doc["bodies"][body]["makehuman_ruler_cm"];
+        const double upper = 10 * ruler["upperarm_length"].get<double>();
+        const double arm = upper + 10 * ruler["lowerarm_length"].get<double>();
+        const auto se = r.measurements.value("shoulder_to_elbow");
+        const auto sw = r.measurements.value("shoulder_to_wrist");
+        ASSERT_TRUE(se && sw) << body;
+        const double du = 100 * (*se - upper) / upper, da = 100 * (*sw - arm) / arm;
+        std::printf("  %-24s %8.1f %8.1f %+7.1f %8.1f %8.1f %+7.1f\n", body, upper, *se, du, arm,
+                    *sw, da);
+        EXPECT_LT(std::abs(du), 10.0) << body;
+        EXPECT_LT(std::abs(da), 5.0) << body;
+    }
+}
+
+// No T-pose body is in the shared data: each body is measured as it is and again with its arms
+// raised to horizontal about the shoulder (tapeline_test/measurement_landmarks.h: a one-joint
+// skinning that moves nothing on the torso side below the armpit, nor the neck and head). Every
+// landmark must be found on the T-pose, the armpits near the A-pose's (raising the arm turns the
+// armpit's skin but keeps its height within 1% of the stature, the junction's corner lies up to
+// 30 mm further out), and every girth that involves no arm must stay the same. Bust, high bust
+// and underbust are left out: their tape passes just below the armpit, where raising the arm
+// changes the chest, or their level follows the bust point, searched below the armpit.
+TEST(MakeHumanBodies, TPoseArmpitsFoundAndArmFreeGirthsUnchanged) {
+    if (!have_data()) {
+        GTEST_SKIP() << "no " << kDir;
+    }
+    const char* arm_free[] = {"stature",         "head_girth",     "neck_girth", "neck_base_girth",
+                              "waist_girth",     "high_hip_girth", "hip_girth",  "thigh_girth",
+                              "mid_thigh_girth", "knee_girth",     "calf_girth", "ankle_girth"};
+    for (const char* body : kBodies) {
+        BodyOptions o;
+        o.unit = LengthUnit::dm;
+        o.name = std::string(body) + ".obj";
+        const PosePair p = measure_file_a_and_t_pose(kDir + body + ".obj", o);
+        for (const auto& l : p.t_pose.landmarks.landmarks) {
+            EXPECT_TRUE(l.available()) << body << " T-pose: " << l.reason;
+        }
+        EXPECT_TRUE(p.t_pose.measurements.missing.empty()) << body;
+        const double h = p.a_pose.measurements.value("stature").value_or(0);
+        for (const char* side : {"armpit_left", "armpit_right"}) {
+            const auto a = p.a_pose.landmarks.point(side), t = p.t_pose.landmarks.point(side);
+            ASSERT_TRUE(a && t) << body << " " << side;
+            std::printf("%s %s: A-pose (%.0f, %.0f, %.0f), T-pose (%.0f, %.0f, %.0f) mm\n", body,
+                        side, (*a)[0], (*a)[1], (*a)[2], (*t)[0], (*t)[1], (*t)[2]);
+            EXPECT_NEAR((*t)[1], (*a)[1], 0.01 * h) << body << " " << side;
+            EXPECT_NEAR(std::abs((*t)[0]), std::abs((*a)[0]), 35.0) << body << " " << side;
+        }
+        for (const char* name : arm_free) {
+            const auto a = p.a_pose.measurements.value(name), t = p.t_pose.measurements.value(name);
+            ASSERT_TRUE(a && t) << body << " " << name;
+            // The posed mesh is rewritten in millimetres (rounding far below 0.01 mm).
+            EXPECT_NEAR(*t, *a, 0.05) << body << " " << name;
+        }
     }
 }
 

@@ -19,6 +19,7 @@ Measurement make(const std::string& name, MeasurementKind kind, double value) {
     m.kind = kind;
     m.value = value;
     m.iso_clause = name == "bust_girth" ? "bust girth" : "";
+    m.iso_number = name == "bust_girth" ? "5.3.4" : "";
     return m;
 }
 
@@ -43,9 +44,13 @@ TEST(SeamlyVit, RoundTripsThroughThePatternReader) {
     EXPECT_NEAR(read.values.at("waist_circ"), 731.0004, 1e-3);
     EXPECT_NEAR(read.values.at("@wrist_girth_left"), 151.25, 1e-3);
     EXPECT_NEAR(read.values.at("arm_shoulder_tip_to_wrist"), 561.5, 1e-3);
-    EXPECT_NEAR(read.values.at("@shoulder_slope"), 21.5, 1e-3);
+    EXPECT_NEAR(read.values.at("shoulder_slope_neck_side_angle"), 21.5, 1e-3);
     EXPECT_EQ(read.values.count("@not_finite"), 0u);
     EXPECT_EQ(read.values.count("leg_knee_circ"), 0u);
+    // The ISO 8559-1 clause number goes into the description of the measurements that have one.
+    EXPECT_NE(out.str().find("description=\"ISO 8559-1:2017 5.3.4 bust girth\""), std::string::npos)
+        << out.str();
+    EXPECT_EQ(out.str().find("description=", out.str().find("waist_circ")), std::string::npos);
 }
 
 TEST(SeamlyVit, EveryKnownNameIsDistinct) {
@@ -75,7 +80,16 @@ TEST(SeamlyVit, EveryKnownNameIsDistinct) {
                           "shoulder_to_elbow",
                           "shoulder_to_wrist",
                           "inseam",
-                          "outseam"}) {
+                          "outseam",
+                          "back_neck_to_waist",
+                          "front_neck_to_waist",
+                          "hps_to_bust",
+                          "cross_seam",
+                          "cross_seam_front",
+                          "cross_seam_back",
+                          "shoulder_slope",
+                          "waist_to_hips",
+                          "waist_to_armpit"}) {
         const std::string s = seamly_name(n);
         ASSERT_FALSE(s.empty()) << n;
         EXPECT_TRUE(seen.emplace(s, n).second) << n << " and " << seen[s] << " -> " << s;

@@ -195,13 +195,47 @@ TEST(SyntheticBody, FusedArmsLeaveArmLandmarksMissingAndTheRestMeasured) {
     }
 }
 
-TEST(SyntheticBody, TPoseArmpitsAreReportedAsNotImplemented) {
-    BodyOptions o;
-    o.pose = Pose::t_pose;
-    const Result r = measure_synthetic({40, 10, 90}, o);
-    EXPECT_FALSE(r.landmarks.find("armpit_left")->available());
-    EXPECT_NE(r.landmarks.find("armpit_left")->reason.find("T-pose"), std::string::npos);
-    EXPECT_TRUE(r.measurements.value("waist_girth"));
+// Horizontal arms (T-pose): the armpit is where the arm's underside meets the torso's side. The
+// arm is a tube from x = 110 mm inside the shoulder, axis at y = 1345 mm, vertical semi-axis
+// 46-48 mm over its first 180 mm (synthetic_body.h), so the armpit lies 46-48 mm below the axis
+// (±1 mm: the mesh's chords) on the torso's side (within 3 mm of its half-width: the sagittal
+// planes are a scan step apart, then bisected). The arms are separate parts, so every girth
+// without an arm equals the A-pose body's (to 0.01 mm: the waist and hip searches start from
+// the armpit level, and their golden-section search stops 0.1 mm around a flat extremum).
+TEST(SyntheticBody, TPoseArmpitsElbowsAndWristsMatchTheConstruction) {
+    for (const auto& res : kResolutions) {
+        SyntheticBodyOptions t = res.options;
+        t.arm_angle_degrees = 90;
+        const SyntheticBody body(t);
+        BodyOptions o;
+        o.pose = Pose::t_pose;
+        const Result r = measure_synthetic(t, o);
+        for (const auto& l : r.landmarks.landmarks) {
+            EXPECT_TRUE(l.available()) << res.name << ": " << l.reason;
+        }
+        EXPECT_TRUE(r.measurements.missing.empty()) << res.name;
+        for (const char* side : {"left", "right"}) {
+            const std::string s = side;
+            const int sign = s == "left" ? 1 : -1;
+            const auto ap = r.landmarks.point("armpit_" + s);
+            ASSERT_TRUE(ap) << res.name << " " << s;
+            const double below = body.arm_start(sign)[1] - (*ap)[1];
+            EXPECT_GE(below, 46.0 - 1) << res.name << " " << s;
+            EXPECT_LE(below, 48.0 + 1) << res.name << " " << s;
+            EXPECT_NEAR(sign * (*ap)[0], body.torso_half_width((*ap)[1]), 3.0) << res.name << s;
+            const Vec3 e = r.landmarks.find("elbow_" + s)->axis_point;
+            const Vec3 w = r.landmarks.find("wrist_" + s)->axis_point;
+            EXPECT_NEAR(body.arm_parameter(sign, e), SyntheticBody::kElbowT, 6.0) << s;
+            EXPECT_NEAR(body.arm_parameter(sign, w), SyntheticBody::kWristT, 6.0) << s;
+        }
+        const Result a = measure_synthetic(res.options);
+        for (const char* g :
+             {"stature", "neck_girth", "neck_base_girth", "waist_girth", "hip_girth", "thigh_girth",
+              "mid_thigh_girth", "knee_girth", "calf_girth", "ankle_girth"}) {
+            ASSERT_TRUE(r.measurements.value(g) && a.measurements.value(g)) << g;
+            EXPECT_NEAR(*r.measurements.value(g), *a.measurements.value(g), 0.01) << res.name << g;
+        }
+    }
 }
 
 }  // namespace

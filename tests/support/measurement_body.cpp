@@ -22,16 +22,6 @@ using SurfaceMesh = CGAL::Surface_mesh<Epick::Point_3>;
 using Polyhedron = CGAL::Polyhedron_3<Epick>;
 namespace meas = tapeline::measurement;
 
-Result flatten(meas::BodyMeasurements&& m, double seconds) {
-    Result r;
-    r.frame = m.frame;
-    r.landmarks = std::move(m.landmarks);
-    r.measurements = std::move(m.measurements);
-    r.report = std::move(m.report);
-    r.seconds = seconds;
-    return r;
-}
-
 meas::LandmarkOverrides overrides_from(const std::string& path) {
     return path.empty() ? meas::LandmarkOverrides{} : meas::read_landmark_overrides(path);
 }
@@ -57,8 +47,8 @@ Result measure_built(const std::vector<Vec3>& points, const Triangles& triangles
     const auto o = overrides_from(overrides);
     const auto t0 = std::chrono::steady_clock::now();
     auto m = meas::measure_body(mesh, options, {}, o);
-    return flatten(std::move(m),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return to_result(std::move(m),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace
@@ -69,8 +59,8 @@ Result measure_file(const std::string& path, const BodyOptions& options,
     const auto o = overrides_from(overrides);
     const auto t0 = std::chrono::steady_clock::now();
     auto m = meas::measure_body(loaded.mesh, options, measure, o);
-    return flatten(std::move(m),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return to_result(std::move(m),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 Result measure_mesh(const std::vector<Vec3>& points, const Triangles& triangles,
@@ -91,8 +81,8 @@ Result measure_synthetic(const SyntheticBodyOptions& synthetic, const BodyOption
     const auto t0 = std::chrono::steady_clock::now();
     const meas::Body b = meas::make_body(body.points(), body.triangles(), o);
     auto m = meas::measure_body(b, {}, overrides_from(overrides));
-    return flatten(std::move(m),
-                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    return to_result(std::move(m),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 SliceComparison compare_with_cgal_slicer(const SyntheticBodyOptions& synthetic, const Vec3& point,

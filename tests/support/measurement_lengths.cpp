@@ -4,9 +4,11 @@
 #include <tapeline/geodesic/exact_mmp.h>
 #include <tapeline/measurement/lengths.h>
 #include <tapeline/measurement/measure.h>
+#include <tapeline/measurement/synthetic_body.h>
 #include <tapeline_test/measurement.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <chrono>
@@ -32,6 +34,8 @@ LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptio
     const geo::GeodesicPathSolver<SurfaceMesh, NP> solver(tm);
     const auto plan = meas::plan_skin_lengths(at, m.landmarks);
     meas::take_skin_lengths(solver, at, m.frame, plan, m.measurements);
+    meas::measure_cross_seam(tm, m.frame, m.landmarks, m.measurements);
+    meas::measure_shoulder_slope(m.landmarks, m.measurements);
     out.length_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (const auto& s : plan.lengths) {
@@ -53,6 +57,35 @@ LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptio
     out.result.measurements = std::move(m.measurements);
     out.result.report = std::move(m.report);
     return out;
+}
+
+Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
+                                    const std::string& overrides) {
+    const meas::SyntheticBody body(synthetic);
+    std::vector<Epick::Point_3> pts;
+    for (const auto& p : body.points()) {
+        pts.emplace_back(p[0], p[1], p[2]);
+    }
+    std::vector<std::vector<std::size_t>> polys;
+    for (const auto& t : body.triangles()) {
+        polys.push_back({t[0], t[1], t[2]});
+    }
+    SurfaceMesh tm;
+    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, tm);
+    BodyOptions o;
+    o.unit = meas::LengthUnit::mm;
+    const auto t0 = std::chrono::steady_clock::now();
+    auto m = meas::measure_body(
+        tm, o, {},
+        overrides.empty() ? meas::LandmarkOverrides{} : meas::read_landmark_overrides(overrides));
+    meas::measure_cross_seam(tm, m.frame, m.landmarks, m.measurements);
+    Result r;
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.frame = m.frame;
+    r.landmarks = std::move(m.landmarks);
+    r.measurements = std::move(m.measurements);
+    r.report = std::move(m.report);
+    return r;
 }
 
 }  // namespace tapeline_test::measurement

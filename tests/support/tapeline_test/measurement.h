@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tapeline_test::measurement {
@@ -25,6 +26,19 @@ struct Result {
     MeasureReport report;
     double seconds = 0;  ///< wall clock of the whole call (load excluded)
 };
+
+/// Moves a measure_body result (measurement::BodyMeasurements, or anything with the same members)
+/// into a Result; a template so that this header stays free of CGAL.
+template <class BodyMeasurements>
+Result to_result(BodyMeasurements&& m, double seconds) {
+    Result r;
+    r.frame = m.frame;
+    r.landmarks = std::move(m.landmarks);
+    r.measurements = std::move(m.measurements);
+    r.report = std::move(m.report);
+    r.seconds = seconds;
+    return r;
+}
 
 enum class MeshKind { surface_mesh, polyhedron };
 
@@ -71,5 +85,11 @@ struct LengthsResult {
     double length_seconds = 0;  ///< measure_skin_lengths alone
 };
 LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptions& options);
+
+/// The synthetic body as a Surface_mesh<Epick>, measure_body on it, then measure_cross_seam
+/// (lengths.h) only: the geodesic lengths need one connected skin, which the synthetic body
+/// (a union of overlapping parts) is not. `overrides` is a landmark file path or empty.
+Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
+                                    const std::string& overrides = "");
 
 }  // namespace tapeline_test::measurement

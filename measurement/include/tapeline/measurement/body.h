@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tapeline::measurement {
@@ -106,11 +107,14 @@ inline Body make_body(std::vector<Vec3> points, std::vector<std::array<std::uint
     return body;
 }
 
-/// Builds a Body from a CGAL triangle mesh (FaceListGraph); named parameter: vertex_point_map.
-/// A face with other than three vertices is a TopologyError naming it.
-template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
-Body make_body(const TriangleMesh& tm, const BodyOptions& options,
-               const NamedParameters& np = CGAL::parameters::default_values()) {
+namespace internal {
+
+/// The vertices (input coordinates, as doubles) and triangles of a CGAL triangle mesh
+/// (FaceListGraph; named parameter vertex_point_map). A face with other than three vertices is a
+/// TopologyError naming `what` and the face.
+template <class TriangleMesh, class NamedParameters>
+std::pair<std::vector<Vec3>, std::vector<std::array<std::uint32_t, 3>>> triangle_soup(
+    const TriangleMesh& tm, const std::string& what, const NamedParameters& np) {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
     const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
@@ -136,7 +140,7 @@ Body make_body(const TriangleMesh& tm, const BodyOptions& options,
             ++k;
         }
         if (k != 3) {
-            throw TopologyError(options.name + ": face " + std::to_string(f_index) + " has " +
+            throw TopologyError(what + ": face " + std::to_string(f_index) + " has " +
                                 std::to_string(k) +
                                 " vertices; a body mesh must be triangulated "
                                 "(tapeline::read_triangle_mesh does it)");
@@ -144,6 +148,17 @@ Body make_body(const TriangleMesh& tm, const BodyOptions& options,
         tris.push_back(t);
         ++f_index;
     }
+    return {std::move(points), std::move(tris)};
+}
+
+}  // namespace internal
+
+/// Builds a Body from a CGAL triangle mesh (FaceListGraph); named parameter: vertex_point_map.
+/// A face with other than three vertices is a TopologyError naming it.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Body make_body(const TriangleMesh& tm, const BodyOptions& options,
+               const NamedParameters& np = CGAL::parameters::default_values()) {
+    auto [points, tris] = internal::triangle_soup(tm, options.name, np);
     return make_body(std::move(points), std::move(tris), options);
 }
 

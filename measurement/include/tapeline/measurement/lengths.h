@@ -5,21 +5,31 @@
 // Every length is a chain of waypoints on the surface (landmarks snapped to their nearest surface
 // point, or points found by casting a ray from inside the body, which hits the skin of the part
 // the ray starts in first), joined by geodesic paths; leg lengths end at the ankle and add the
-// ankle's height (the tape then hangs straight down to the floor). Definitions: measurement/README.
+// ankle's height (the tape then hangs straight down to the floor). The crotch length (cross seam)
+// is the exception: a taut tape in the mid-sagittal plane (measure_cross_seam), not a geodesic.
+// Definitions: measurement/README.
 #pragma once
 
 #include <tapeline/geodesic/curvature_flow.h>
 #include <tapeline/geodesic/sources.h>
 #include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/iso8559.h>
 #include <tapeline/measurement/measurement_types.h>
+#include <tapeline/measurement/shoulder_slope.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
+#include <CGAL/Polygon_mesh_slicer.h>
+#include <CGAL/convex_hull_2.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -253,6 +263,46 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
                 return waist_side(s);
             });
     }
+    // Back neck point (cervicale) to the waist at the back midline (ISO 8559-1 5.4.5), and the
+    // front neck point to the waist at the front midline: both ends on the midline, so the
+    // shortest path follows the spine / runs down between the breasts.
+    add({"back_neck_to_waist", "", "", {}, {}, 0}, {"cervicale", "waist_back"}, [&](auto& s) {
+        s.waypoints = {at.nearest(P("cervicale")), at.nearest(P("waist_back"))};
+        return std::string();
+    });
+    add({"front_neck_to_waist", "", "", {}, {}, 0}, {"front_neck", "waist_front"}, [&](auto& s) {
+        s.waypoints = {at.nearest(P("front_neck")), at.nearest(P("waist_front"))};
+        return std::string();
+    });
+    // HPS (side neck point) to the bust point of the same side.
+    {
+        const std::string side = side_of({"side_neck", "bust"});
+        const std::string hps = "side_neck_" + side, bust = "bust_" + side;
+        add({"hps_to_bust", "", "hpsToBust", {}, {}, 0}, {hps, bust}, [&](auto& s) {
+            s.waypoints = {at.nearest(P(hps)), at.nearest(P(bust))};
+            return std::string();
+        });
+    }
+    // ISO's across-back shoulder width passes over the back neck point (5.4.3); our
+    // shoulder_width_back (FreeSewing's shoulderToShoulder) crosses the back lower, at the
+    // acromions' height.
+    add({"across_back_shoulder_width", "", "", {}, {}, 0},
+        {"acromion_left", "cervicale", "acromion_right"}, [&](auto& s) {
+            s.waypoints = {at.nearest(P("acromion_left")), at.nearest(P("cervicale")),
+                           at.nearest(P("acromion_right"))};
+            return std::string();
+        });
+    // Back neck point over the shoulder point and the elbow to the wrist (ISO 5.4.17, "sleeve
+    // length"), on the same side as the arm lengths.
+    {
+        const std::string side = side_of({"acromion", "elbow", "wrist"});
+        const std::string a = "acromion_" + side, e = "elbow_" + side, w = "wrist_" + side;
+        add({"back_neck_to_wrist", "", "", {}, {}, 0}, {"cervicale", a, e, w}, [&](auto& s) {
+            s.waypoints = {at.nearest(P("cervicale")), at.nearest(P(a)), at.nearest(P(e)),
+                           at.nearest(P(w))};
+            return std::string();
+        });
+    }
     return plan;
 }
 
@@ -299,11 +349,246 @@ void take_skin_lengths(const geodesic::GeodesicPathSolver<TriangleMesh, NamedPar
             m.points.push_back({m.points.back()[0], 0.0, m.points.back()[2]});
         }
         m.value = length + s.floor_drop;
+        apply_iso8559(m);
         set.add(std::move(m));
     }
     for (const auto& miss : plan.missing) {
         set.add_missing(miss.name, miss.reason);
     }
+}
+
+namespace internal {
+
+/// Length of a polyline.
+inline double polyline_length(const std::vector<Vec3>& p) {
+    double l = 0;
+    for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+        l += std::hypot(p[i + 1][0] - p[i][0], p[i + 1][1] - p[i][1], p[i + 1][2] - p[i][2]);
+    }
+    return l;
+}
+
+/// The taut tape under a sagittal outline: `arc` runs (z, y) from A down and back up to B, A and
+/// B the highest points; the tape is the convex hull of the arc (and `extra` points the tape must
+/// pass over) without its top edge A-B, from A to B. Empty when A or B is not on the hull.
+inline std::vector<std::array<double, 2>> tape_under(
+    const std::vector<std::array<double, 2>>& arc,
+    const std::vector<std::array<double, 2>>& extra) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::vector<K::Point_2> in, hull;
+    for (const auto* v : {&arc, &extra}) {
+        for (const auto& q : *v) {
+            in.emplace_back(q[0], q[1]);
+        }
+    }
+    CGAL::convex_hull_2(in.begin(), in.end(), std::back_inserter(hull));  // counter-clockwise
+    const K::Point_2 a(arc.front()[0], arc.front()[1]), b(arc.back()[0], arc.back()[1]);
+    const auto ia = std::find(hull.begin(), hull.end(), a) - hull.begin();
+    const auto ib = std::find(hull.begin(), hull.end(), b) - hull.begin();
+    const auto n = static_cast<std::ptrdiff_t>(hull.size());
+    if (ia == n || ib == n || ia == ib) {
+        return {};
+    }
+    // Of the two hull chains from A to B, the one through the lowest hull point.
+    std::ptrdiff_t low = 0;
+    for (std::ptrdiff_t i = 1; i < n; ++i) {
+        low = hull[i].y() < hull[low].y() ? i : low;
+    }
+    const bool forward = ((low - ia + n) % n) <= ((ib - ia + n) % n);
+    std::vector<std::array<double, 2>> out;
+    for (std::ptrdiff_t i = ia;; i = (i + (forward ? 1 : n - 1)) % n) {
+        out.push_back({hull[i].x(), hull[i].y()});
+        if (i == ib) {
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace internal
+
+/// Crotch length (cross seam): the tape from the waist at the front midline down through the
+/// crotch and up to the waist at the back midline, held in the mid-sagittal plane (x = the crotch
+/// point's x), taut: the convex hull of the body's outline in that plane below the waist, which
+/// also passes over the hip tape's back point (the `hip_back` landmark), so it bridges the cleft
+/// between the buttocks as a tailor's tape laid across them does. Split where it passes under the
+/// crotch point (same z): cross_seam_front and cross_seam_back, whose sum is cross_seam.
+/// Measurements that cannot be taken are added to `missing` with the reason.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+void measure_cross_seam(const TriangleMesh& tm, const BodyFrame& frame, const LandmarkSet& lm,
+                        MeasurementSet& set,
+                        const NamedParameters& np = CGAL::parameters::default_values()) {
+    const std::vector<std::string> names = {"cross_seam", "cross_seam_front", "cross_seam_back"};
+    auto fail = [&](const std::string& why) {
+        for (const auto& n : names) {
+            set.add_missing(n, n + ": " + why);
+        }
+    };
+    for (const char* n : {"crotch", "waist_front", "waist_back"}) {
+        const Landmark* l = lm.find(n);
+        if (!l || !l->available()) {
+            fail(l ? l->reason : std::string(n) + ": unknown landmark");
+            return;
+        }
+    }
+    const Vec3 crotch = *lm.point("crotch"), wf = *lm.point("waist_front"),
+               wb = *lm.point("waist_back");
+    const double xc = crotch[0], yw = 0.5 * (wf[1] + wb[1]);
+
+    // The section by the plane x = xc (input coordinates: rows[0] . p = xc / scale).
+    using GeomTraits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+    using VertexPointMap =
+        typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+    using CGAL::parameters::choose_parameter;
+    using CGAL::parameters::get_parameter;
+    const VertexPointMap vpm =
+        choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                         CGAL::get_const_property_map(CGAL::vertex_point, tm));
+    const GeomTraits traits =
+        choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
+    CGAL::Polygon_mesh_slicer<TriangleMesh, GeomTraits, VertexPointMap> slicer(tm, vpm, traits);
+    const auto& r0 = frame.rows[0];
+    std::vector<std::vector<typename GeomTraits::Point_3>> polylines;
+    slicer(typename GeomTraits::Plane_3(r0[0], r0[1], r0[2], -xc / frame.scale),
+           std::back_inserter(polylines));
+
+    // The outline crossing the waist level nearest to both waist points; its arc below the waist.
+    using P2 = std::array<double, 2>;  // (z, y)
+    std::vector<P2> best_arc;
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& pl : polylines) {
+        std::vector<P2> q;
+        for (const auto& p : pl) {
+            const Vec3 c = frame.to_canonical(
+                {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+            q.push_back({c[2], c[1]});
+        }
+        if (q.size() < 4 || q.front() != q.back()) {
+            continue;  // open polylines only come from an open mesh, which make_body refuses
+        }
+        q.pop_back();
+        const std::size_t n = q.size();
+        // Crossings of y = yw: (edge index, z of the crossing).
+        std::vector<std::pair<std::size_t, double>> cross;
+        for (std::size_t i = 0; i < n; ++i) {
+            const P2 &a = q[i], &b = q[(i + 1) % n];
+            if ((a[1] >= yw) != (b[1] >= yw)) {
+                const double t = (yw - a[1]) / (b[1] - a[1]);
+                cross.push_back({i, a[0] + t * (b[0] - a[0])});
+            }
+        }
+        if (cross.size() < 2) {
+            continue;
+        }
+        auto nearest = [&](double z) {
+            std::size_t k = 0;
+            for (std::size_t j = 1; j < cross.size(); ++j) {
+                k = std::abs(cross[j].second - z) < std::abs(cross[k].second - z) ? j : k;
+            }
+            return k;
+        };
+        const std::size_t kf = nearest(wf[2]), kb = nearest(wb[2]);
+        const double off =
+            std::max(std::abs(cross[kf].second - wf[2]), std::abs(cross[kb].second - wb[2]));
+        if (kf == kb || off >= best) {
+            continue;
+        }
+        // Two arcs between the crossings; the one below the waist holds the lowest point.
+        auto arc_from = [&](std::size_t from, double zfrom, std::size_t to, double zto) {
+            std::vector<P2> arc{{zfrom, yw}};
+            for (std::size_t i = (from + 1) % n;; i = (i + 1) % n) {
+                arc.push_back(q[i]);
+                if (i == to) {
+                    break;
+                }
+            }
+            arc.push_back({zto, yw});
+            return arc;
+        };
+        std::vector<P2> a1 =
+            arc_from(cross[kf].first, cross[kf].second, cross[kb].first, cross[kb].second);
+        std::vector<P2> a2 =
+            arc_from(cross[kb].first, cross[kb].second, cross[kf].first, cross[kf].second);
+        std::reverse(a2.begin(), a2.end());  // both from the front crossing to the back one
+        auto lowest = [](const std::vector<P2>& a) {
+            double y = std::numeric_limits<double>::infinity();
+            for (const auto& p : a) {
+                y = std::min(y, p[1]);
+            }
+            return y;
+        };
+        best = off;
+        best_arc = lowest(a1) < lowest(a2) ? a1 : a2;
+    }
+    if (best_arc.empty() || best > 0.03 * frame.height) {
+        fail(
+            "the mid-sagittal section (x = the crotch point's) has no outline through the "
+            "waist front and back points");
+        return;
+    }
+    for (const auto& p : best_arc) {
+        if (p[1] > yw + 1e-9) {
+            fail("the mid-sagittal outline rises above the waist between the waist points");
+            return;
+        }
+    }
+    std::vector<P2> extra;
+    if (const auto hip = lm.point("hip_back")) {
+        extra.push_back({(*hip)[2], (*hip)[1]});
+    }
+    const std::vector<P2> tape = internal::tape_under(best_arc, extra);
+    if (tape.size() < 2) {
+        fail("the waist points are not on the taut tape of the mid-sagittal outline");
+        return;
+    }
+    // Split under the crotch point: the lowest crossing of z = crotch z.
+    std::size_t split = 0;
+    P2 at{0, std::numeric_limits<double>::infinity()};
+    for (std::size_t i = 0; i + 1 < tape.size(); ++i) {
+        const P2 &a = tape[i], &b = tape[i + 1];
+        if ((a[0] >= crotch[2]) != (b[0] >= crotch[2])) {
+            const double t = (crotch[2] - a[0]) / (b[0] - a[0]);
+            const double y = a[1] + t * (b[1] - a[1]);
+            if (y < at[1]) {
+                at = {crotch[2], y};
+                split = i;
+            }
+        }
+    }
+    if (!std::isfinite(at[1])) {
+        fail("the crotch point is not between the waist front and back");
+        return;
+    }
+    auto to3 = [&](const P2& p) { return Vec3{xc, p[1], p[0]}; };
+    std::vector<Vec3> front, back;
+    for (std::size_t i = 0; i <= split; ++i) {
+        front.push_back(to3(tape[i]));
+    }
+    front.push_back(to3(at));
+    back.push_back(to3(at));
+    for (std::size_t i = split + 1; i < tape.size(); ++i) {
+        back.push_back(to3(tape[i]));
+    }
+    auto make = [&](const std::string& name, const std::string& freesewing,
+                    std::vector<Vec3> points) {
+        Measurement m;
+        m.name = name;
+        m.kind = MeasurementKind::length;
+        m.freesewing = freesewing;
+        m.landmarks = {"crotch", "waist_front", "waist_back"};
+        if (lm.point("hip_back")) {
+            m.landmarks.push_back("hip_back");
+        }
+        m.value = internal::polyline_length(points);
+        m.points = std::move(points);
+        apply_iso8559(m);
+        set.add(std::move(m));
+    };
+    std::vector<Vec3> all = front;
+    all.insert(all.end(), back.begin() + 1, back.end());
+    make("cross_seam", "crossSeam", all);
+    make("cross_seam_front", "crossSeamFront", front);
+    make("cross_seam_back", "", back);
 }
 
 /// One-shot: the lengths along the skin of a body mesh (the mesh measure_body measured, with its
@@ -316,6 +601,8 @@ double measure_skin_lengths(const TriangleMesh& tm, const BodyFrame& frame,
     const SkinLocator<TriangleMesh, NamedParameters> at(tm, frame, np);
     const geodesic::GeodesicPathSolver<TriangleMesh, NamedParameters> solver(tm, np);
     take_skin_lengths(solver, at, frame, plan_skin_lengths(at, landmarks), set);
+    measure_cross_seam(tm, frame, landmarks, set, np);
+    measure_shoulder_slope(landmarks, set);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -117,6 +117,9 @@ struct Measurement {
     /// The ISO 8559-1:2017 clause, named by its title ("waist girth"); empty when ISO 8559-1 has
     /// no such item.
     std::string iso_clause;
+    /// Its ISO 8559-1:2017 clause number ("5.3.10"); empty where no source states one
+    /// (iso8559.h holds the table and its source).
+    std::string iso_number;
     std::string freesewing;  ///< FreeSewing measurement name ("waist"); empty when none
     /// Canonical mm. Girths: the tape loop (the convex hull of the section, in order, closed
     /// implicitly). Lengths: the path from start to end. Heights: floor point, then top point.

@@ -45,6 +45,15 @@ inline std::string seamly_name(const std::string& name) {
         {"shoulder_to_wrist", "arm_shoulder_tip_to_wrist"},
         {"inseam", "leg_crotch_to_floor"},
         {"outseam", "leg_waist_side_to_floor"},
+        {"back_neck_to_waist", "neck_back_to_waist_b"},
+        {"front_neck_to_waist", "neck_front_to_waist_flat_f"},
+        {"hps_to_bust", "bustpoint_to_neck_side"},
+        {"cross_seam", "crotch_length"},
+        {"cross_seam_front", "crotch_length_f"},
+        {"cross_seam_back", "crotch_length_b"},
+        {"shoulder_slope", "shoulder_slope_neck_side_angle"},
+        {"waist_to_hips", "waist_to_hip_side"},
+        {"waist_to_armpit", "armpit_to_waist_side"},
     };
     const auto it = names.find(name);
     return it == names.end() ? std::string() : it->second;
@@ -82,7 +91,12 @@ inline void write_seamly_individual(std::ostream& out, const MeasurementSet& set
         std::snprintf(value, sizeof value, "%.3f", m.value);
         const std::string full = m.iso_clause.empty() ? m.name : m.iso_clause;
         out << "        <m name=\"" << xml_escape(name) << "\" value=\"" << value
-            << "\" full_name=\"" << xml_escape(full) << "\"/>\n";
+            << "\" full_name=\"" << xml_escape(full) << "\"";
+        if (!m.iso_number.empty()) {
+            out << " description=\"" << xml_escape("ISO 8559-1:2017 " + m.iso_number + " " + full)
+                << "\"";
+        }
+        out << "/>\n";
     }
     out << "    </body-measurements>\n"
         << "</vit>\n";

@@ -6,10 +6,11 @@
 // notches, seam-mark ticks (red), the scale bar, and the SVG's text — piece names, cut counts,
 // seam names (red, as the seam-mark ticks), the scale bar's label — at the SVG's positions,
 // anchors and font sizes, in the built-in 5 × 8 bitmap font (internal/bitmap_font.h; no font
-// library). Glyphs are scaled to the font-size (one font pixel = a tenth of the em, capitals
-// 0.7 em) and box-filtered: a pixel's coverage is the area of it that font pixels cover. At
-// 2 px/mm all text is legible; at 1 px/mm the 10 mm names are, the 5–6 mm labels blur.
-// Characters outside printable ASCII are drawn as a hollow box, one per code point.
+// library; the canvas, font and encoder are core's, core/raster.h). Glyphs are scaled to the
+// font-size (one font pixel = a tenth of the em, capitals 0.7 em) and box-filtered: a pixel's
+// coverage is the area of it that font pixels cover. At 2 px/mm all text is legible; at 1 px/mm the
+// 10 mm names are, the 5–6 mm labels blur. Characters outside printable ASCII are drawn as a hollow
+// box, one per code point.
 //
 // Anti-aliasing: each stroke segment covers a pixel by clamp(w/2 + 1/2 − d, 0, 1), d the distance
 // from the pixel centre to the segment (a box filter of one pixel across the edge), blended
@@ -20,11 +21,11 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/core/png_encode.h>
+#include <tapeline/core/raster.h>
 #include <tapeline/pattern/internal/bitmap_font.h>
 #include <tapeline/pattern/pattern.h>
 #include <tapeline/pattern/svg.h>
-
-#include <png.h>
 
 #include <algorithm>
 #include <array>
@@ -44,10 +45,7 @@ struct PngOptions {
     bool draw_text = true;                // names, cut counts, seam names, scale-bar label
 };
 
-struct RgbaImage {
-    std::size_t width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;  // row-major, top row first
-};
+using RgbaImage = raster::RgbaImage;  // the canvas and encoder live in core/raster.h
 
 struct PngReport {
     std::size_t width_px = 0, height_px = 0;
@@ -58,219 +56,43 @@ struct PngReport {
 
 namespace internal {
 
-struct Rgb {
-    double r, g, b;
-};
+using Rgb = raster::Rgb;
+using TextAnchor = raster::TextAnchor;
 
-/// SVG's text-anchor: x is the left end of the text, or its middle.
-enum class TextAnchor { start, middle };
-
+/// core's raster::Canvas in pattern's Point2 (page millimetres, y down).
 class Canvas {
 public:
-    Canvas(RgbaImage& img, double ppmm) : img_(img), s_(ppmm) {}
+    Canvas(RgbaImage& img, double ppmm) : c_(img, ppmm) {}
 
-    /// A stroke from a to b in page millimetres (y down), width in mm.
     void segment(Point2 a, Point2 b, double width_mm, Rgb c) {
-        a = s_ * a;
-        b = s_ * b;
-        const double hw = 0.5 * std::max(width_mm * s_, 1.0);
-        const long x0 = std::max(0L, long(std::floor(std::min(a.x, b.x) - hw - 1)));
-        const long x1 =
-            std::min(long(img_.width) - 1, long(std::ceil(std::max(a.x, b.x) + hw + 1)));
-        const long y0 = std::max(0L, long(std::floor(std::min(a.y, b.y) - hw - 1)));
-        const long y1 =
-            std::min(long(img_.height) - 1, long(std::ceil(std::max(a.y, b.y) + hw + 1)));
-        for (long y = y0; y <= y1; ++y) {
-            for (long x = x0; x <= x1; ++x) {
-                const double d = distance_to_segment({x + 0.5, y + 0.5}, a, b);
-                const double cov = std::clamp(hw + 0.5 - d, 0.0, 1.0);
-                if (cov > 0) {
-                    blend(std::size_t(x), std::size_t(y), c, cov);
-                }
-            }
-        }
+        c_.segment(p(a), p(b), width_mm, c);
     }
 
     void polyline(const std::vector<Point2>& pts, double width_mm, Rgb c, double dash_mm = 0,
                   double gap_mm = 0) {
-        if (dash_mm <= 0) {
-            for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-                segment(pts[i], pts[i + 1], width_mm, c);
-            }
-            return;
+        std::vector<raster::Point> q;
+        q.reserve(pts.size());
+        for (const Point2& x : pts) {
+            q.push_back(p(x));
         }
-        // Dashes continue across vertices.
-        bool on = true;
-        double left = dash_mm;
-        for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-            Point2 a = pts[i];
-            const Point2 b = pts[i + 1];
-            double len = distance(a, b);
-            while (len > 0) {
-                const double step = std::min(left, len);
-                const Point2 e = a + (step / len) * (b - a);
-                if (on) {
-                    segment(a, e, width_mm, c);
-                }
-                a = e;
-                len -= step;
-                left -= step;
-                if (left <= 1e-12) {
-                    on = !on;
-                    left = on ? dash_mm : gap_mm;
-                }
-            }
-        }
+        c_.polyline(q, width_mm, c, dash_mm, gap_mm);
     }
 
-    void fill_rect(Point2 a, Point2 b, Rgb c) {
-        a = s_ * a;
-        b = s_ * b;
-        for (long y = std::max(0L, long(a.y));
-             y < std::min(long(img_.height), long(std::ceil(b.y))); ++y) {
-            for (long x = std::max(0L, long(a.x));
-                 x < std::min(long(img_.width), long(std::ceil(b.x))); ++x) {
-                // Coverage of the pixel by the rectangle, per axis.
-                const double cx =
-                    std::clamp(std::min(b.x, x + 1.0) - std::max(a.x, double(x)), 0.0, 1.0);
-                const double cy =
-                    std::clamp(std::min(b.y, y + 1.0) - std::max(a.y, double(y)), 0.0, 1.0);
-                blend(std::size_t(x), std::size_t(y), c, cx * cy);
-            }
-        }
-    }
+    void fill_rect(Point2 a, Point2 b, Rgb c) { c_.fill_rect(p(a), p(b), c); }
 
-    /// Text with its baseline at `at` (page mm), as an SVG <text> of that font-size and anchor.
     void text(const std::string& s, Point2 at, double font_size_mm, TextAnchor anchor, Rgb c) {
-        const std::vector<const Glyph*> glyphs = text_glyphs(s);
-        if (glyphs.empty() || !(font_size_mm > 0)) {
-            return;
-        }
-        const double u = font_size_mm / kFontPixelsPerEm * s_;  // one font pixel, in pixels
-        const double ink_w = double(glyphs.size() * kGlyphAdvance - 1) * u;
-        const double left = at.x * s_ - (anchor == TextAnchor::middle ? 0.5 * ink_w : 0.0);
-        const double top = at.y * s_ - kGlyphRowsAboveBaseline * u;
-        const long x0 = std::max(0L, long(std::floor(left)));
-        const long x1 = std::min(long(img_.width), long(std::ceil(left + ink_w)));
-        const long y0 = std::max(0L, long(std::floor(top)));
-        const long y1 = std::min(long(img_.height), long(std::ceil(top + kGlyphRows * u)));
-        if (x0 >= x1 || y0 >= y1) {
-            return;
-        }
-        // Coverage summed over the string before blending once, so that adjacent font pixels
-        // sharing an image pixel add up instead of compositing over each other (no seams).
-        const std::size_t w = std::size_t(x1 - x0);
-        std::vector<double> cov(w * std::size_t(y1 - y0), 0.0);
-        for (std::size_t g = 0; g < glyphs.size(); ++g) {
-            for (int row = 0; row < kGlyphRows; ++row) {
-                const std::uint8_t bits = (*glyphs[g])[std::size_t(row)];
-                for (int col = 0; col < kGlyphColumns; ++col) {
-                    if (!(bits & (0x10 >> col))) {
-                        continue;
-                    }
-                    const double ax = left + double(g * kGlyphAdvance + std::size_t(col)) * u;
-                    const double ay = top + row * u;
-                    const double bx = ax + u, by = ay + u;
-                    for (long y = std::max(y0, long(std::floor(ay)));
-                         y < std::min(y1, long(std::ceil(by))); ++y) {
-                        const double cy = std::min(by, y + 1.0) - std::max(ay, double(y));
-                        for (long x = std::max(x0, long(std::floor(ax)));
-                             x < std::min(x1, long(std::ceil(bx))); ++x) {
-                            const double cx = std::min(bx, x + 1.0) - std::max(ax, double(x));
-                            if (cx > 0 && cy > 0) {
-                                cov[std::size_t(y - y0) * w + std::size_t(x - x0)] += cx * cy;
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        for (long y = y0; y < y1; ++y) {
-            for (long x = x0; x < x1; ++x) {
-                const double a = std::min(1.0, cov[std::size_t(y - y0) * w + std::size_t(x - x0)]);
-                if (a > 0) {
-                    blend(std::size_t(x), std::size_t(y), c, a);
-                }
-            }
-        }
+        c_.text(s, p(at), font_size_mm, anchor, c);
     }
 
 private:
-    void blend(std::size_t x, std::size_t y, Rgb c, double a) {
-        std::uint8_t* p = &img_.rgba[4 * (y * img_.width + x)];
-        const double dst_a = p[3] / 255.0;
-        const double out_a = a + dst_a * (1 - a);
-        const double src[3] = {c.r, c.g, c.b};
-        for (int k = 0; k < 3; ++k) {
-            const double v = out_a > 0 ? (src[k] * a + p[k] / 255.0 * dst_a * (1 - a)) / out_a : 0;
-            p[k] = std::uint8_t(std::lround(255 * std::clamp(v, 0.0, 1.0)));
-        }
-        p[3] = std::uint8_t(std::lround(255 * std::clamp(out_a, 0.0, 1.0)));
-    }
-
-    RgbaImage& img_;
-    double s_;
+    static raster::Point p(const Point2& x) { return {x.x, x.y}; }
+    raster::Canvas c_;
 };
-
-inline void png_write_to_vector(png_structp png, png_bytep data, png_size_t n) {
-    auto* out = static_cast<std::vector<std::uint8_t>*>(png_get_io_ptr(png));
-    out->insert(out->end(), data, data + n);
-}
-
-inline void png_flush_nothing(png_structp) {}
-
-inline void png_error_throw(png_structp png, png_const_charp msg) {
-    *static_cast<std::string*>(png_get_error_ptr(png)) = msg;
-    png_longjmp(png, 1);
-}
-
-inline void png_warning_ignore(png_structp, png_const_charp) {}
-
-/// libpng reports errors by longjmp; this frame holds no C++ objects with destructors.
-inline bool png_encode_raw(const RgbaImage& img, double ppmm, std::vector<std::uint8_t>* out,
-                           std::string* error, png_bytep* rows) {
-    png_structp png =
-        png_create_write_struct(PNG_LIBPNG_VER_STRING, error, png_error_throw, png_warning_ignore);
-    if (!png) {
-        return false;
-    }
-    png_infop info = png_create_info_struct(png);
-    if (!info || setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return false;
-    }
-    png_set_write_fn(png, out, png_write_to_vector, png_flush_nothing);
-    png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8,
-                 PNG_COLOR_TYPE_RGB_ALPHA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
-                 PNG_FILTER_TYPE_DEFAULT);
-    const auto ppm = png_uint_32(std::lround(ppmm * 1000.0));
-    png_set_pHYs(png, info, ppm, ppm, PNG_RESOLUTION_METER);
-    png_set_rows(png, info, rows);
-    png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return true;
-}
 
 }  // namespace internal
 
 /// PNG bytes of an RGBA image; `pixels_per_mm` goes into the pHYs chunk.
-inline std::vector<std::uint8_t> encode_png(const RgbaImage& img, double pixels_per_mm) {
-    if (img.width == 0 || img.height == 0 || img.rgba.size() != 4 * img.width * img.height) {
-        throw InvalidInput("PNG encoding: image of " + std::to_string(img.width) + " × " +
-                           std::to_string(img.height) + " pixels with " +
-                           std::to_string(img.rgba.size()) + " bytes is malformed");
-    }
-    std::vector<png_bytep> rows(img.height);
-    for (std::size_t y = 0; y < img.height; ++y) {
-        rows[y] = const_cast<png_bytep>(&img.rgba[4 * y * img.width]);
-    }
-    std::vector<std::uint8_t> out;
-    std::string error = "out of memory";
-    if (!internal::png_encode_raw(img, pixels_per_mm, &out, &error, rows.data())) {
-        throw std::runtime_error("PNG encoding failed: " + error);
-    }
-    return out;
-}
+using raster::encode_png;
 
 /// The drawing as an RGBA image (see the file comment). Throws InvalidInput for a resolution that
 /// is not positive or would exceed `max_megapixels`.

@@ -2,7 +2,8 @@
 //
 // A stack of horizontal sections (every `scan_step` mm) is the backbone: the two leg sections are
 // followed upwards until they merge (crotch), the merged torso section is followed to the top of
-// the head, and every other section that merges into it on the way is an arm (armpit). Levels
+// the head, and every other section that merges into it on the way is an arm (armpit; in T-pose
+// the arms are followed by sagittal planes instead, see find_t_pose_armpits). Levels
 // found on the scan are refined by bisection or golden-section search on fresh sections. Arms
 // are sampled by planes perpendicular to their axis (both poses). Definitions, with their ISO
 // 8559-1 / ASTM D5219 terms, are in measurement/README.md.
@@ -78,9 +79,11 @@ struct LimbSample {
     double t = 0;          // distance along the axis from its start
     double perimeter = 0;  // tape length; +inf where no section was found
     double area = 0;
-    Vec3 centre{0, 0, 0};  // 3D centroid of the section's hull
-    Vec3 outer{0, 0, 0};   // hull point farthest along the reference direction
-    Vec3 front{0, 0, 0};   // hull point with the largest z
+    Vec3 centre{0, 0, 0};    // 3D centroid of the section's hull
+    Vec3 outer{0, 0, 0};     // hull point farthest along the reference direction
+    Vec3 front{0, 0, 0};     // hull point with the largest z
+    Vec3 back{0, 0, 0};      // hull point with the smallest z
+    std::vector<Vec3> hull;  // the tape, 3D
 };
 
 class LandmarkFinder {
@@ -139,7 +142,8 @@ private:
     std::size_t crotch_level_ = 0;
     std::optional<double> crotch_y_, armpit_y_[2], waist_y_, hip_y_, neck_y_, snp_y_[2];
     std::optional<std::size_t> arm_merge_level_[2];
-    int arm_section_[2] = {-1, -1};  // the arm's section at its merge level
+    int arm_section_[2] = {-1, -1};     // the arm's section at its merge level
+    std::optional<Vec3> fingertip_[2];  // T-pose: the farthest point out on each side
     double x_mid_ = 0;
 
     static double side_sign(int s) { return s == 0 ? 1.0 : -1.0; }
@@ -270,14 +274,6 @@ private:
     }
 
     void find_torso_and_armpits() {
-        if (pose_ == Pose::t_pose) {
-            // A horizontal arm meets the horizontal scan all at once: the merge test below does
-            // not locate T-pose armpits (validated on A-poses only).
-            for (int s = 0; s < 2; ++s) {
-                set_missing(std::string("armpit_") + side_name(s),
-                            "T-pose armpit search is not implemented (A-pose only)");
-            }
-        }
         if (!crotch_y_) {
             for (int s = 0; s < 2; ++s) {
                 set_missing(std::string("armpit_") + side_name(s), "needs the crotch");
@@ -286,7 +282,19 @@ private:
         }
         for (std::size_t k = crotch_level_; k + 1 < levels_.size(); ++k) {
             const int t = levels_[k].torso;
-            const int next = successor(k, t);
+            int next = successor(k, t);
+            if (next < 0) {
+                // T-pose: once the arms join, the tape around torso and arms reaches the
+                // forearms in front, and its centroid leaves the body; the section whose tape
+                // still holds it is the torso.
+                const Vec2 c = levels_[k].ps.sections[static_cast<std::size_t>(t)].centroid;
+                const auto& secs = levels_[k + 1].ps.sections;
+                for (std::size_t i = 0; i < secs.size() && next < 0; ++i) {
+                    if (inside(secs[i].hull, c)) {
+                        next = static_cast<int>(i);
+                    }
+                }
+            }
             if (next < 0) {
                 break;
             }
@@ -312,12 +320,133 @@ private:
                 refine_armpit(side, k, tc, sc);
             }
         }
-        for (int s = 0; s < 2 && pose_ == Pose::a_pose; ++s) {
+        if (pose_ == Pose::t_pose) {
+            find_t_pose_armpits();
+            return;
+        }
+        for (int s = 0; s < 2; ++s) {
             if (!armpit_y_[s]) {
                 set_missing(std::string("armpit_") + side_name(s),
                             "no arm section joins the torso above the crotch (arm fused to the "
                             "torso, or a T-pose arm level with the armpit)");
             }
+        }
+    }
+
+    /// T-pose: a horizontal arm meets the horizontal scan all at once, so the arm is followed
+    /// by sagittal planes (x = const, every scan step) from the forearm inwards instead. The
+    /// lowest point of the arm's section runs along the arm's underside, then down the torso's
+    /// side once the plane passes the junction; the armpit is the corner of that lower outline
+    /// (the point farthest from the chord joining its ends), the highest point of the junction.
+    /// The outline ends before it drops 10% of the height below the arm (where the torso's side
+    /// joins the hips' section), before a drop of 3% of the height within one step, or where the
+    /// section is lost.
+    void find_t_pose_armpits() {
+        for (int s = 0; s < 2; ++s) {
+            const double sg = side_sign(s);
+            const std::string name = std::string("armpit_") + side_name(s);
+            std::size_t tip = 0;
+            for (std::size_t v = 1; v < m_.points.size(); ++v) {
+                if (sg * m_.points[v][0] > sg * m_.points[tip][0]) {
+                    tip = v;
+                }
+            }
+            fingertip_[s] = m_.points[tip];
+            const double reach = sg * (m_.points[tip][0] - x_mid_);
+            auto at = [&](double r) {
+                return section(m_, Plane::make({x_mid_ + sg * r, 0, 0}, {1, 0, 0}, {0, 1, 0}), ws_);
+            };
+            // On these planes u = y and w = z. Start on the forearm, 60% of the way out, at the
+            // section nearest the fingertip.
+            PlaneSection ps = at(0.6 * reach);
+            int arm = ps.locate({m_.points[tip][1], m_.points[tip][2]});
+            std::vector<std::pair<double, Vec3>> lower;  // (r, lowest point of the arm)
+            double start_y = 0;
+            Vec2 arm_centroid{0, 0};  // of the arm's section on the previous plane
+            for (double r = 0.6 * reach; arm >= 0 && r > step_; r -= step_) {
+                if (!lower.empty()) {
+                    arm_centroid = ps.sections[static_cast<std::size_t>(arm)].centroid;
+                    double d = 0;
+                    const PlaneSection next = at(r);
+                    const int na =
+                        next.locate(ps.sections[static_cast<std::size_t>(arm)].centroid, &d);
+                    if (na < 0 || d > 0.02 * height_) {
+                        break;
+                    }
+                    ps = next;
+                    arm = na;
+                }
+                const Section& sec = ps.sections[static_cast<std::size_t>(arm)];
+                Vec2 low = sec.hull.front();
+                for (const auto& q : sec.hull) {
+                    if (q[0] < low[0]) {
+                        low = q;
+                    }
+                }
+                if (lower.empty()) {
+                    start_y = low[0];
+                }
+                const bool jump =
+                    !lower.empty() && low[0] < lower.back().second[1] - 0.03 * height_;
+                if (low[0] < start_y - 0.1 * height_ || jump) {
+                    if (!lower.empty() && lower.back().second[1] > start_y - 0.03 * height_) {
+                        // Dropped at once (the torso's side is steep, or the arm is a separate
+                        // part overlapping the torso): the armpit is the arm's lowest point just
+                        // before the plane reaches the torso's side.
+                        const Vec2 ac = arm_centroid;
+                        const double floor = lower.back().second[1] - 0.03 * height_;
+                        auto lowest = [&](double rr) -> std::optional<Vec3> {
+                            const PlaneSection q = at(rr);
+                            const int a = q.locate(ac);
+                            if (a < 0) {
+                                return std::nullopt;
+                            }
+                            const Section& sa = q.sections[static_cast<std::size_t>(a)];
+                            Vec2 l = sa.hull.front();
+                            for (const auto& h : sa.hull) {
+                                if (h[0] < l[0]) {
+                                    l = h;
+                                }
+                            }
+                            return q.plane.to3(l);
+                        };
+                        auto dropped = [&](double rr) {
+                            const auto l = lowest(rr);
+                            return !l || (*l)[1] < floor;
+                        };
+                        const double r_apart =
+                            bisect(dropped, lower.back().first, r, options_.level_tolerance).first;
+                        if (const auto l = lowest(r_apart)) {
+                            lower.assign(1, {r_apart, *l});
+                        }
+                    }
+                    break;
+                }
+                lower.emplace_back(r, ps.plane.to3(low));
+            }
+            if (lower.size() == 1) {  // dropped at once, see above
+                armpit_y_[s] = set_found(name, lower.front().second)[1];
+                continue;
+            }
+            if (lower.size() < 5 || lower.back().second[1] > start_y - 0.03 * height_) {
+                set_missing(name,
+                            "the T-pose arm's underside never turns down the torso's side "
+                            "(sagittal sections from the forearm inwards)");
+                continue;
+            }
+            const double r0 = lower.front().first, y0 = lower.front().second[1];
+            const double dr = lower.back().first - r0, dy = lower.back().second[1] - y0;
+            const double len = std::hypot(dr, dy);
+            double best = -1;
+            Vec3 p = lower.front().second;
+            for (const auto& [r, q] : lower) {
+                const double d = std::abs((r - r0) * dy - (q[1] - y0) * dr) / len;
+                if (d > best) {
+                    best = d;
+                    p = q;
+                }
+            }
+            armpit_y_[s] = set_found(name, p)[1];
         }
     }
 
@@ -459,8 +588,17 @@ private:
             return;
         }
         neck_y_ = levels_[best_k].y;
-        // Side neck point: going down from the neck, the first level where the frontal outline
-        // slopes by more than 45 degrees (|dx/dy| > 1): the neck's side turns into the shoulder.
+        // Side neck point: going down from the neck, the first height y where the frontal
+        // outline's chord over the `lag` below y slopes by more than 45 degrees (the lateral
+        // extent grows by more than `lag`): the neck's side turns into the shoulder. The outline
+        // bends smoothly there, so the test is only as steady as the chord is long: with a lag
+        // of one scan step (0.25% of the height) the height moved by 3-4 mm between a body and
+        // its retriangulated proxy, and the neck base girth, whose plane hangs on this height,
+        // by 12-22 mm; over 2% of the height the chord averages out the triangles (0.3-0.8 mm,
+        // girths within 1 mm; 1.25% left 1.2 mm and 4.5 mm). The scan brackets the switch,
+        // bisection on fresh sections places it.
+        const int lag_levels = std::max(1, static_cast<int>(std::lround(0.02 * height_ / step_)));
+        const double lag = lag_levels * step_;
         for (int s = 0; s < 2; ++s) {
             const double sg = side_sign(s);
             auto lateral = [&](std::size_t k) {
@@ -469,11 +607,12 @@ private:
                 return sg > 0 ? sec.hi[0] : -sec.lo[0];
             };
             std::optional<std::size_t> found;
-            for (std::size_t k = best_k; k >= 1 && levels_[k - 1].torso >= 0; --k) {
-                if (levels_[k - 1].y < a) {
+            const auto lagk = static_cast<std::size_t>(lag_levels);
+            for (std::size_t k = best_k; k >= lagk && levels_[k - lagk].torso >= 0; --k) {
+                if (levels_[k - lagk].y < a) {
                     break;
                 }
-                if (lateral(k - 1) - lateral(k) > step_) {
+                if (lateral(k - lagk) - lateral(k) > lag) {
                     found = k;  // the last level of the neck
                     break;
                 }
@@ -483,15 +622,65 @@ private:
                 set_missing(name, "the neck outline never turns into a shoulder above the armpit");
                 continue;
             }
-            const Level& lv = levels_[*found];
-            const Section& sec = lv.ps.sections[static_cast<std::size_t>(lv.torso)];
-            Vec2 best_q = sec.hull.front();
-            for (const auto& q : sec.hull) {
-                if (sg * q[0] > sg * best_q[0]) {
-                    best_q = q;
+            const Vec2 c = levels_[*found]
+                               .ps.sections[static_cast<std::size_t>(levels_[*found].torso)]
+                               .centroid;
+            auto lateral_at = [&](double y) -> std::optional<std::pair<double, Vec3>> {
+                const PlaneSection ps = horizontal(y);
+                const int t = ps.locate(c);
+                if (t < 0) {
+                    return std::nullopt;
+                }
+                const Section& sec = ps.sections[static_cast<std::size_t>(t)];
+                Vec2 best_q = sec.hull.front();
+                for (const auto& q : sec.hull) {
+                    if (sg * q[0] > sg * best_q[0]) {
+                        best_q = q;
+                    }
+                }
+                return std::make_pair(sg * best_q[0], ps.plane.to3(best_q));
+            };
+            auto turned = [&](double y) {
+                const auto here = lateral_at(y), below = lateral_at(y - lag);
+                return here && below && below->first - here->first > lag;
+            };
+            const double y_true = levels_[*found].y;
+            const double y_false = *found + 1 < levels_.size() ? levels_[*found + 1].y : y_true;
+            double y_snp = y_true;
+            if (y_false > y_true && !turned(y_false) && turned(y_true)) {
+                y_snp = bisect(turned, y_false, y_true, options_.level_tolerance).second;
+            }
+            // On a sharp corner (a flat shoulder meeting the neck: more than half of the window's
+            // growth within one scan step) the chord's top sits up to `lag` above it; there the
+            // point is the corner itself, where the outline has made half of that growth. On a
+            // smooth turn (the MakeHuman bodies: a third at most), a point inside the window is
+            // a level crossing of the outline, which moved by 2 mm between body and proxy, and
+            // the girth by 10 mm: the chord's top stays.
+            const auto top = lateral_at(y_snp), bottom = lateral_at(y_snp - lag);
+            if (top && bottom) {
+                const double growth = bottom->first - top->first;
+                double jump = 0;
+                for (double y = y_snp; y > y_snp - lag + 0.5 * step_; y -= step_) {
+                    const auto a = lateral_at(y), b = lateral_at(y - step_);
+                    if (a && b) {
+                        jump = std::max(jump, b->first - a->first);
+                    }
+                }
+                if (jump > 0.5 * growth) {
+                    const double target = top->first + 0.5 * growth;
+                    auto out = [&](double y) {
+                        const auto l = lateral_at(y);
+                        return l && l->first > target;
+                    };
+                    y_snp = bisect(out, y_snp, y_snp - lag, options_.level_tolerance).first;
                 }
             }
-            snp_y_[s] = set_found(name, lv.ps.plane.to3(best_q))[1];
+            const auto at = lateral_at(y_snp);
+            if (!at) {
+                set_missing(name, "the neck section was lost at the side neck point");
+                continue;
+            }
+            snp_y_[s] = set_found(name, at->second)[1];
         }
         // Cervicale: the back midline at the height of the side neck points.
         if (snp_y_[0] || snp_y_[1]) {
@@ -605,7 +794,14 @@ private:
             for (const auto& p : m_.points) {
                 tip = std::max(tip, sg * p[0]);
             }
-            const double r0 = sg * (*snp)[0], r1 = r0 + 0.6 * (tip - r0);
+            const double r0 = sg * (*snp)[0];
+            double r1 = r0 + 0.6 * (tip - r0);
+            // A horizontal arm continues the shoulder's top: its outline has no corner of its own
+            // out there, so the search stops 5% of the height beyond the armpit.
+            const auto ap = set_.point(std::string("armpit_") + side_name(s));
+            if (pose_ == Pose::t_pose && ap) {
+                r1 = std::min(r1, sg * (*ap)[0] + 0.05 * height_);
+            }
             const double cap = (*snp)[1] + 0.005 * height_;
             std::vector<Vec3> outline;
             for (double r = r0; r <= r1; r += 0.0025 * height_) {
@@ -629,19 +825,29 @@ private:
                 continue;
             }
             const Vec2 p0{sg * (*snp)[0], (*snp)[1]};
-            const Vec2 p1{sg * outline.back()[0], outline.back()[1]};
-            const double dx = p1[0] - p0[0], dy = p1[1] - p0[1], len = std::hypot(dx, dy);
-            double best = -1;
-            Vec3 at = outline.front();
-            for (const auto& q : outline) {
-                const double d = std::abs((sg * q[0] - p0[0]) * dy - (q[1] - p0[1]) * dx) / len;
-                if (d > best) {
-                    best = d;
-                    at = q;
-                }
-            }
-            set_found(name, at);
+            // The lateral tip of the shoulder: where the outline turns down the arm, the corner
+            // farthest from the chord joining the side neck point and the arm.
+            set_found(name, outline[farthest_from_chord(outline, sg, 0, outline.size() - 1, p0)]);
         }
+    }
+
+    /// Index in [i0, i1] of the outline point (x mirrored by sg) farthest from the chord from p0
+    /// to outline[i1].
+    static std::size_t farthest_from_chord(const std::vector<Vec3>& outline, double sg,
+                                           std::size_t i0, std::size_t i1, const Vec2& p0) {
+        const double dx = sg * outline[i1][0] - p0[0], dy = outline[i1][1] - p0[1];
+        const double len = std::max(1e-9, std::hypot(dx, dy));
+        double best = -1;
+        std::size_t at = i0;
+        for (std::size_t i = i0; i <= i1; ++i) {
+            const Vec3& q = outline[i];
+            const double d = std::abs((sg * q[0] - p0[0]) * dy - (q[1] - p0[1]) * dx) / len;
+            if (d > best) {
+                best = d;
+                at = i;
+            }
+        }
+        return at;
     }
 
     /// Samples a limb with planes perpendicular to the polyline `axis` every `h` mm; `reference`
@@ -675,7 +881,7 @@ private:
                 sample.perimeter = sec.perimeter;
                 sample.area = sec.area;
                 sample.centre = plane.to3(sec.centroid);
-                Vec2 outer = sec.hull.front(), front = sec.hull.front();
+                Vec2 outer = sec.hull.front(), front = sec.hull.front(), back = front;
                 for (const auto& q : sec.hull) {
                     if (q[0] > outer[0]) {
                         outer = q;
@@ -683,9 +889,14 @@ private:
                     if (plane.to3(q)[2] > plane.to3(front)[2]) {
                         front = q;
                     }
+                    if (plane.to3(q)[2] < plane.to3(back)[2]) {
+                        back = q;
+                    }
                 }
                 sample.outer = plane.to3(outer);
                 sample.front = plane.to3(front);
+                sample.back = plane.to3(back);
+                sample.hull = ps.tape(static_cast<std::size_t>(s));
                 out.push_back(sample);
             }
             t0 += len;
@@ -735,6 +946,9 @@ private:
                               : -1;
                 }
             }
+            if (fingertip_[s]) {
+                fingertip = *fingertip_[s];
+            }
             if (dist(fingertip, joint) < 0.1 * height_) {
                 set_missing(elbow, "the arm below the armpit was not found");
                 set_missing(wrist, "the arm below the armpit was not found");
@@ -777,9 +991,46 @@ private:
                 set_missing(elbow, "no narrowing of the arm past 30% of the way to the fingertip");
                 continue;
             }
-            const int e = static_cast<int>(*em);
-            const LimbSample& es = prof[static_cast<std::size_t>(e)];
-            set_found(elbow, es.outer, &es.centre);
+            // Elbow: where the arm's centre line bends (the section centre farthest from the
+            // chord between the upper arm, at 20% of the way, and the wrist), when it bends by
+            // more than 1% of the height; on a straight arm, the narrowing. The point is the
+            // olecranon: the section's point farthest out on the convex side of the bend (on a
+            // straight arm, the back).
+            std::size_t e = *em;
+            Vec3 convex{0, 0, -1};
+            if (wm) {
+                std::size_t a = 0;
+                while (a < *wm && (prof[a].t < 0.2 * total || !std::isfinite(prof[a].perimeter))) {
+                    ++a;
+                }
+                const Vec3 ca = prof[a].centre, cw = prof[*wm].centre;
+                const Vec3 chord = normalized(sub(cw, ca));
+                double best = 0;
+                std::size_t bend = e;
+                for (std::size_t i = a; i < *wm; ++i) {
+                    const Vec3 d = sub(prof[i].centre, ca);
+                    const double off = norm(sub(d, mul(chord, dot(d, chord))));
+                    if (std::isfinite(prof[i].perimeter) && off > best) {
+                        best = off;
+                        bend = i;
+                    }
+                }
+                if (best > 0.01 * height_) {
+                    e = bend;
+                    convex = sub(normalized(sub(prof[e].centre, ca)),
+                                 normalized(sub(cw, prof[e].centre)));
+                }
+            }
+            const LimbSample& es = prof[e];
+            Vec3 olecranon = es.back;
+            double far = -std::numeric_limits<double>::infinity();
+            for (const auto& q : es.hull) {
+                if (dot(sub(q, es.centre), convex) > far) {
+                    far = dot(sub(q, es.centre), convex);
+                    olecranon = q;
+                }
+            }
+            set_found(elbow, olecranon, &es.centre);
         }
     }
 
@@ -877,8 +1128,37 @@ private:
                 set_missing(knee, "no narrowing of the leg between the calf and the thigh");
                 continue;
             }
-            const LimbSample& ks = prof[*k];
-            set_found(knee, ks.front, &ks.centre);
+            // The smallest girth is a flat minimum: its level moved by 8-9 mm between a body and
+            // its retriangulated proxy (and the mid-thigh level, halfway up to the crotch, with
+            // it). The knee level is the centroid of the narrowing instead: levels weighted by
+            // how far their girth is below 3% above the minimum, which moves with the surface.
+            const double limit = 1.03 * prof[*k].perimeter;
+            double sw = 0, swy = 0;
+            for (std::size_t i = *c; i < prof.size(); ++i) {
+                if (prof[i].t > *crotch_y_ - 0.05 * height_) {
+                    break;
+                }
+                const double w = std::max(0.0, limit - prof[i].perimeter);
+                sw += w;
+                swy += w * prof[i].t;
+            }
+            const double y = sw > 0 ? swy / sw : prof[*k].t;
+            const Plane plane = Plane::horizontal(y);
+            const PlaneSection ps = horizontal(y);
+            const int ls = ps.locate(plane.to2(prof[*k].centre));
+            if (ls < 0) {
+                set_found(knee, prof[*k].front, &prof[*k].centre);
+                continue;
+            }
+            const Section& sec = ps.sections[static_cast<std::size_t>(ls)];
+            Vec2 front = sec.hull.front();
+            for (const auto& q : sec.hull) {
+                if (q[1] < front[1]) {  // w = -z
+                    front = q;
+                }
+            }
+            const Vec3 centre = plane.to3(sec.centroid);
+            set_found(knee, plane.to3(front), &centre);
         }
     }
 };

@@ -54,7 +54,66 @@ struct BodyMesh {
     std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k joins corners k and k+1
     std::size_t components = 0;
     double min_y = 0, max_y = 0;
+    // Edges in chunks of kChunk, spatially sorted (Morton order of their midpoints), each with
+    // its bounding box: a cut skips the chunks the plane misses (see cut()).
+    static constexpr std::size_t kChunk = 64;
+    std::vector<std::uint32_t> chunk_edges;
+    std::vector<std::array<Vec3, 2>> chunk_ends;  // end points of chunk_edges[i], contiguous
+    std::vector<std::array<Vec3, 2>> chunk_box;   // min, max corner
 };
+
+/// Sorts the edges into spatially coherent chunks with bounding boxes (BodyMesh::chunk_edges).
+inline void build_edge_chunks(BodyMesh& m) {
+    Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            std::numeric_limits<double>::infinity()};
+    Vec3 hi{-lo[0], -lo[1], -lo[2]};
+    for (const auto& p : m.points) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    }
+    auto spread = [](std::uint64_t v) {  // 21 bits -> every third bit
+        v &= 0x1fffff;
+        v = (v | v << 32) & 0x1f00000000ffffULL;
+        v = (v | v << 16) & 0x1f0000ff0000ffULL;
+        v = (v | v << 8) & 0x100f00f00f00f00fULL;
+        v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+        v = (v | v << 2) & 0x1249249249249249ULL;
+        return v;
+    };
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(m.edges.size());
+    for (std::uint32_t e = 0; e < m.edges.size(); ++e) {
+        const Vec3& a = m.points[m.edges[e][0]];
+        const Vec3& b = m.points[m.edges[e][1]];
+        std::uint64_t code = 0;
+        for (int k = 0; k < 3; ++k) {
+            const double t = hi[k] > lo[k] ? (0.5 * (a[k] + b[k]) - lo[k]) / (hi[k] - lo[k]) : 0;
+            code |= spread(static_cast<std::uint64_t>(std::clamp(t, 0.0, 1.0) * 2097151.0)) << k;
+        }
+        keyed[e] = {code, e};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    m.chunk_edges.resize(keyed.size());
+    m.chunk_ends.resize(keyed.size());
+    m.chunk_box.clear();
+    for (std::size_t i = 0; i < keyed.size(); ++i) {
+        m.chunk_edges[i] = keyed[i].second;
+        m.chunk_ends[i] = {m.points[m.edges[keyed[i].second][0]],
+                           m.points[m.edges[keyed[i].second][1]]};
+        if (i % BodyMesh::kChunk == 0) {
+            m.chunk_box.push_back(
+                {m.points[m.edges[keyed[i].second][0]], m.points[m.edges[keyed[i].second][0]]});
+        }
+        auto& box = m.chunk_box.back();
+        for (std::uint32_t v : m.edges[keyed[i].second]) {
+            for (int k = 0; k < 3; ++k) {
+                box[0][k] = std::min(box[0][k], m.points[v][k]);
+                box[1][k] = std::max(box[1][k], m.points[v][k]);
+            }
+        }
+    }
+}
 
 /// Fills edges, edge_faces, face_edges and components. Rejects (TopologyError, naming the mesh
 /// and the first offending edge) boundary edges and edges with more than two faces.
@@ -139,6 +198,7 @@ inline void build_adjacency(BodyMesh& m) {
         m.min_y = std::min(m.min_y, p[1]);
         m.max_y = std::max(m.max_y, p[1]);
     }
+    build_edge_chunks(m);
 }
 
 /// A plane with an in-plane orthonormal frame (u, w); 2D coordinates are along u and w.
@@ -179,7 +239,6 @@ struct Loop {
 
 /// Scratch buffers reused between cuts of the same mesh.
 struct CutWorkspace {
-    std::vector<double> side;
     std::vector<std::int32_t> crossing;  // per edge: index of its crossing point, or -1
     std::vector<std::uint32_t> crossing_edges;
     std::vector<Vec3> crossing_points;
@@ -187,26 +246,42 @@ struct CutWorkspace {
     std::size_t cuts = 0;
 };
 
-/// The section of the mesh by the plane, as closed loops (see the top of this file).
+/// The section of the mesh by the plane, as closed loops (see the top of this file). Only the
+/// edge chunks whose bounding box the plane meets are visited (a box strictly on one side holds
+/// no crossing edge), so a cut costs the chunks plus the edges near the plane, not the mesh.
 inline std::vector<Loop> cut(const BodyMesh& m, const Plane& plane, CutWorkspace& ws) {
     ++ws.cuts;
-    const std::size_t nv = m.points.size(), ne = m.edges.size();
-    ws.side.resize(nv);
-    for (std::size_t v = 0; v < nv; ++v) {
-        ws.side[v] = plane.side(m.points[v]);
+    const std::size_t ne = m.edges.size();
+    if (ws.crossing.size() != ne) {
+        ws.crossing.assign(ne, -1);
     }
-    ws.crossing.assign(ne, -1);
+    for (std::uint32_t e : ws.crossing_edges) {  // reset what the previous cut marked
+        ws.crossing[e] = -1;
+    }
     ws.crossing_edges.clear();
     ws.crossing_points.clear();
-    for (std::uint32_t e = 0; e < ne; ++e) {
-        const double sa = ws.side[m.edges[e][0]], sb = ws.side[m.edges[e][1]];
-        if ((sa >= 0) != (sb >= 0)) {
-            const double t = sa / (sa - sb);
-            const Vec3& a = m.points[m.edges[e][0]];
-            const Vec3& b = m.points[m.edges[e][1]];
-            ws.crossing[e] = static_cast<std::int32_t>(ws.crossing_points.size());
-            ws.crossing_points.push_back(add(a, mul(sub(b, a), t)));
-            ws.crossing_edges.push_back(e);
+    const Vec3 an{std::abs(plane.normal[0]), std::abs(plane.normal[1]), std::abs(plane.normal[2])};
+    for (std::size_t c = 0; c < m.chunk_box.size(); ++c) {
+        const auto& box = m.chunk_box[c];
+        const Vec3 centre = mul(add(box[0], box[1]), 0.5), half = mul(sub(box[1], box[0]), 0.5);
+        const double d = plane.side(centre), r = dot(an, half);
+        const double slack = 1e-9 * (1 + std::abs(d) + r);
+        if (d - r > slack || d + r < -slack) {
+            continue;
+        }
+        const std::size_t end = std::min(m.chunk_edges.size(), (c + 1) * BodyMesh::kChunk);
+        for (std::size_t i = c * BodyMesh::kChunk; i < end; ++i) {
+            // The same vertex always gets the same side: same coordinates, same arithmetic.
+            const Vec3& a = m.chunk_ends[i][0];
+            const Vec3& b = m.chunk_ends[i][1];
+            const double sa = plane.side(a), sb = plane.side(b);
+            if ((sa >= 0) != (sb >= 0)) {
+                const std::uint32_t e = m.chunk_edges[i];
+                const double t = sa / (sa - sb);
+                ws.crossing[e] = static_cast<std::int32_t>(ws.crossing_points.size());
+                ws.crossing_points.push_back(add(a, mul(sub(b, a), t)));
+                ws.crossing_edges.push_back(e);
+            }
         }
     }
     ws.visited.assign(ws.crossing_points.size(), 0);

@@ -1,157 +1,20 @@
-// A 5 × 8 pixel bitmap font for printable ASCII (32–126), drawn by the PNG export (png.h) where
-// the SVG has text; no font library is a dependency. Designed for Tapeline, not taken from any
-// existing font.
-//
-// Cell: 5 columns × 8 rows, rows 0–6 above the baseline (capitals and digits are 7 rows tall),
-// row 7 below it (descenders of g j p q y, the comma, the underscore), advance 6 columns. One
-// font pixel is a tenth of the em, so capitals are 0.7 em tall and the advance is 0.6 em, close to
-// a sans-serif face at the same font-size. Each row is one byte, bit 4 the leftmost column.
+// The bitmap font now lives in core (core/internal/bitmap_font.h) so that modules other than
+// pattern can draw text without depending on pattern; these names keep pattern's spelling.
 #pragma once
 
-#include <array>
-#include <cstddef>
-#include <cstdint>
-#include <string>
-#include <vector>
+#include <tapeline/core/internal/bitmap_font.h>
 
 namespace tapeline::pattern::internal {
 
-inline constexpr int kGlyphColumns = 5;
-inline constexpr int kGlyphRows = 8;
-inline constexpr int kGlyphRowsAboveBaseline = 7;
-inline constexpr int kGlyphAdvance = 6;         // columns, one of them blank spacing
-inline constexpr double kFontPixelsPerEm = 10;  // font-size / this = one font pixel
-
-using Glyph = std::array<std::uint8_t, kGlyphRows>;
-
-/// Glyphs for code points 32 ('space') to 126 ('~'), in order.
-inline constexpr Glyph kBitmapFont[95] = {
-    {{0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000}},  // 32 space
-    {{0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00000, 0b00100, 0b00000}},  // 33 !
-    {{0b01010, 0b01010, 0b01010, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000}},  // 34 "
-    {{0b01010, 0b01010, 0b11111, 0b01010, 0b11111, 0b01010, 0b01010, 0b00000}},  // 35 #
-    {{0b00100, 0b01111, 0b10100, 0b01110, 0b00101, 0b11110, 0b00100, 0b00000}},  // 36 $
-    {{0b11000, 0b11001, 0b00010, 0b00100, 0b01000, 0b10011, 0b00011, 0b00000}},  // 37 %
-    {{0b01100, 0b10010, 0b10100, 0b01000, 0b10101, 0b10010, 0b01101, 0b00000}},  // 38 &
-    {{0b00100, 0b00100, 0b00100, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000}},  // 39 '
-    {{0b00010, 0b00100, 0b01000, 0b01000, 0b01000, 0b00100, 0b00010, 0b00000}},  // 40 (
-    {{0b01000, 0b00100, 0b00010, 0b00010, 0b00010, 0b00100, 0b01000, 0b00000}},  // 41 )
-    {{0b00000, 0b00100, 0b10101, 0b01110, 0b10101, 0b00100, 0b00000, 0b00000}},  // 42 *
-    {{0b00000, 0b00100, 0b00100, 0b11111, 0b00100, 0b00100, 0b00000, 0b00000}},  // 43 +
-    {{0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b01100, 0b00100, 0b01000}},  // 44 ,
-    {{0b00000, 0b00000, 0b00000, 0b11111, 0b00000, 0b00000, 0b00000, 0b00000}},  // 45 -
-    {{0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b01100, 0b01100, 0b00000}},  // 46 .
-    {{0b00000, 0b00001, 0b00010, 0b00100, 0b01000, 0b10000, 0b00000, 0b00000}},  // 47 /
-    {{0b01110, 0b10001, 0b10011, 0b10101, 0b11001, 0b10001, 0b01110, 0b00000}},  // 48 0
-    {{0b00100, 0b01100, 0b00100, 0b00100, 0b00100, 0b00100, 0b01110, 0b00000}},  // 49 1
-    {{0b01110, 0b10001, 0b00001, 0b00010, 0b00100, 0b01000, 0b11111, 0b00000}},  // 50 2
-    {{0b11111, 0b00010, 0b00100, 0b00010, 0b00001, 0b10001, 0b01110, 0b00000}},  // 51 3
-    {{0b00010, 0b00110, 0b01010, 0b10010, 0b11111, 0b00010, 0b00010, 0b00000}},  // 52 4
-    {{0b11111, 0b10000, 0b11110, 0b00001, 0b00001, 0b10001, 0b01110, 0b00000}},  // 53 5
-    {{0b00110, 0b01000, 0b10000, 0b11110, 0b10001, 0b10001, 0b01110, 0b00000}},  // 54 6
-    {{0b11111, 0b00001, 0b00010, 0b00100, 0b01000, 0b01000, 0b01000, 0b00000}},  // 55 7
-    {{0b01110, 0b10001, 0b10001, 0b01110, 0b10001, 0b10001, 0b01110, 0b00000}},  // 56 8
-    {{0b01110, 0b10001, 0b10001, 0b01111, 0b00001, 0b00010, 0b01100, 0b00000}},  // 57 9
-    {{0b00000, 0b01100, 0b01100, 0b00000, 0b01100, 0b01100, 0b00000, 0b00000}},  // 58 :
-    {{0b00000, 0b01100, 0b01100, 0b00000, 0b01100, 0b00100, 0b01000, 0b00000}},  // 59 ;
-    {{0b00010, 0b00100, 0b01000, 0b10000, 0b01000, 0b00100, 0b00010, 0b00000}},  // 60 <
-    {{0b00000, 0b00000, 0b11111, 0b00000, 0b11111, 0b00000, 0b00000, 0b00000}},  // 61 =
-    {{0b01000, 0b00100, 0b00010, 0b00001, 0b00010, 0b00100, 0b01000, 0b00000}},  // 62 >
-    {{0b01110, 0b10001, 0b00001, 0b00010, 0b00100, 0b00000, 0b00100, 0b00000}},  // 63 ?
-    {{0b01110, 0b10001, 0b10111, 0b10101, 0b10111, 0b10000, 0b01110, 0b00000}},  // 64 @
-    {{0b01110, 0b10001, 0b10001, 0b11111, 0b10001, 0b10001, 0b10001, 0b00000}},  // 65 A
-    {{0b11110, 0b10001, 0b10001, 0b11110, 0b10001, 0b10001, 0b11110, 0b00000}},  // 66 B
-    {{0b01110, 0b10001, 0b10000, 0b10000, 0b10000, 0b10001, 0b01110, 0b00000}},  // 67 C
-    {{0b11100, 0b10010, 0b10001, 0b10001, 0b10001, 0b10010, 0b11100, 0b00000}},  // 68 D
-    {{0b11111, 0b10000, 0b10000, 0b11110, 0b10000, 0b10000, 0b11111, 0b00000}},  // 69 E
-    {{0b11111, 0b10000, 0b10000, 0b11110, 0b10000, 0b10000, 0b10000, 0b00000}},  // 70 F
-    {{0b01110, 0b10001, 0b10000, 0b10111, 0b10001, 0b10001, 0b01111, 0b00000}},  // 71 G
-    {{0b10001, 0b10001, 0b10001, 0b11111, 0b10001, 0b10001, 0b10001, 0b00000}},  // 72 H
-    {{0b01110, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b01110, 0b00000}},  // 73 I
-    {{0b00111, 0b00010, 0b00010, 0b00010, 0b00010, 0b10010, 0b01100, 0b00000}},  // 74 J
-    {{0b10001, 0b10010, 0b10100, 0b11000, 0b10100, 0b10010, 0b10001, 0b00000}},  // 75 K
-    {{0b10000, 0b10000, 0b10000, 0b10000, 0b10000, 0b10000, 0b11111, 0b00000}},  // 76 L
-    {{0b10001, 0b11011, 0b10101, 0b10101, 0b10001, 0b10001, 0b10001, 0b00000}},  // 77 M
-    {{0b10001, 0b10001, 0b11001, 0b10101, 0b10011, 0b10001, 0b10001, 0b00000}},  // 78 N
-    {{0b01110, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b01110, 0b00000}},  // 79 O
-    {{0b11110, 0b10001, 0b10001, 0b11110, 0b10000, 0b10000, 0b10000, 0b00000}},  // 80 P
-    {{0b01110, 0b10001, 0b10001, 0b10001, 0b10101, 0b10010, 0b01101, 0b00000}},  // 81 Q
-    {{0b11110, 0b10001, 0b10001, 0b11110, 0b10100, 0b10010, 0b10001, 0b00000}},  // 82 R
-    {{0b01111, 0b10000, 0b10000, 0b01110, 0b00001, 0b00001, 0b11110, 0b00000}},  // 83 S
-    {{0b11111, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00000}},  // 84 T
-    {{0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b01110, 0b00000}},  // 85 U
-    {{0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b01010, 0b00100, 0b00000}},  // 86 V
-    {{0b10001, 0b10001, 0b10001, 0b10101, 0b10101, 0b10101, 0b01010, 0b00000}},  // 87 W
-    {{0b10001, 0b10001, 0b01010, 0b00100, 0b01010, 0b10001, 0b10001, 0b00000}},  // 88 X
-    {{0b10001, 0b10001, 0b01010, 0b00100, 0b00100, 0b00100, 0b00100, 0b00000}},  // 89 Y
-    {{0b11111, 0b00001, 0b00010, 0b00100, 0b01000, 0b10000, 0b11111, 0b00000}},  // 90 Z
-    {{0b01110, 0b01000, 0b01000, 0b01000, 0b01000, 0b01000, 0b01110, 0b00000}},  // 91 [
-    {{0b00000, 0b10000, 0b01000, 0b00100, 0b00010, 0b00001, 0b00000, 0b00000}},  // 92 backslash
-    {{0b01110, 0b00010, 0b00010, 0b00010, 0b00010, 0b00010, 0b01110, 0b00000}},  // 93 ]
-    {{0b00100, 0b01010, 0b10001, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000}},  // 94 ^
-    {{0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000, 0b11111}},  // 95 _
-    {{0b01000, 0b00100, 0b00010, 0b00000, 0b00000, 0b00000, 0b00000, 0b00000}},  // 96 `
-    {{0b00000, 0b00000, 0b01110, 0b00001, 0b01111, 0b10001, 0b01111, 0b00000}},  // 97 a
-    {{0b10000, 0b10000, 0b10110, 0b11001, 0b10001, 0b10001, 0b11110, 0b00000}},  // 98 b
-    {{0b00000, 0b00000, 0b01110, 0b10000, 0b10000, 0b10001, 0b01110, 0b00000}},  // 99 c
-    {{0b00001, 0b00001, 0b01101, 0b10011, 0b10001, 0b10001, 0b01111, 0b00000}},  // 100 d
-    {{0b00000, 0b00000, 0b01110, 0b10001, 0b11111, 0b10000, 0b01110, 0b00000}},  // 101 e
-    {{0b00110, 0b01001, 0b01000, 0b11100, 0b01000, 0b01000, 0b01000, 0b00000}},  // 102 f
-    {{0b00000, 0b00000, 0b01111, 0b10001, 0b10001, 0b01111, 0b00001, 0b01110}},  // 103 g
-    {{0b10000, 0b10000, 0b10110, 0b11001, 0b10001, 0b10001, 0b10001, 0b00000}},  // 104 h
-    {{0b00100, 0b00000, 0b01100, 0b00100, 0b00100, 0b00100, 0b01110, 0b00000}},  // 105 i
-    {{0b00010, 0b00000, 0b00110, 0b00010, 0b00010, 0b00010, 0b10010, 0b01100}},  // 106 j
-    {{0b10000, 0b10000, 0b10010, 0b10100, 0b11000, 0b10100, 0b10010, 0b00000}},  // 107 k
-    {{0b01100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b01110, 0b00000}},  // 108 l
-    {{0b00000, 0b00000, 0b11010, 0b10101, 0b10101, 0b10001, 0b10001, 0b00000}},  // 109 m
-    {{0b00000, 0b00000, 0b10110, 0b11001, 0b10001, 0b10001, 0b10001, 0b00000}},  // 110 n
-    {{0b00000, 0b00000, 0b01110, 0b10001, 0b10001, 0b10001, 0b01110, 0b00000}},  // 111 o
-    {{0b00000, 0b00000, 0b11110, 0b10001, 0b10001, 0b11110, 0b10000, 0b10000}},  // 112 p
-    {{0b00000, 0b00000, 0b01111, 0b10001, 0b10001, 0b01111, 0b00001, 0b00001}},  // 113 q
-    {{0b00000, 0b00000, 0b10110, 0b11001, 0b10000, 0b10000, 0b10000, 0b00000}},  // 114 r
-    {{0b00000, 0b00000, 0b01111, 0b10000, 0b01110, 0b00001, 0b11110, 0b00000}},  // 115 s
-    {{0b01000, 0b01000, 0b11100, 0b01000, 0b01000, 0b01001, 0b00110, 0b00000}},  // 116 t
-    {{0b00000, 0b00000, 0b10001, 0b10001, 0b10001, 0b10011, 0b01101, 0b00000}},  // 117 u
-    {{0b00000, 0b00000, 0b10001, 0b10001, 0b10001, 0b01010, 0b00100, 0b00000}},  // 118 v
-    {{0b00000, 0b00000, 0b10001, 0b10001, 0b10101, 0b10101, 0b01010, 0b00000}},  // 119 w
-    {{0b00000, 0b00000, 0b10001, 0b01010, 0b00100, 0b01010, 0b10001, 0b00000}},  // 120 x
-    {{0b00000, 0b00000, 0b10001, 0b10001, 0b10001, 0b01111, 0b00001, 0b01110}},  // 121 y
-    {{0b00000, 0b00000, 0b11111, 0b00010, 0b00100, 0b01000, 0b11111, 0b00000}},  // 122 z
-    {{0b00011, 0b00100, 0b00100, 0b01000, 0b00100, 0b00100, 0b00011, 0b00000}},  // 123 {
-    {{0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100, 0b00100}},  // 124 |
-    {{0b11000, 0b00100, 0b00100, 0b00010, 0b00100, 0b00100, 0b11000, 0b00000}},  // 125 }
-    {{0b00000, 0b00000, 0b01000, 0b10101, 0b00010, 0b00000, 0b00000, 0b00000}},  // 126 ~
-};
-
-/// Drawn for anything else: a code point outside printable ASCII, a control character, or a
-/// malformed UTF-8 byte.
-inline constexpr Glyph kPlaceholderGlyph = {
-    {0b11111, 0b10001, 0b10001, 0b10001, 0b10001, 0b10001, 0b11111, 0b00000}};
-
-inline const Glyph& glyph_for(std::uint32_t code_point) {
-    return code_point >= 32 && code_point <= 126 ? kBitmapFont[code_point - 32] : kPlaceholderGlyph;
-}
-
-/// The glyphs of a UTF-8 string, one per code point: a lead byte and the continuation bytes it
-/// announces make one placeholder; a stray continuation or invalid byte makes one of its own.
-inline std::vector<const Glyph*> text_glyphs(const std::string& utf8) {
-    std::vector<const Glyph*> out;
-    const auto is_continuation = [](unsigned char b) { return (b & 0xC0) == 0x80; };
-    for (std::size_t i = 0; i < utf8.size();) {
-        const auto b = static_cast<unsigned char>(utf8[i++]);
-        if (b < 0x80) {
-            out.push_back(&glyph_for(b));
-            continue;
-        }
-        const std::size_t extra = b >= 0xF0 && b < 0xF8 ? 3 : b >= 0xE0 ? 2 : b >= 0xC0 ? 1 : 0;
-        for (std::size_t k = 0;
-             k < extra && i < utf8.size() && is_continuation(static_cast<unsigned char>(utf8[i]));
-             ++k) {
-            ++i;
-        }
-        out.push_back(&kPlaceholderGlyph);
-    }
-    return out;
-}
+using tapeline::internal::Glyph;
+using tapeline::internal::glyph_for;
+using tapeline::internal::kBitmapFont;
+using tapeline::internal::kFontPixelsPerEm;
+using tapeline::internal::kGlyphAdvance;
+using tapeline::internal::kGlyphColumns;
+using tapeline::internal::kGlyphRows;
+using tapeline::internal::kGlyphRowsAboveBaseline;
+using tapeline::internal::kPlaceholderGlyph;
+using tapeline::internal::text_glyphs;
 
 }  // namespace tapeline::pattern::internal
