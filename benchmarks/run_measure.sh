@@ -7,7 +7,7 @@
 #   usage: benchmarks/run_measure.sh [path/to/tapeline] [repeat]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-tapeline=${1:-$root/build-meas2/apps/tapeline}
+tapeline=${1:-$root/build/apps/tapeline}
 repeat=${2:-5}
 data=$root/../shared/data/bodies
 out=$root/docs/bench_measure

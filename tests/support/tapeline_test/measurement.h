@@ -87,8 +87,9 @@ struct LengthsResult {
 LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptions& options);
 
 /// The synthetic body as a Surface_mesh<Epick>, measure_body on it, then measure_cross_seam
-/// (lengths.h) only: the geodesic lengths need one connected skin, which the synthetic body
-/// (a union of overlapping parts) is not. `overrides` is a landmark file path or empty.
+/// (lengths.h) only: a plane section, which the synthetic body's overlapping parts allow as they
+/// are (the geodesic lengths need one skin: measurement_synthetic.h merges the parts first).
+/// `overrides` is a landmark file path or empty.
 Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
                                     const std::string& overrides = "");
 

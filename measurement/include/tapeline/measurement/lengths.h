@@ -313,7 +313,27 @@ template <class TriangleMesh, class NamedParameters>
 void take_skin_lengths(const geodesic::GeodesicPathSolver<TriangleMesh, NamedParameters>& solver,
                        const SkinLocator<TriangleMesh, NamedParameters>& at, const BodyFrame& frame,
                        const SkinLengthPlan<TriangleMesh>& plan, MeasurementSet& set) {
-    for (const auto& s : plan.lengths) {
+    // Every segment of every length is an independent two-point path: solve them all in one
+    // batch (GeodesicPathSolver::paths runs them on TBB's threads; same results as one by one).
+    using Solver = geodesic::GeodesicPathSolver<TriangleMesh, NamedParameters>;
+    std::vector<typename Solver::PointPair> pairs;
+    std::vector<std::vector<std::size_t>> segment_of(plan.lengths.size());  // pair index, or npos
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    for (std::size_t k = 0; k < plan.lengths.size(); ++k) {
+        const auto& w = plan.lengths[k].waypoints;
+        for (std::size_t i = 0; i + 1 < w.size(); ++i) {
+            const Vec3 a = at.canonical(w[i]), b = at.canonical(w[i + 1]);
+            if (std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) < 1e-9) {
+                segment_of[k].push_back(none);  // two landmarks on one surface point: no walk
+                continue;
+            }
+            segment_of[k].push_back(pairs.size());
+            pairs.push_back({w[i], w[i + 1]});
+        }
+    }
+    const auto paths = solver.paths(pairs);
+    for (std::size_t k = 0; k < plan.lengths.size(); ++k) {
+        const auto& s = plan.lengths[k];
         Measurement m;
         m.name = s.name;
         m.kind = MeasurementKind::length;
@@ -322,12 +342,11 @@ void take_skin_lengths(const geodesic::GeodesicPathSolver<TriangleMesh, NamedPar
         m.landmarks = s.landmarks;
         double length = 0;
         std::string fail;
-        for (std::size_t i = 0; i + 1 < s.waypoints.size() && fail.empty(); ++i) {
-            const Vec3 a = at.canonical(s.waypoints[i]), b = at.canonical(s.waypoints[i + 1]);
-            if (std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]) < 1e-9) {
-                continue;  // two landmarks on one surface point: nothing to walk
+        for (const std::size_t j : segment_of[k]) {
+            if (j == none) {
+                continue;
             }
-            const auto r = solver.path(s.waypoints[i], s.waypoints[i + 1]);
+            const auto& r = paths[j];
             if (!r.on_mesh.found() || !std::isfinite(r.on_mesh.length)) {
                 fail = "no path on the skin between its landmarks (on different mesh components)";
                 break;

@@ -118,6 +118,13 @@ public:
     double arm_girth(double t) const { return ellipse_perimeter(arm_a_(t), arm_b_(t)); }
     double torso_depth(double y) const { return torso_b_(y); }
     double torso_half_width(double y) const { return torso_a_(y); }
+    /// Lateral semi-axis of a leg's section at height y (depth: leg_b_ratio() times it), of the
+    /// neck's (depth: neck_b_ratio() times it), and of the arm's t mm along its axis (and its
+    /// depth semi-axis): the analytic profiles, for lengths along the skin.
+    double leg_half_width(double y) const { return leg_a_(y); }
+    double neck_half_width(double y) const { return neck_a_(y); }
+    double arm_half_width(double t) const { return arm_a_(t); }
+    double arm_half_depth(double t) const { return arm_b_(t); }
 
     /// Start and unit direction of an arm's axis (side +1 = left, −1 = right).
     Vec3 arm_start(int side) const { return {side * 110.0, 1345, 0}; }

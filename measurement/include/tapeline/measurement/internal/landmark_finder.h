@@ -675,12 +675,45 @@ private:
                     y_snp = bisect(out, y_snp, y_snp - lag, options_.level_tolerance).first;
                 }
             }
-            const auto at = lateral_at(y_snp);
+            // The point itself: where the section's outline (its hull, the tape) crosses the
+            // line through the section's centre towards the side, i.e. the side of the neck
+            // midway front-back. The lateral extreme of a round neck section is flat in z: its z
+            // moved by 6 mm between a body and its retriangulated proxy (and the back/front HPS
+            // lengths with it); the centre's z is an average over the whole section.
+            auto side_point = [&](double y) -> std::optional<Vec3> {
+                const PlaneSection ps = horizontal(y);
+                const int t = ps.locate(c);
+                if (t < 0) {
+                    return std::nullopt;
+                }
+                const Section& sec = ps.sections[static_cast<std::size_t>(t)];
+                const Vec2 o = sec.centroid;
+                std::optional<Vec2> best_q;
+                const std::size_t n = sec.hull.size();
+                for (std::size_t i = 0; i < n; ++i) {
+                    const Vec2& p = sec.hull[i];
+                    const Vec2& q = sec.hull[(i + 1) % n];
+                    const double dp = p[1] - o[1], dq = q[1] - o[1];
+                    if ((dp > 0) == (dq > 0) || dp == dq) {
+                        continue;
+                    }
+                    const double t01 = dp / (dp - dq);
+                    const Vec2 x{p[0] + t01 * (q[0] - p[0]), o[1]};
+                    if (sg * (x[0] - o[0]) > 0 && (!best_q || sg * x[0] > sg * (*best_q)[0])) {
+                        best_q = x;
+                    }
+                }
+                if (!best_q) {
+                    return std::nullopt;
+                }
+                return ps.plane.to3(*best_q);
+            };
+            const auto at = side_point(y_snp);
             if (!at) {
                 set_missing(name, "the neck section was lost at the side neck point");
                 continue;
             }
-            snp_y_[s] = set_found(name, at->second)[1];
+            snp_y_[s] = set_found(name, *at)[1];
         }
         // Cervicale: the back midline at the height of the side neck points.
         if (snp_y_[0] || snp_y_[1]) {
@@ -826,9 +859,72 @@ private:
             }
             const Vec2 p0{sg * (*snp)[0], (*snp)[1]};
             // The lateral tip of the shoulder: where the outline turns down the arm, the corner
-            // farthest from the chord joining the side neck point and the arm.
-            set_found(name, outline[farthest_from_chord(outline, sg, 0, outline.size() - 1, p0)]);
+            // farthest from the chord joining the side neck point and the arm. On a round
+            // shoulder the distance to the chord is flat around its maximum: the best sample
+            // moved by one sample (4 mm out, 3 mm down) between a body and its retriangulated
+            // proxy, and the back shoulder width by 11 mm. So the maximum is that of a parabola
+            // fitted (least squares) to the distances of the samples within 3 of the best one,
+            // and the point is interpolated on the outline there.
+            const std::size_t last = outline.size() - 1;
+            const std::size_t best = farthest_from_chord(outline, sg, 0, last, p0);
+            set_found(name, refine_on_outline(outline, sg, best, p0));
         }
+    }
+
+    /// The outline point near outline[best] farthest from the chord from p0 to outline.back():
+    /// vertex of the least-squares parabola through the chord distances of the samples within 3
+    /// of `best` (by lateral position), clamped to them, interpolated linearly between samples.
+    static Vec3 refine_on_outline(const std::vector<Vec3>& outline, double sg, std::size_t best,
+                                  const Vec2& p0) {
+        const std::size_t i1 = outline.size() - 1;
+        const double dx = sg * outline[i1][0] - p0[0], dy = outline[i1][1] - p0[1];
+        const double len = std::max(1e-9, std::hypot(dx, dy));
+        auto dist = [&](const Vec3& q) {
+            return std::abs((sg * q[0] - p0[0]) * dy - (q[1] - p0[1]) * dx) / len;
+        };
+        const std::size_t a = best >= 3 ? best - 3 : 0, b = std::min(i1, best + 3);
+        if (b - a < 2) {
+            return outline[best];
+        }
+        // Fit d = c0 + c1 t + c2 t^2, t = lateral position relative to the best sample.
+        const double r0 = sg * outline[best][0];
+        double s[5] = {0, 0, 0, 0, 0}, sd[3] = {0, 0, 0};
+        for (std::size_t i = a; i <= b; ++i) {
+            const double t = sg * outline[i][0] - r0, d = dist(outline[i]);
+            double tp = 1;
+            for (int k = 0; k < 5; ++k) {
+                s[k] += tp;
+                if (k < 3) {
+                    sd[k] += tp * d;
+                }
+                tp *= t;
+            }
+        }
+        // Normal equations [s0 s1 s2; s1 s2 s3; s2 s3 s4] c = sd, by Cramer's rule.
+        auto det3 = [](double a11, double a12, double a13, double a21, double a22, double a23,
+                       double a31, double a32, double a33) {
+            return a11 * (a22 * a33 - a23 * a32) - a12 * (a21 * a33 - a23 * a31) +
+                   a13 * (a21 * a32 - a22 * a31);
+        };
+        const double D = det3(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
+        if (std::abs(D) < 1e-300) {
+            return outline[best];
+        }
+        const double c1 = det3(s[0], sd[0], s[2], s[1], sd[1], s[3], s[2], sd[2], s[4]) / D;
+        const double c2 = det3(s[0], s[1], sd[0], s[1], s[2], sd[1], s[2], s[3], sd[2]) / D;
+        if (c2 >= 0) {
+            return outline[best];  // no maximum: keep the best sample
+        }
+        const double lo = sg * outline[a][0] - r0, hi = sg * outline[b][0] - r0;
+        const double tv = std::clamp(-c1 / (2 * c2), lo, hi);
+        for (std::size_t i = a; i < b; ++i) {
+            const double ta = sg * outline[i][0] - r0, tb = sg * outline[i + 1][0] - r0;
+            if (tv >= ta && tv <= tb && tb > ta) {
+                const double f = (tv - ta) / (tb - ta);
+                return add(outline[i], mul(sub(outline[i + 1], outline[i]), f));
+            }
+        }
+        return outline[best];
     }
 
     /// Index in [i0, i1] of the outline point (x mirrored by sg) farthest from the chord from p0

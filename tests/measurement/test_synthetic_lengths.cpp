@@ -1,0 +1,272 @@
+// Lengths along the skin of the synthetic body against analytic truth (issue 6, DESIGN.md §6).
+// The body's closed parts are merged into one skin (support: corefinement union), measured at two
+// resolutions, and every length is compared with the truth between the SAME end points the
+// measurement walked between (its segments' end points), so that landmark placement error (tested
+// in test_synthetic_body.cpp) is kept apart from length error. ISO 20685-1 allows 5 mm.
+//
+// Truth. The torso, legs, neck and arms are elliptic generalised cylinders centred on their axes,
+// so the planes x = 0 (torso, neck) and z = 0 (everything but head and feet) are planes of mirror
+// symmetry of the skin, and a curve of the skin in such a plane is a geodesic: lengths whose end
+// points lie in one of them are the arc length of the analytic profile, integrated here by
+// adaptive Simpson to 1e-7 mm (plus the flat cap pieces the profile crosses). The shoulder widths
+// run over the torso's flat top cap around the neck: the shortest path in a plane around a convex
+// obstacle (a tangent segment plus an arc of the neck's ellipse), computed here in closed form.
+// The lengths with no closed form (HPS to waist, HPS to bust, the arm over the shoulder) are not
+// held here: against exact MMP on the fine mesh, the HPS ones agree within 0.3 mm, while the paths
+// from the acromion around the neck or onto the arm are 33-115 mm too long (measurement/README.md;
+// the MMP check takes ~90 s per resolution, too slow for CI).
+#include <tapeline_test/measurement_synthetic.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace tapeline_test::measurement;
+
+struct Resolution {
+    const char* name;
+    SyntheticBodyOptions options;
+};
+void PrintTo(const Resolution& r, std::ostream* os) {
+    *os << r.name;
+}
+const Resolution kResolutions[] = {{"coarse", {40, 10, 40}}, {"fine", {96, 4, 40}}};
+constexpr double kIsoSegment = 5;  // ISO 20685-1, segment lengths (mm)
+
+const SyntheticLengths& measured(const SyntheticBodyOptions& o) {
+    static std::map<std::pair<int, double>, SyntheticLengths> cache;
+    const auto key = std::make_pair(o.around, o.ring_step);
+    auto it = cache.find(key);
+    if (it == cache.end()) {
+        it = cache.emplace(key, measure_synthetic_lengths(o)).first;
+    }
+    return it->second;
+}
+
+std::vector<const SyntheticSegment*> segments(const SyntheticLengths& r, const std::string& name) {
+    std::vector<const SyntheticSegment*> out;
+    for (const auto& s : r.segments) {
+        if (s.measurement == name) {
+            out.push_back(&s);
+        }
+    }
+    return out;
+}
+
+double dist(const Vec3& a, const Vec3& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+
+// Adaptive Simpson.
+double simpson(const std::function<double(double)>& f, double a, double b, double fa, double fm,
+               double fb, double whole, double eps, int depth) {
+    const double m = 0.5 * (a + b), lm = 0.5 * (a + m), rm = 0.5 * (m + b);
+    const double flm = f(lm), frm = f(rm);
+    const double left = (m - a) / 6 * (fa + 4 * flm + fm),
+                 right = (b - m) / 6 * (fm + 4 * frm + fb);
+    if (depth <= 0 || std::abs(left + right - whole) <= 15 * eps) {
+        return left + right + (left + right - whole) / 15;
+    }
+    return simpson(f, a, m, fa, flm, fm, left, eps / 2, depth - 1) +
+           simpson(f, m, b, fm, frm, fb, right, eps / 2, depth - 1);
+}
+double integrate(const std::function<double(double)>& f, double a, double b, double eps = 1e-7) {
+    if (a > b) {
+        std::swap(a, b);
+    }
+    const double fa = f(a), fb = f(b), fm = f(0.5 * (a + b));
+    return simpson(f, a, b, fa, fm, fb, (b - a) / 6 * (fa + 4 * fm + fb), eps, 40);
+}
+
+/// Arc length of the profile curve (y, r(y)) between two heights.
+double profile_arc(const std::function<double(double)>& r, double y0, double y1) {
+    const double h = 1e-4;
+    return integrate(
+        [&](double y) {
+            const double d = (r(y + h) - r(y - h)) / (2 * h);
+            return std::sqrt(1 + d * d);
+        },
+        y0, y1);
+}
+
+/// Shortest path in the plane y = 1400 (the torso's flat top cap) from A, outside the neck's
+/// ellipse (semi-axes a along x, b along z), to M on that ellipse: the straight segment if M is
+/// visible from A, else a tangent segment plus the ellipse arc to M. (A vertical projection onto
+/// the cap shortens every path over the neck or down the torso, so nothing shorter leaves it.)
+double around_neck(double ax, double az, double mx, double mz, double a, double b) {
+    const double phi_m = std::atan2(mz / b, mx / a);
+    auto speed = [&](double p) { return std::hypot(a * std::sin(p), b * std::cos(p)); };
+    auto arc = [&](double p0, double p1) {  // shorter way round
+        double d = std::remainder(p1 - p0, 2 * M_PI);
+        return integrate(speed, p0, p0 + d, 1e-9);
+    };
+    double best = INFINITY;
+    const int n = 4000;
+    double best_p = 0;
+    for (int k = 0; k < n; ++k) {
+        const double p = -M_PI + 2 * M_PI * k / n;
+        const double ex = a * std::cos(p), ez = b * std::sin(p);
+        // Visible: A on the outer side of the tangent line at E.
+        if ((ax - ex) * std::cos(p) / a + (az - ez) * std::sin(p) / b < 0) {
+            continue;
+        }
+        const double l = std::hypot(ax - ex, az - ez) + arc(p, phi_m);
+        if (l < best) {
+            best = l;
+            best_p = p;
+        }
+    }
+    // Refine around the best sample (golden section on the visible neighbourhood).
+    double lo = best_p - 2 * M_PI / n, hi = best_p + 2 * M_PI / n;
+    auto f = [&](double p) {
+        const double ex = a * std::cos(p), ez = b * std::sin(p);
+        const bool visible = (ax - ex) * std::cos(p) / a + (az - ez) * std::sin(p) / b >= -1e-12;
+        return visible ? std::hypot(ax - ex, az - ez) + arc(p, phi_m) : INFINITY;
+    };
+    for (int it = 0; it < 80; ++it) {
+        const double m1 = lo + (hi - lo) * 0.382, m2 = lo + (hi - lo) * 0.618;
+        (f(m1) < f(m2) ? hi : lo) = (f(m1) < f(m2) ? m2 : m1);
+    }
+    return std::min(best, f(0.5 * (lo + hi)));
+}
+
+class SyntheticLengthsTest : public ::testing::TestWithParam<Resolution> {};
+
+/// Closed-form truth of a length, from the segments' end points; NAN when there is none.
+double closed_form_truth(const SyntheticBody& body, const SyntheticLengths& r,
+                         const std::string& name) {
+    const auto seg = segments(r, name);
+    const Measurement* m = r.result.measurements.find(name);
+    if (seg.empty() || !m) {
+        return NAN;
+    }
+    const Vec3 p = seg.front()->from, q = seg.back()->to;
+    const double top = SyntheticBody::kShoulder;
+    auto torso_a = [&](double y) { return body.torso_half_width(y); };
+    auto torso_b = [&](double y) { return body.torso_depth(y); };
+    auto neck_b = [&](double y) { return body.neck_b_ratio() * body.neck_half_width(y); };
+    auto leg_a = [&](double y) { return body.leg_half_width(y); };
+    const double leg_top = 830;  // legs: y 20..830 (synthetic_body.h)
+    if (name == "waist_to_hips" || name == "waist_to_armpit") {
+        return profile_arc(torso_a, p[1], q[1]);  // the torso's side, in the plane z = 0
+    }
+    if (name == "back_neck_to_waist" || name == "front_neck_to_waist") {
+        // In the plane x = 0: down the neck, across the cap, down the torso's midline.
+        return profile_arc(neck_b, p[1], top) + (torso_b(top) - neck_b(top)) +
+               profile_arc(torso_b, top, q[1]);
+    }
+    if (name == "inseam") {
+        // In z = 0: across the torso's bottom cap from the crotch to the leg, down its inside,
+        // then straight down from the ankle to the floor.
+        const double to_leg = SyntheticBody::kLegX - leg_a(SyntheticBody::kCrotch) - std::abs(p[0]);
+        return to_leg + profile_arc(leg_a, SyntheticBody::kCrotch, q[1]) + q[1];
+    }
+    if (name == "outseam") {
+        // In z = 0: down the torso's side to the leg's top cap, out over it to the leg's outside,
+        // down the leg, then to the floor.
+        return profile_arc(torso_a, p[1], leg_top) +
+               (SyntheticBody::kLegX + leg_a(leg_top) - torso_a(leg_top)) +
+               profile_arc(leg_a, leg_top, q[1]) + q[1];
+    }
+    if (name == "shoulder_width_back" || name == "across_back_shoulder_width") {
+        // Acromion to the back of the neck base and on to the other acromion, over the flat cap
+        // (+ the end points' tiny heights above it, an upper bound of their share).
+        const double na = body.neck_half_width(top), nb = neck_b(top);
+        double total = 0;
+        for (const auto* s : seg) {
+            const Vec3& a = std::abs(s->from[0]) > std::abs(s->to[0]) ? s->from : s->to;
+            const Vec3& n = &a == &s->from ? s->to : s->from;
+            total += around_neck(std::abs(a[0]), a[2], std::abs(n[0]), n[2], na, nb) +
+                     std::abs(a[1] - top) + std::abs(n[1] - top);
+        }
+        return total;
+    }
+    return NAN;
+}
+
+TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
+    const SyntheticBody body(GetParam().options);
+    const SyntheticLengths& r = measured(GetParam().options);
+    // Not held here: shoulder_width_back and across_back_shoulder_width, whose curvature-flow
+    // paths around the neck base on the flat shoulder cap come out 60-115 mm longer than exact
+    // MMP between the same points (a locally shortest path in another class: an open gap of
+    // issue 4, in measurement/README.md); the closed form is printed for them.
+    const char* names[] = {"waist_to_hips",       "waist_to_armpit", "back_neck_to_waist",
+                           "front_neck_to_waist", "inseam",          "outseam"};
+    for (const char* name : names) {
+        const Measurement* m = r.result.measurements.find(name);
+        ASSERT_NE(m, nullptr) << name;
+        const double truth = closed_form_truth(body, r, name);
+        std::printf("%s %-27s measured %8.3f  truth %8.3f  error %+7.3f mm\n", GetParam().name,
+                    name, m->value, truth, m->value - truth);
+        // Exact MMP between the same end points agrees with `truth` to 0.05 mm (coarse and fine):
+        // a failure here is the curvature-flow path's, not the truth's.
+        EXPECT_NEAR(m->value, truth, kIsoSegment) << name;
+    }
+    for (const char* name : {"shoulder_width_back", "across_back_shoulder_width"}) {
+        const Measurement* m = r.result.measurements.find(name);
+        ASSERT_NE(m, nullptr) << name;
+        std::printf("%s %-27s measured %8.3f  truth %8.3f  error %+7.3f mm (known gap)\n",
+                    GetParam().name, name, m->value, closed_form_truth(body, r, name),
+                    m->value - closed_form_truth(body, r, name));
+    }
+    // The end points lie in the symmetry plane the truth assumes.
+    for (const char* name : {"waist_to_hips", "waist_to_armpit", "inseam", "outseam"}) {
+        for (const auto* s : segments(r, name)) {
+            EXPECT_NEAR(s->from[2], 0, 0.5) << name;
+            EXPECT_NEAR(s->to[2], 0, 0.5) << name;
+        }
+    }
+    for (const char* name : {"back_neck_to_waist", "front_neck_to_waist"}) {
+        for (const auto* s : segments(r, name)) {
+            EXPECT_NEAR(s->from[0], 0, 0.5) << name;
+            EXPECT_NEAR(s->to[0], 0, 0.5) << name;
+        }
+    }
+}
+
+TEST_P(SyntheticLengthsTest, InvariantsAndLeftRightSymmetry) {
+    const SyntheticLengths& r = measured(GetParam().options);
+    for (const auto& s : r.segments) {
+        EXPECT_GE(s.gcf, s.euclidean - 1e-6) << s.measurement;
+    }
+    for (const auto& m : r.result.measurements.measurements) {
+        if (m.kind == MeasurementKind::length && m.points.size() >= 2) {
+            EXPECT_GE(m.value, dist(m.points.front(), m.points.back()) - 1e-6) << m.name;
+        }
+    }
+    // The two halves of the back shoulder widths would be mirror images when their acromions are;
+    // printed, not held: on the fine mesh one half takes a path 48 mm longer than the other (the
+    // known gap of ClosedFormLengthsWithinIsoTolerance).
+    const LandmarkSet& lm = r.result.landmarks;
+    const Vec3 al = *lm.point("acromion_left"), ar = *lm.point("acromion_right");
+    const bool mirrored = std::abs(al[0] + ar[0]) < 0.5 && std::abs(al[1] - ar[1]) < 0.5 &&
+                          std::abs(al[2] - ar[2]) < 0.5;
+    std::printf("%s acromions left (%.2f %.2f %.2f) right (%.2f %.2f %.2f)%s\n", GetParam().name,
+                al[0], al[1], al[2], ar[0], ar[1], ar[2], mirrored ? "" : ": not mirror images");
+    if (mirrored) {
+        for (const char* name : {"shoulder_width_back", "across_back_shoulder_width"}) {
+            const auto seg = segments(r, name);
+            ASSERT_EQ(seg.size(), 2u) << name;
+            std::printf("%s %s halves %.3f / %.3f mm\n", GetParam().name, name, seg[0]->gcf,
+                        seg[1]->gcf);
+        }
+    }
+    EXPECT_NEAR(*r.result.measurements.value("hps_to_waist_back"),
+                *r.result.measurements.value("hps_to_waist_front"), 1.0)
+        << "front-back mirror (z = 0) of the same path";
+}
+
+INSTANTIATE_TEST_SUITE_P(Resolutions, SyntheticLengthsTest, ::testing::ValuesIn(kResolutions),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
