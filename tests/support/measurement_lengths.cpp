@@ -7,8 +7,9 @@
 #include <tapeline/measurement/synthetic_body.h>
 #include <tapeline_test/measurement.h>
 
+#include "measurement_synthetic_mesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <chrono>
@@ -52,26 +53,13 @@ LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptio
             out.segments.push_back(c);
         }
     }
-    out.result.frame = m.frame;
-    out.result.landmarks = std::move(m.landmarks);
-    out.result.measurements = std::move(m.measurements);
-    out.result.report = std::move(m.report);
+    out.result = to_result(std::move(m), 0);
     return out;
 }
 
 Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
                                     const std::string& overrides) {
-    const meas::SyntheticBody body(synthetic);
-    std::vector<Epick::Point_3> pts;
-    for (const auto& p : body.points()) {
-        pts.emplace_back(p[0], p[1], p[2]);
-    }
-    std::vector<std::vector<std::size_t>> polys;
-    for (const auto& t : body.triangles()) {
-        polys.push_back({t[0], t[1], t[2]});
-    }
-    SurfaceMesh tm;
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, tm);
+    const SyntheticSurfaceMesh tm = synthetic_surface_mesh(synthetic, false);
     BodyOptions o;
     o.unit = meas::LengthUnit::mm;
     const auto t0 = std::chrono::steady_clock::now();
@@ -79,13 +67,8 @@ Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
         tm, o, {},
         overrides.empty() ? meas::LandmarkOverrides{} : meas::read_landmark_overrides(overrides));
     meas::measure_cross_seam(tm, m.frame, m.landmarks, m.measurements);
-    Result r;
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    r.frame = m.frame;
-    r.landmarks = std::move(m.landmarks);
-    r.measurements = std::move(m.measurements);
-    r.report = std::move(m.report);
-    return r;
+    return to_result(std::move(m),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 }  // namespace tapeline_test::measurement

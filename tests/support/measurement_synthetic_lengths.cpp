@@ -6,6 +6,8 @@
 #include <tapeline/measurement/synthetic_body.h>
 #include <tapeline_test/measurement_synthetic.h>
 
+#include "measurement_synthetic_mesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -27,7 +29,12 @@ namespace meas = tapeline::measurement;
 namespace geo = tapeline::geodesic;
 using NP = CGAL::parameters::Default_named_parameters;
 
-SurfaceMesh synthetic_mesh(const SyntheticBodyOptions& synthetic, bool connected) {
+double dist(const Vec3& a, const Vec3& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+}
+}  // namespace
+
+SyntheticSurfaceMesh synthetic_surface_mesh(const SyntheticBodyOptions& synthetic, bool connected) {
     const meas::SyntheticBody body(synthetic);
     std::vector<Epick::Point_3> pts;
     for (const auto& p : body.points()) {
@@ -66,14 +73,9 @@ SurfaceMesh synthetic_mesh(const SyntheticBodyOptions& synthetic, bool connected
     return skin;
 }
 
-double dist(const Vec3& a, const Vec3& b) {
-    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-}
-}  // namespace
-
 SyntheticLengths measure_synthetic_lengths(const SyntheticBodyOptions& synthetic, bool connected,
                                            bool exact) {
-    const SurfaceMesh tm = synthetic_mesh(synthetic, connected);
+    const SurfaceMesh tm = synthetic_surface_mesh(synthetic, connected);
     BodyOptions o;
     o.unit = meas::LengthUnit::mm;
     const auto t0 = std::chrono::steady_clock::now();
@@ -85,7 +87,7 @@ SyntheticLengths measure_synthetic_lengths(const SyntheticBodyOptions& synthetic
     meas::measure_cross_seam(tm, m.frame, m.landmarks, m.measurements);
     meas::measure_shoulder_slope(m.landmarks, m.measurements);
     SyntheticLengths out;
-    out.result.seconds =
+    const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (const auto& s : plan.lengths) {
         for (std::size_t i = 0; i + 1 < s.waypoints.size(); ++i) {
@@ -110,10 +112,7 @@ SyntheticLengths measure_synthetic_lengths(const SyntheticBodyOptions& synthetic
             out.segments.push_back(c);
         }
     }
-    out.result.frame = m.frame;
-    out.result.landmarks = std::move(m.landmarks);
-    out.result.measurements = std::move(m.measurements);
-    out.result.report = std::move(m.report);
+    out.result = to_result(std::move(m), seconds);
     return out;
 }
 
