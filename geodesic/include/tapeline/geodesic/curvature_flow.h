@@ -29,6 +29,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -325,6 +326,7 @@ CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, cons
     r.faces = m.face_count();
     r.solver = to_string(o.solver);
     r.initial_length = gcf::polyline_length(pts);
+    const std::vector<gcf::Vec3> initial = o.straighten ? pts : std::vector<gcf::Vec3>{};
     const double h = m.mean_edge > 0 ? m.mean_edge : 1.0;
     const double spacing = o.sample_spacing > 0 ? o.sample_spacing : h;
     std::size_t count = o.sample_count;
@@ -393,19 +395,45 @@ CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, cons
             ++r.trace_fallbacks;
     }
     r.traced_length = gcf::polyline_length(traced);
-    if (o.straighten && !off_faces && traced.size() >= 2) {
+    // The shortest path through the faces a polyline on the faces crosses, made locally shortest
+    // across vertices; nullopt when the polyline is not on the faces or the result is longer.
+    auto straightened = [&](const std::vector<gcf::Vec3>& on_faces, std::uint32_t first_face,
+                            double than) -> std::optional<unfold::Straightened> {
         std::size_t bad = gcf::kNone;
         unfold::Strip strip;
-        unfold::unfold_polyline(m, traced, UnfoldOptions{}, s.front().face, bad, &strip);
-        if (bad == gcf::kNone && !strip.faces.empty()) {
-            const std::size_t cap = 4 * strip.faces.size() + 16;
-            auto st = unfold::straighten(m, std::move(strip), traced.front(), traced.back(), cap);
-            if (st.length <= r.traced_length) {
-                traced = std::move(st.points);
-                r.straightened = true;
-                r.straighten_flips = st.flips;
-                r.straighten_bends = st.bends;
+        unfold::unfold_polyline(m, on_faces, UnfoldOptions{}, first_face, bad, &strip);
+        if (bad != gcf::kNone || strip.faces.empty())
+            return std::nullopt;
+        const std::size_t cap = 4 * strip.faces.size() + 16;
+        auto st = unfold::straighten(m, std::move(strip), on_faces.front(), on_faces.back(), cap);
+        if (!(st.length <= than))
+            return std::nullopt;
+        return st;
+    };
+    if (o.straighten && traced.size() >= 2) {
+        double best = off_faces ? std::numeric_limits<double>::infinity() : r.traced_length;
+        std::optional<unfold::Straightened> st;
+        if (!off_faces)
+            st = straightened(traced, s.front().face, best);
+        if (st)
+            best = st->length;
+        // The initial path straightened too: where the flow leaves the initial path's homotopy
+        // class for a longer locally shortest one (sharp concave creases, whose averaged normals
+        // tilt the tangent planes), the initial path's own geodesic is the shorter answer.
+        if (initial.size() >= 2) {
+            if (auto si = straightened(initial, s.front().face, best)) {
+                if (si->length < best * (1 - 1e-12)) {
+                    st = std::move(si);
+                    r.on_mesh_from_initial = true;
+                }
             }
+        }
+        if (st) {
+            traced = std::move(st->points);
+            off_faces = false;
+            r.straightened = true;
+            r.straighten_flips = st->flips;
+            r.straighten_bends = st->bends;
         }
     }
     for (const auto& p : smooth)
@@ -454,13 +482,13 @@ public:
             out.report.seconds = internal::seconds_since(t0);
             return out;
         }
-        const auto verts = internal::gcf::edge_path(m, a.vertex, b.vertex);
+        const auto fp = internal::gcf::face_path(m, a.vertex, b.vertex);
         std::vector<internal::gcf::Vec3> pts{a.p};
         std::vector<std::uint32_t> hints{a.vertex};
-        for (auto v : verts) {
-            if ((m.xyz[v] - pts.back()).norm() > 0) {
-                pts.push_back(m.xyz[v]);
-                hints.push_back(v);
+        for (std::size_t k = 0; k < fp.points.size(); ++k) {
+            if ((fp.points[k] - pts.back()).norm() > 0) {
+                pts.push_back(fp.points[k]);
+                hints.push_back(fp.hints[k]);
             }
         }
         if ((b.p - pts.back()).norm() > 0) {

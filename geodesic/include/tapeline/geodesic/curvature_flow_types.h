@@ -121,9 +121,12 @@ struct CurvatureFlowReport {
     bool straightened = false;         ///< on_mesh is the straightened trace (options.straighten)
     std::size_t straighten_flips = 0;  ///< vertices the strip was moved across while straightening
     std::size_t straighten_bends = 0;  ///< vertices the straightened path still turns at (saddles)
-    double init_seconds = 0;           ///< mesh arrays, Dijkstra, resampling
-    double flow_seconds = 0;           ///< the iterations
-    double seconds = 0;                ///< total
+    /// on_mesh is the initial path straightened, not the flowed one: the flow ended in a longer
+    /// locally shortest path (another homotopy class) than the one the initial path leads to
+    bool on_mesh_from_initial = false;
+    double init_seconds = 0;  ///< mesh arrays, Dijkstra, resampling
+    double flow_seconds = 0;  ///< the iterations
+    double seconds = 0;       ///< total
     /// "converged" (curvature below tolerance), "stalled" (moves below update_tolerance first,
     /// e.g. at sharp features where the re-projection undoes the tangent move),
     /// "max_iterations", "unreachable" (endpoints in different components: empty paths)

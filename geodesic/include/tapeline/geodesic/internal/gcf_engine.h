@@ -274,6 +274,105 @@ inline std::vector<std::uint32_t> edge_path(const Mesh& m, std::uint32_t a, std:
     return path;
 }
 
+/// A polyline on the faces from vertex a to vertex b: points and, per point, a mesh vertex near it.
+struct FacePath {
+    std::vector<Vec3> points;
+    std::vector<std::uint32_t> hints;
+};
+
+/// Dijkstra on the edge graph plus, for every edge, the step between the two vertices opposite it
+/// when the straight line between them crosses the edge in the pair of faces unfolded into one
+/// plane (a convex pair): a metric much closer to the surface's than the edges' alone, whose paths
+/// on structured (grid, fan) meshes are up to sqrt(2) long and can take the other way around a
+/// limb. The crossing point on the edge is part of the path, so it stays on the faces. A* with the
+/// straight-line distance to b as the (consistent) estimate: only the region around the segment
+/// is searched. Empty if b is not reachable.
+inline FacePath face_path(const Mesh& m, std::uint32_t a, std::uint32_t b) {
+    const std::size_t n = m.vertex_count();
+    std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+    std::vector<std::uint32_t> pred(n, kNone);
+    std::vector<Vec3> via(n);  // the edge crossing of a step across an edge
+    std::vector<char> crossed(n, 0);
+    using Item = std::pair<double, std::uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
+    dist[a] = 0;
+    const Vec3 goal = m.xyz[b];
+    q.push({(m.xyz[a] - goal).norm(), a});
+    auto relax = [&](std::uint32_t v, std::uint32_t w, double nd, const Vec3* x) {
+        if (nd < dist[w]) {
+            dist[w] = nd;
+            pred[w] = v;
+            crossed[w] = x != nullptr;
+            if (x)
+                via[w] = *x;
+            q.push({nd + (m.xyz[w] - goal).norm(), w});
+        }
+    };
+    while (!q.empty()) {
+        const auto [key, v] = q.top();
+        q.pop();
+        const double d = dist[v];
+        if (key > d + (m.xyz[v] - goal).norm() * (1 + 1e-12))
+            continue;  // a stale entry
+        if (v == b)
+            break;
+        for (std::uint32_t k = m.vv_start[v]; k < m.vv_start[v + 1]; ++k)
+            relax(v, m.vv[k], d + (m.xyz[m.vv[k]] - m.xyz[v]).norm(), nullptr);
+        for (std::uint32_t k = m.vf_start[v]; k < m.vf_start[v + 1]; ++k) {
+            const std::uint32_t f = m.vf[k];
+            int c = 0;
+            while (c < 3 && m.corner[3 * f + c] != v)
+                ++c;
+            if (c == 3)
+                continue;
+            // The edge opposite v (corners c+1, c+2) and the face across it.
+            const int e = (c + 1) % 3;
+            const std::uint32_t g = m.across[3 * f + e];
+            if (g == kNone)
+                continue;
+            const std::uint32_t u = m.corner[3 * f + e], w = m.corner[3 * f + (c + 2) % 3];
+            std::uint32_t x = kNone;
+            for (int j = 0; j < 3; ++j) {
+                const std::uint32_t cj = m.corner[3 * g + j];
+                if (cj != u && cj != w)
+                    x = cj;
+            }
+            if (x == kNone || x == v)
+                continue;
+            // Unfold: edge u-w along an axis, v on one side, x on the other.
+            const Vec3 ew = m.xyz[w] - m.xyz[u];
+            const double len = ew.norm();
+            if (!(len > 0))
+                continue;
+            const Vec3 t = ew / len;
+            const Vec3 pv = m.xyz[v] - m.xyz[u], px = m.xyz[x] - m.xyz[u];
+            const double sv = pv.dot(t), sx = px.dot(t);
+            const double hv = (pv - sv * t).norm(), hx = (px - sx * t).norm();
+            if (!(hv > 0 && hx > 0))
+                continue;
+            const double along = sv + (sx - sv) * hv / (hv + hx);  // crossing, from u
+            if (!(along > 1e-9 * len && along < len * (1 - 1e-9)))
+                continue;
+            const Vec3 cross = m.xyz[u] + along * t;
+            relax(v, x, d + std::hypot(sx - sv, hv + hx), &cross);
+        }
+    }
+    FacePath out;
+    if (!(dist[b] < std::numeric_limits<double>::infinity()))
+        return out;
+    for (std::uint32_t v = b; v != kNone; v = pred[v]) {
+        out.points.push_back(m.xyz[v]);
+        out.hints.push_back(v);
+        if (crossed[v]) {
+            out.points.push_back(via[v]);
+            out.hints.push_back(v);
+        }
+    }
+    std::reverse(out.points.begin(), out.points.end());
+    std::reverse(out.hints.begin(), out.hints.end());
+    return out;
+}
+
 inline double polyline_length(const std::vector<Vec3>& p) {
     double len = 0;
     for (std::size_t i = 1; i < p.size(); ++i)
