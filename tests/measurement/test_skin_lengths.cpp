@@ -157,3 +157,23 @@ INSTANTIATE_TEST_SUITE_P(MakeHuman, SkinLengths,
                                            "mh_male_thin_tall"));
 
 }  // namespace
+
+// A sliver of a scan or a boolean union has zero area: the barycentric coordinates of a point on it
+// are not finite (0/0), and a path solver given such a location fails. The locator then takes the
+// face's corner nearest to the query instead.
+TEST(SkinLocator, ZeroAreaFaceGivesTheNearestCornerNotNaN) {
+    for (const auto& [query, corner] : {std::pair<Vec3, Vec3>{{2.9, 0.5, 0}, {3, 0, 0}},
+                                        {{0.2, 0, -0.3}, {0, 0, 0}},
+                                        {{1.1, 0.2, 0.1}, {1, 0, 0}}}) {
+        const LocatedPoint l = locate_on_zero_area_faces(query);
+        double sum = 0;
+        for (const double b : l.barycentric) {
+            EXPECT_TRUE(std::isfinite(b));
+            sum += b;
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-12);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(l.point[k], corner[k], 1e-12) << query[0];
+        }
+    }
+}

@@ -71,4 +71,22 @@ Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
+LocatedPoint locate_on_zero_area_faces(const Vec3& query) {
+    SurfaceMesh tm;
+    const auto a = tm.add_vertex({0, 0, 0}), b = tm.add_vertex({1, 0, 0}),
+               c = tm.add_vertex({3, 0, 0});
+    tm.add_face(a, b, c);
+    tm.add_face(a, c, b);
+    meas::BodyFrame frame;
+    frame.rows = {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}};
+    const meas::SkinLocator<SurfaceMesh, NP> at(tm, frame);
+    const auto l = at.nearest(query);
+    LocatedPoint out;
+    out.point = at.canonical(l);
+    for (int k = 0; k < 3; ++k) {
+        out.barycentric[static_cast<std::size_t>(k)] = l.second[k];
+    }
+    return out;
+}
+
 }  // namespace tapeline_test::measurement

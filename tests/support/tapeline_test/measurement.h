@@ -93,4 +93,13 @@ LengthsResult measure_file_with_lengths(const std::string& path, const BodyOptio
 Result measure_synthetic_cross_seam(const SyntheticBodyOptions& synthetic,
                                     const std::string& overrides = "");
 
+/// SkinLocator::nearest on a closed mesh whose two faces have zero area (three collinear
+/// corners (0,0,0), (1,0,0), (3,0,0)), queried at `query`: the located point and its barycentric
+/// coordinates.
+struct LocatedPoint {
+    Vec3 point{0, 0, 0};
+    std::array<double, 3> barycentric{0, 0, 0};
+};
+LocatedPoint locate_on_zero_area_faces(const Vec3& query);
+
 }  // namespace tapeline_test::measurement

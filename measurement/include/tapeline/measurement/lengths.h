@@ -71,8 +71,8 @@ public:
     /// The surface point nearest to a canonical point.
     Location nearest(const Vec3& canonical) const {
         const Vec3 p = frame_.to_input(canonical);
-        return CGAL::Polygon_mesh_processing::locate_with_AABB_tree(
-            typename GeomTraits::Point_3(p[0], p[1], p[2]), tree_, tm_, np_);
+        const typename GeomTraits::Point_3 q(p[0], p[1], p[2]);
+        return finite(CGAL::Polygon_mesh_processing::locate_with_AABB_tree(q, tree_, tm_, np_), q);
     }
     /// The first surface point hit by the ray from a canonical point along a canonical
     /// direction; nullopt when it hits nothing.
@@ -92,6 +92,36 @@ public:
         if (l.first == boost::graph_traits<TriangleMesh>::null_face()) {
             return std::nullopt;
         }
+        return finite(l, ray);
+    }
+    /// `l` itself when its barycentric coordinates are finite; on a zero-area face (a sliver of a
+    /// scan or a boolean union), where they are not, the corner of its face nearest to the query
+    /// `q` (a point or a ray).
+    template <class Query>
+    Location finite(Location l, const Query& q) const {
+        const auto& b = l.second;
+        if (std::isfinite(CGAL::to_double(b[0])) && std::isfinite(CGAL::to_double(b[1])) &&
+            std::isfinite(CGAL::to_double(b[2]))) {
+            return l;
+        }
+        const auto vpm = CGAL::parameters::choose_parameter(
+            CGAL::parameters::get_parameter(np_, CGAL::internal_np::vertex_point),
+            get_const_property_map(CGAL::vertex_point, tm_));
+        // The corners in the order of the barycentric coordinates (PMP::construct_point).
+        const auto h = halfedge(l.first, tm_);
+        const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> corners{
+            source(h, tm_), target(h, tm_), target(next(h, tm_), tm_)};
+        int best = 0;
+        double best_d = std::numeric_limits<double>::infinity();
+        for (int k = 0; k < 3; ++k) {
+            const double d = CGAL::to_double(CGAL::squared_distance(get(vpm, corners[k]), q));
+            if (d < best_d) {
+                best_d = d;
+                best = k;
+            }
+        }
+        using FT = typename GeomTraits::FT;
+        l.second = {FT(best == 0), FT(best == 1), FT(best == 2)};
         return l;
     }
     /// A surface point in the canonical frame.

@@ -839,17 +839,36 @@ private:
             std::vector<Vec3> outline;
             for (double r = r0; r <= r1; r += 0.0025 * height_) {
                 const Plane plane = Plane::make({sg * r, 0, 0}, {1, 0, 0}, {0, 1, 0});
-                bool any = false;
+                const Loop* top = nullptr;
+                std::size_t at = 0;
                 Vec3 best{0, -std::numeric_limits<double>::infinity(), 0};
-                for (const Loop& loop : cut(m_, plane, ws_)) {
-                    for (const auto& p : loop.points) {
+                const auto loops = cut(m_, plane, ws_);
+                for (const Loop& loop : loops) {
+                    for (std::size_t k = 0; k < loop.points.size(); ++k) {
+                        const Vec3& p = loop.points[k];
                         if (p[1] <= cap && p[1] > best[1]) {
                             best = p;
-                            any = true;
+                            top = &loop;
+                            at = k;
                         }
                     }
                 }
-                if (any) {
+                if (top) {
+                    // A flat top (a level plateau of the loop) has no single highest point: take
+                    // the middle of the stretch of the loop within 1e-4 of the height around it,
+                    // so that mirror-image shoulders give mirror-image points.
+                    const auto& q = top->points;
+                    const std::size_t n = q.size();
+                    const double level = best[1] - 1e-4 * height_;
+                    double z0 = best[2], z1 = best[2];
+                    for (const std::size_t step : {std::size_t{1}, n - 1}) {
+                        for (std::size_t k = (at + step) % n, c = 1;
+                             c < n && q[k][1] >= level && q[k][1] <= cap; k = (k + step) % n, ++c) {
+                            z0 = std::min(z0, q[k][2]);
+                            z1 = std::max(z1, q[k][2]);
+                        }
+                    }
+                    best[2] = (z0 + z1) / 2;
                     outline.push_back(best);
                 }
             }
