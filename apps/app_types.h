@@ -63,17 +63,20 @@ MethodResult run_distance_method(const std::string& method, const Mesh& mesh,
                                  const Sources& sources, std::size_t window = 8,
                                  const PointsMethodOptions& points = {});
 
-/// A method name as given ("gcf-window:16", "gcf-exact/faces"): the method, its window, and
-/// whether a curvature-flow method reports the length of its samples on the faces (like for like
-/// with exact polyhedral) instead of the Phong-lifted length (towards the smooth surface).
+/// A method name as given ("gcf-window:16", "gcf-exact/faces", "gcf-window:8/faces/raw"): the
+/// method, its window, whether a curvature-flow method reports the length of its samples on the
+/// faces (like for like with exact polyhedral) instead of the Phong-lifted length (towards the
+/// smooth surface), and whether the on-face field gets its repair pass (not with "/raw"; see
+/// CurvatureFlowDistanceOptions::repair_tolerance).
 struct MethodName {
     std::string base;
     std::size_t window;
     bool on_faces;
+    bool repair;
 };
-/// Splits "gcf-window:W" / "gcf-window-thesis:W" and a trailing "/faces" on gcf-* methods; other
-/// names are returned whole with `window`. InvalidInput for a ':W' or '/faces' on another method
-/// or a W that is not a positive integer.
+/// Splits "gcf-window:W" / "gcf-window-thesis:W" and a trailing "/faces" or "/faces/raw" on gcf-*
+/// methods; other names are returned whole with `window`. InvalidInput for a ':W' or '/faces' on
+/// another method, a '/raw' without '/faces' or a W that is not a positive integer.
 MethodName parse_method_name(const std::string& text, std::size_t window);
 
 // One entry point per method family, each in its own translation unit (compile in parallel).
@@ -84,7 +87,7 @@ MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
 /// gcf-exact (window 0), gcf-window (field anchor) or, with `thesis_anchor`, gcf-window-thesis
 /// (the thesis' prefix rule).
 MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window,
-                     bool thesis_anchor, bool on_faces);
+                     bool thesis_anchor, bool on_faces, bool repair);
 
 /// gcf-points: the vertices of `mesh` as a point cloud (optionally with noise), distances by the
 /// point-cloud flow (geodesic/point_cloud.h) from the one vertex source.

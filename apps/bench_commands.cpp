@@ -486,6 +486,9 @@ void run_bench(const BenchArgs& args) {
                                 parsed.base == "gcf-window-thesis" ? "prefix" : "field";
                         }
                         options["length"] = parsed.on_faces ? "faces" : "smooth";
+                        if (parsed.on_faces) {
+                            options["repair"] = parsed.repair;
+                        }
                         if (parsed.base == "gcf-points") {
                             options.erase("anchor");
                             options.erase("length");

@@ -261,7 +261,9 @@ void register_geodesic_commands(CLI::App& app) {
         "Source point FACE:B0,B1,B2 in a face of the loaded triangle mesh (repeatable)");
     dist->add_option("--method", d->method,
                      "Method (default exact-mmp); a gcf-* method with '/faces' reports the length "
-                     "of its samples on the faces instead of the Phong-lifted one")
+                     "of its samples on the faces instead of the Phong-lifted one, and re-solves "
+                     "the vertices its neighbours contradict as two-point paths ('/faces/raw': "
+                     "without that repair)")
         ->check(CLI::Validator(
             [](std::string& m) {
                 const std::string base = parse_method_name(m, 8).base;

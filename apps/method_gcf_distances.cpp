@@ -9,7 +9,7 @@
 namespace tapeline::app {
 
 MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window,
-                     bool thesis_anchor, bool on_faces) {
+                     bool thesis_anchor, bool on_faces, bool repair) {
     if (sources.vertices.size() != 1 || !sources.locations.empty()) {
         throw InvalidInput(
             "gcf-exact / gcf-window take exactly one vertex source (ring propagation from one "
@@ -22,6 +22,9 @@ MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t windo
     options.anchor = thesis_anchor ? geodesic::WindowAnchor::prefix : geodesic::WindowAnchor::field;
     options.cut_locus_guard = !thesis_anchor;
     options.smooth_length = !on_faces;  // gcf-window-thesis: the thesis' rule as written
+    if (!repair) {
+        options.repair_tolerance = -1;
+    }
     const geodesic::CurvatureFlowDistanceReport r = geodesic::gcf_distances(
         mesh, sources.vertices.front(), CGAL::make_property_map(result.distances), options);
     result.report.method =

@@ -14,8 +14,14 @@ const std::vector<std::string>& distance_methods() {
 }
 
 MethodName parse_method_name(const std::string& given, std::size_t window) {
-    MethodName out{given, window, false};
+    MethodName out{given, window, false, true};
     std::string text = given;
+    const std::string raw = "/raw";
+    if (text.size() > raw.size() && text.compare(text.size() - raw.size(), raw.size(), raw) == 0) {
+        text.resize(text.size() - raw.size());
+        out.repair = false;
+        out.base = text;
+    }
     const std::string faces = "/faces";
     if (text.size() > faces.size() &&
         text.compare(text.size() - faces.size(), faces.size(), faces) == 0) {
@@ -26,6 +32,10 @@ MethodName parse_method_name(const std::string& given, std::size_t window) {
         }
         out.on_faces = true;
         out.base = text;
+    }
+    if (!out.repair && !out.on_faces) {
+        throw InvalidInput("bad method '" + given +
+                           "': '/raw' (no repair pass) goes after '/faces' on a gcf-* method");
     }
     const std::size_t colon = text.find(':');
     if (colon == std::string::npos) {
@@ -66,14 +76,15 @@ MethodResult run_distance_method(const std::string& name, const Mesh& mesh, cons
         return run_dijkstra(mesh, sources);
     }
     if (method == "gcf-exact") {
-        return run_gcf(mesh, sources, 0, false, parsed.on_faces);
+        return run_gcf(mesh, sources, 0, false, parsed.on_faces, parsed.repair);
     }
     if (method == "gcf-window" || method == "gcf-window-thesis") {
         if (window == 0) {
             throw InvalidInput("--window must be at least 1 for " + method +
                                " (gcf-exact flows all)");
         }
-        return run_gcf(mesh, sources, window, method == "gcf-window-thesis", parsed.on_faces);
+        return run_gcf(mesh, sources, window, method == "gcf-window-thesis", parsed.on_faces,
+                       parsed.repair);
     }
     if (method == "gcf-points") {
         return run_gcf_points(mesh, sources, window, points);

@@ -28,8 +28,9 @@ if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
   sub="$out/issue4_shared"
   mkdir -p "$sub"
   "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
-    --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8 \
+    --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8/faces/raw,gcf-window:8 \
     "${meshes[@]}" $( [ -f "$shared/armadillo.obj" ] && echo --mesh "$shared/armadillo.obj" ) \
+    --surface torus:1,0.4:160,64 \
     --out "$sub/gcf_shared.jsonl"
   "$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
     --methods exact-mmp,gcf-window:8/faces,gcf-window:8 \
@@ -63,9 +64,10 @@ big=()
   --sources 1 --repeat 1 --methods gcf-window:8 --surface icosphere:7 --append \
   --out "$out/gcf_threads.jsonl"
 # 4. Like for like with the exact polyhedral distance: the length of the samples on the faces
-#    ('/faces') instead of the Phong-lifted length, on the same inputs as part 1.
+#    ('/faces') instead of the Phong-lifted length, on the same inputs as part 1, with and without
+#    ('/raw') the repair pass.
 "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 --append \
-  --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces \
+  --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8/faces/raw \
   --surface icosphere:4 --surface icosphere:5 --surface ellipsoid:1,0.6,0.3:5:0.25 \
   --surface torus:1,0.4:160,64 "${meshes[@]}" "${big[@]}" --out "$jsonl"
 /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$jsonl" --out-dir "$out" \

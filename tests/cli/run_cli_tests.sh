@@ -183,14 +183,18 @@ else fail "memory limit lines: $(cat oom.jsonl | head -c 400)"; fi
 expect_fail "bench unknown method" "nomethod" "$bin" bench geodesic --surface icosphere:1 --methods nomethod --out b2.jsonl
 expect_fail "bench window on another method" "only gcf-window" "$bin" bench geodesic --surface icosphere:1 --methods dijkstra:4 --out b2.jsonl
 expect_fail "bench window not a number" "gcf-window:x" "$bin" bench geodesic --surface icosphere:1 --methods gcf-window:x --out b2.jsonl
-expect_ok "bench window sweep" "$bin" bench geodesic --surface icosphere:2 --methods gcf-window:2,gcf-window:6 \
+expect_fail "bench /raw without /faces" "goes after '/faces' on a gcf" "$bin" bench geodesic --surface icosphere:1 --methods gcf-window:4/raw --out b2.jsonl
+expect_fail "bench /raw on another method" "distance methods take '/faces'" "$bin" bench geodesic --surface icosphere:1 --methods dijkstra/faces/raw --out b2.jsonl
+expect_ok "bench window sweep" "$bin" bench geodesic --surface icosphere:2 --methods gcf-window:2,gcf-window:6,gcf-window:4/faces,gcf-window:4/faces/raw \
   --reference gcf-exact --threads 2 --out sweep.jsonl
 if $py - <<'PY'
 import json
 lines = [json.loads(l) for l in open("sweep.jsonl")]
 w = {l["method"]: l for l in lines}
-assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6"}, set(w)
+assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6", "gcf-window:4/faces", "gcf-window:4/faces/raw"}, set(w)
 assert w["gcf-window:2"]["options"] == {"window": 2, "anchor": "field", "length": "smooth"}
+assert w["gcf-window:4/faces"]["options"] == {"window": 4, "anchor": "field", "length": "faces", "repair": True}
+assert w["gcf-window:4/faces/raw"]["options"] == {"window": 4, "anchor": "field", "length": "faces", "repair": False}
 assert w["gcf-window:6"]["options"]["window"] == 6
 assert all(l["threads"] == 2 and l["status"] == "ok" for l in lines)
 assert all(w[m]["max_rel_error"] < 2e-2 for m in ("gcf-window:2", "gcf-window:6"))

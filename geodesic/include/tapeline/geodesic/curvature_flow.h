@@ -18,6 +18,8 @@
 #include <tapeline/geodesic/curvature_flow_types.h>
 #include <tapeline/geodesic/internal/gcf_distances.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
+#include <tapeline/geodesic/internal/gcf_repair.h>
+#include <tapeline/geodesic/internal/gcf_trace.h>
 #include <tapeline/geodesic/internal/mesh_checks.h>
 #include <tapeline/geodesic/internal/named_parameters.h>
 #include <tapeline/geodesic/internal/unfold_engine.h>
@@ -224,43 +226,6 @@ std::vector<gcf::Vec3> to_vec3s(const PointRange& range) {
     return out;
 }
 
-/// Appends to `out` (ending with a.p) the plane cut of the faces from sample a to sample b (the
-/// thesis' on-mesh trace): false, nothing appended, when the cut walk gets lost. A sample on an
-/// edge or at a vertex lies on several faces, and the cut must start in the one the segment
-/// enters: every face around a's vertex that holds a is tried (and a's own face, which the
-/// projection may have found outside that 1-ring) and the shortest successful trace kept.
-inline bool plane_cut(const gcf::Mesh& m, const gcf::Sample& a, const gcf::Sample& b,
-                      std::vector<gcf::Vec3>& out) {
-    const gcf::Vec3 n0 = m.frame(a.vertex).col(2), n1 = m.frame(b.vertex).col(2);
-    const gcf::Vec3 nrm = n0 + (n0.dot(n1) < 0 ? gcf::Vec3(-n1) : n1);
-    thread_local std::vector<gcf::Vec3> best, tmp;
-    best.clear();
-    double best_len = std::numeric_limits<double>::infinity();
-    bool in_ring = false;
-    auto attempt = [&](std::uint32_t f) {
-        tmp.assign(1, a.p);
-        if (!gcf::trace_segment(m, a.p, f, b.p, b.face, nrm, tmp))
-            return;
-        const double len = gcf::polyline_length(tmp);
-        if (len < best_len) {
-            best_len = len;
-            best.swap(tmp);
-        }
-    };
-    for (std::uint32_t k = m.vf_start[a.vertex]; k < m.vf_start[a.vertex + 1]; ++k) {
-        const std::uint32_t f = m.vf[k];
-        in_ring = in_ring || f == a.face;
-        if (f == a.face || gcf::on_face(m, f, a.p))
-            attempt(f);
-    }
-    if (!in_ring && a.face != gcf::kNone)
-        attempt(a.face);
-    if (best.empty())
-        return false;
-    out.insert(out.end(), best.begin() + 1, best.end());
-    return true;
-}
-
 /// The corner of face f nearest to p.
 inline std::uint32_t nearest_corner(const gcf::Mesh& m, std::uint32_t f, const gcf::Vec3& p) {
     std::uint32_t v = m.corner[3 * f];
@@ -270,48 +235,31 @@ inline std::uint32_t nearest_corner(const gcf::Mesh& m, std::uint32_t f, const g
     return v;
 }
 
-/// Appends to `out` (ending with a.p) a path on the faces from sample a to sample b, so that the
-/// on-mesh output can never be shorter than the polyhedral distance: the plane cut; without one,
-/// the segment split at its midpoint projected onto the faces (up to 3 times; samples on two
-/// sheets of a fold or across a narrow gap, e.g. between arm and torso when the flow stops at its
-/// iteration cap); then a's face corner, the shortest edge path to b's face corner, and b (the
+/// Appends to `out` (ending with a.p) a join on the faces of two samples the on-face trace
+/// (gcf::trace_on_faces) could not cut, so that the on-mesh output can never be shorter than the
+/// polyhedral distance: a's face corner, the shortest edge path to b's face corner, and b (the
 /// straightening that follows shortens it within its faces). A chord, which cuts through the solid
 /// (measured on a MakeHuman body: up to 54 % short), only if even the edge graph does not join
-/// them (`off_faces` set). Returns false when any piece is not a plane cut.
-inline bool trace_on_faces(const gcf::Mesh& m, const gcf::Sample& a, const gcf::Sample& b,
-                           std::vector<gcf::Vec3>& out, bool& off_faces, int depth = 0) {
-    if (plane_cut(m, a, b, out))
-        return true;
-    const double chord = (b.p - a.p).norm();
-    if (depth < 3 && chord > 1e-3 * m.mean_edge) {
-        gcf::Sample mid;
-        mid.p = 0.5 * (a.p + b.p);
-        mid.vertex = gcf::nearest_vertex_walk(m, mid.p, a.vertex);
-        gcf::project_around(m, mid);
-        if (mid.face != gcf::kNone && (mid.p - a.p).norm() > 0 && (mid.p - b.p).norm() > 0) {
-            const bool first = trace_on_faces(m, a, mid, out, off_faces, depth + 1);
-            const bool second = trace_on_faces(m, mid, b, out, off_faces, depth + 1);
-            return first && second;
-        }
-    }
+/// them (`off_faces` set).
+inline void join_by_edge_path(const gcf::Mesh& m, const gcf::Sample& a, const gcf::Sample& b,
+                              std::vector<gcf::Vec3>& out, bool& off_faces) {
     if (a.face == gcf::kNone || b.face == gcf::kNone) {
         off_faces = true;
         out.push_back(b.p);
-        return false;
+        return;
     }
     const std::uint32_t va = nearest_corner(m, a.face, a.p), vb = nearest_corner(m, b.face, b.p);
     const auto verts = gcf::edge_path(m, va, vb);
     if (verts.empty()) {
         off_faces = true;
         out.push_back(b.p);
-        return false;
+        return;
     }
     for (const std::uint32_t v : verts)
         if ((m.xyz[v] - out.back()).norm() > 0)
             out.push_back(m.xyz[v]);
     if ((b.p - out.back()).norm() > 0)
         out.push_back(b.p);
-    return false;
 }
 
 /// The flow from an initial polyline (pts with vertex hints); endpoints are a and b.
@@ -390,8 +338,11 @@ CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, cons
         smooth[i] = (i == 0 || i + 1 == s.size()) ? s[i].p : gcf::phong_lift(m, s[i].face, s[i].p);
     traced.push_back(s.front().p);
     bool off_faces = false;  // a segment was left as a chord (no on-face connection at all)
+    auto join = [&](const gcf::Sample& p, const gcf::Sample& q, std::vector<gcf::Vec3>& to) {
+        join_by_edge_path(m, p, q, to, off_faces);
+    };
     for (std::size_t i = 1; i < s.size(); ++i) {
-        if (!trace_on_faces(m, s[i - 1], s[i], traced, off_faces))
+        if (gcf::trace_on_faces(m, s[i - 1], s[i], traced, join) > 0)
             ++r.trace_fallbacks;
     }
     r.traced_length = gcf::polyline_length(traced);
@@ -669,7 +620,7 @@ CurvatureFlowDistanceReport gcf_distances(
     pp.near_source_samples = options.near_source_samples;
     pp.anchor_slides = options.anchor_slides;
     pp.cut_locus_guard = options.cut_locus_guard;
-    const auto f = internal::gcf::propagate(m, a.vertex, pp, options.flow);
+    auto f = internal::gcf::propagate(m, a.vertex, pp, options.flow);
     r.flows = f.flows;
     r.iterations = f.iterations;
     r.converged = f.converged;
@@ -680,6 +631,62 @@ CurvatureFlowDistanceReport gcf_distances(
     r.epsilon = f.epsilon;
     r.max_faces = f.max_faces;
     r.error_bound = f.epsilon * static_cast<double>(f.max_faces) * m.mean_edge;
+    if (!options.smooth_length && options.repair_tolerance >= 0 && options.repair_rounds > 0) {
+        // Vertices whose distance exceeds what their neighbours' distances imply are re-solved as
+        // two-point paths from the source, started from a fresh search (path()) and from the
+        // field's descent path (path_from_polyline()); a straightened on-mesh length is a path on
+        // the faces (never below the exact distance), kept where shorter.
+        using Solver = GeodesicPathSolver<TriangleMesh, NamedParameters>;
+        const auto t1 = internal::Clock::now();
+        std::vector<char> skip(m.vertex_count(), 0);
+        skip[a.vertex] = 1;
+        for (std::uint32_t k = m.vv_start[a.vertex]; k < m.vv_start[a.vertex + 1]; ++k)
+            skip[m.vv[k]] = 1;  // the 1-ring: straight edges, exact on the faces
+        const Solver solver(tm, np);
+        for (std::size_t round = 0; round < options.repair_rounds; ++round) {
+            const auto flagged =
+                internal::gcf::suspicious_vertices(m, f.d, skip, options.repair_tolerance);
+            if (flagged.empty())
+                break;
+            std::vector<double> best(flagged.size(), std::numeric_limits<double>::infinity());
+            auto solve = [&](std::size_t k) {
+                const std::uint32_t v = flagged[k];
+                auto keep = [&](const typename Solver::Result& p) {
+                    if (p.on_mesh.found())
+                        best[k] = std::min(best[k], p.on_mesh.length);
+                };
+                keep(solver.path(SurfacePoint<TriangleMesh>(source),
+                                 SurfacePoint<TriangleMesh>(setup.index().vertex(v))));
+                const auto down = internal::gcf::descent_path(m, f.d, v, a.vertex);
+                if (down.size() >= 2) {
+                    std::vector<typename Solver::Point_3> poly;
+                    for (const std::uint32_t u : down)
+                        poly.push_back(internal::to_point<typename Solver::Point_3>(m.xyz[u]));
+                    keep(solver.path_from_polyline(poly));
+                }
+            };
+#ifdef CGAL_LINKED_WITH_TBB
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flagged.size(), 1),
+                              [&](const tbb::blocked_range<std::size_t>& range) {
+                                  for (std::size_t k = range.begin(); k != range.end(); ++k)
+                                      solve(k);
+                              });
+#else
+            for (std::size_t k = 0; k < flagged.size(); ++k)
+                solve(k);
+#endif
+            for (std::size_t k = 0; k < flagged.size(); ++k) {
+                const std::uint32_t v = flagged[k];
+                skip[v] = 1;
+                ++r.repair_checked;
+                if (best[k] < f.d[v]) {
+                    f.d[v] = best[k];
+                    ++r.repair_improved;
+                }
+            }
+        }
+        r.repair_seconds = internal::seconds_since(t1);
+    }
     r.unreachable = internal::write_distances(f.d, setup.index(), distances, "gcf_distances");
     r.reached = r.vertices - r.unreachable;
     if (r.solver_failures > 0)

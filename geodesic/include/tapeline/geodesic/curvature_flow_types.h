@@ -182,6 +182,17 @@ struct CurvatureFlowDistanceOptions {
     /// a handle) the straightest continuation can come from the longer side. Not in the thesis;
     /// measured on the torus (80 x 32, W = 8): max error 16.6 % without, 0.26 % with it.
     bool cut_locus_guard = true;
+    /// With the on-face length (smooth_length = false): after the propagation, every vertex
+    /// outside the source's 1-ring whose distance exceeds the planar triangle update of its
+    /// neighbours' distances by more than this (relative) is re-solved as a two-point path from the
+    /// source (GeodesicPathSolver, straightened on-mesh path; started once from a fresh search
+    /// and once from the field's steepest-descent edge path) and keeps the shortest length; then
+    /// again for the vertices flagged with the updated distances,
+    /// `repair_rounds` times in all. Where the geodesic arrives between the directions of the
+    /// visited neighbours' paths, no continuation of them is shortest, and the window cannot turn
+    /// far enough. Not in the thesis. Negative: off.
+    double repair_tolerance = 2e-3;
+    std::size_t repair_rounds = 2;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
     WindowAnchor anchor = WindowAnchor::field;
     /// Algorithm 2 with WindowAnchor::field: paths of at most this many samples are flowed whole
@@ -226,9 +237,12 @@ struct CurvatureFlowDistanceReport {
     /// epsilon * max_faces * mean edge length: the bound, in the mesh's unit, on how far the
     /// windowed distances may lie from the whole-path flow (Algorithm 1), with constant 1.
     double error_bound = 0;
-    double sample_spacing = 0;  ///< the spacing used
-    double init_seconds = 0;    ///< mesh arrays and checks
-    double seconds = 0;         ///< total
+    std::size_t repair_checked = 0;   ///< vertices re-solved as two-point paths (repair_tolerance)
+    std::size_t repair_improved = 0;  ///< of them, those whose two-point path was shorter
+    double repair_seconds = 0;        ///< the repair's share of `seconds`
+    double sample_spacing = 0;        ///< the spacing used
+    double init_seconds = 0;          ///< mesh arrays and checks
+    double seconds = 0;               ///< total
     /// "ok" (every flow converged or stalled), "max_iterations" (some flow hit the limit),
     /// "solver_failure" (some linear solve failed).
     std::string status = "ok";

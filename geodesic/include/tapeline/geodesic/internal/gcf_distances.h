@@ -6,6 +6,7 @@
 #include <tapeline/geodesic/curvature_flow_types.h>
 #include <tapeline/geodesic/internal/gcf_batches.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
+#include <tapeline/geodesic/internal/gcf_trace.h>
 #include <tapeline/geodesic/internal/unfold_engine.h>
 
 #include <algorithm>
@@ -146,77 +147,27 @@ inline double field_at(const Mesh& m, std::uint32_t f, const Vec3& x, const std:
     return sum;
 }
 
-/// Length on the faces of the segment between consecutive samples a and b: the plane cut of the
-/// faces through a and b (trace_segment, as the on-mesh output of the two-point flow), a
-/// polyhedral length like the exact distance's; the chord |ab| cuts through the solid at a fold or
-/// crease (measured: fandisk, a 90-degree crease, chords up to 0.36 mean edge lengths short).
-/// a's face and every face around a's vertex that holds a are tried (a sample on an edge or a
-/// vertex lies on several) and the shortest trace kept. Without a trace (or one over 1.5x the
-/// chord) the segment is split at its midpoint projected onto the faces, up to 3 times; then the
-/// chord, and *failed is set. `points` (optional) receives the traced points after a.
+/// Length on the faces of the segment between consecutive samples a and b: its on-face trace
+/// (trace_on_faces, as the on-mesh output of the two-point flow), a polyhedral length like the
+/// exact distance's; the chord |ab| cuts through the solid at a fold or crease (measured: fandisk,
+/// a 90-degree crease, chords up to 0.36 mean edge lengths short). A piece without a plane cut is
+/// its chord, and *failed is set (the caller falls back to its unflowed path). `points` (optional,
+/// ending with a.p) receives the traced points after a.
 inline double traced_length(const Mesh& m, const Sample& a, const Sample& b,
-                            std::vector<Vec3>* points = nullptr, bool* failed = nullptr,
-                            int depth = 0) {
-    const double chord = (b.p - a.p).norm();
-    if (a.face == kNone || b.face == kNone || a.vertex == kNone || a.face == b.face) {
-        if (points)
-            points->push_back(b.p);
-        return chord;
+                            std::vector<Vec3>* points = nullptr, bool* failed = nullptr) {
+    thread_local std::vector<Vec3> own;
+    if (!points) {
+        own.assign(1, a.p);
+        points = &own;
     }
-    // The cut plane contains the sum of the normals of the two samples' faces (the mesh's
-    // orientation, so no sign to guess). Vertex normals failed here: they are eigenvectors of
-    // either sign, and at a crease vertex the normal follows the sheet with more faces, so it can
-    // be perpendicular to the face the sample lies on; orienting them then turned the cut plane
-    // nearly into the surface (measured on fandisk: a 0.84-edge segment traced 4.1 edges long and
-    // dropped for its chord, 0.34 edges short).
-    Vec3 nrm = m.face_normal[a.face] + m.face_normal[b.face];
-    if (!(nrm.norm() > 0.1)) {  // a knife edge: the vertex normals, oriented by each other
-        const Vec3 n0 = m.frame(a.vertex).col(2), n1 = m.frame(b.vertex).col(2);
-        nrm = n0 + (n0.dot(n1) < 0 ? Vec3(-n1) : n1);
-    }
-    thread_local std::vector<Vec3> tmp, kept;
-    double best = std::numeric_limits<double>::infinity();
-    auto attempt = [&](std::uint32_t f) {
-        tmp.assign(1, a.p);
-        if (trace_segment(m, a.p, f, b.p, b.face, nrm, tmp)) {
-            const double len = polyline_length(tmp);
-            if (len < best) {
-                best = len;
-                if (points)
-                    kept.swap(tmp);
-            }
-        }
-    };
-    attempt(a.face);  // the projection may have found a face outside the nearest vertex's 1-ring
-    for (std::uint32_t k = m.vf_start[a.vertex]; k < m.vf_start[a.vertex + 1]; ++k) {
-        const std::uint32_t f = m.vf[k];
-        if (f != a.face && on_face(m, f, a.p))
-            attempt(f);
-    }
-    // A plane cut can wander far (around a thin part, measured on fandisk: 19 mean edges for a
-    // 0.9-edge segment); a fold of up to ~97 degrees lengthens a segment by at most 1.5x.
-    const bool traced = best <= 1.5 * chord;
-    if (!traced && depth < 3 && chord > 1e-3 * m.mean_edge) {
-        // No plane cut: the segment leaves the surface (samples on two sheets of a fold, whose
-        // chord cuts through the solid). Split it at its midpoint projected onto the faces.
-        Sample mid;
-        mid.p = 0.5 * (a.p + b.p);
-        mid.vertex = nearest_vertex_walk(m, mid.p, a.vertex);
-        project_around(m, mid);
-        if (mid.face != kNone) {
-            const double first = traced_length(m, a, mid, points, failed, depth + 1);
-            return first + traced_length(m, mid, b, points, failed, depth + 1);
-        }
-    }
-    if (!traced && failed)
+    const std::size_t first = points->size() - 1;
+    auto chord = [](const Sample&, const Sample& q, std::vector<Vec3>& out) { out.push_back(q.p); };
+    if (trace_on_faces(m, a, b, *points, chord) > 0 && failed)
         *failed = true;
-    if (points) {
-        if (traced)
-            points->insert(points->end(), kept.begin() + 1, kept.end());
-        else
-            points->push_back(b.p);
-    }
-    return traced ? best : chord;
+    double len = 0;
+    for (std::size_t i = first + 1; i < points->size(); ++i)
+        len += ((*points)[i] - (*points)[i - 1]).norm();
+    return len;
 }
 
 /// Polyhedral length of samples s[from..to]: their traces on the faces (traced_length), then the
