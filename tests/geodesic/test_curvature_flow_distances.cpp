@@ -376,9 +376,9 @@ TEST(CurvatureFlowDistances, SpotOnFaceLengthMeetsTheTargets) {
 // arrives between the directions of its visited neighbours' paths); from the torus' vertex 10088
 // one 1.2 % long, where a fresh two-point search takes the other way round the inner side and only
 // the field's own descent path starts in the right class. The repaired field must meet the 1 %
-// target, only ever lower a distance, and never below the exact one (a straightened on-mesh path
-// is a path on the faces). Not every source is repaired: from spot's vertex 2921 one vertex stays
-// 2.1 % long (geodesic/README.md).
+// target, and every distance it replaces must be a path length, so not below the exact one (a
+// straightened on-mesh path is a path on the faces). Not every source is repaired: from spot's
+// vertex 2921 one vertex stays 2.1 % long (geodesic/README.md).
 TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
     const struct {
         const char* name;
@@ -399,7 +399,7 @@ TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
         const Errors after = relative_errors(c.soup, c.source, repaired.d, mmp.d);
         std::printf(
             "[ gcf-dist ] %s from %zu, window 8, on faces: without repair mean %.2e max %.2e; "
-            "with repair mean %.2e max %.2e (%zu re-solved, %zu shorter, %.1f of %.1f ms)\n",
+            "with repair mean %.2e max %.2e (%zu re-solved, %zu replaced, %.1f of %.1f ms)\n",
             c.name, c.source, before.mean, before.max, after.mean, after.max,
             repaired.report.repair_checked, repaired.report.repair_improved,
             1e3 * repaired.report.repair_seconds, 1e3 * repaired.report.seconds);
@@ -408,14 +408,13 @@ TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
         EXPECT_LE(after.mean, before.mean) << c.name;
         EXPECT_EQ(raw.report.repair_checked, 0u) << c.name;
         EXPECT_GT(repaired.report.repair_improved, 0u) << c.name;
-        std::size_t lowered = 0;
+        std::size_t changed = 0;
         for (std::size_t v = 0; v < c.soup.points.size(); ++v) {
-            EXPECT_LE(repaired.d[v], raw.d[v]) << c.name << " " << v;
-            if (repaired.d[v] < raw.d[v]) {
-                ++lowered;
+            if (repaired.d[v] != raw.d[v]) {
+                ++changed;
                 EXPECT_GE(repaired.d[v], mmp.d[v] * (1 - 1e-9)) << c.name << " " << v;
             }
         }
-        EXPECT_EQ(lowered, repaired.report.repair_improved) << c.name;
+        EXPECT_EQ(changed, repaired.report.repair_improved) << c.name;
     }
 }

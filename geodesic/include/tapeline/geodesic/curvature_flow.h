@@ -632,10 +632,11 @@ CurvatureFlowDistanceReport gcf_distances(
     r.max_faces = f.max_faces;
     r.error_bound = f.epsilon * static_cast<double>(f.max_faces) * m.mean_edge;
     if (!options.smooth_length && options.repair_tolerance >= 0 && options.repair_rounds > 0) {
-        // Vertices whose distance exceeds what their neighbours' distances imply are re-solved as
-        // two-point paths from the source, started from a fresh search (path()) and from the
-        // field's descent path (path_from_polyline()); a straightened on-mesh length is a path on
-        // the faces (never below the exact distance), kept where shorter.
+        // Vertices whose distance differs from what their neighbours' distances imply are
+        // re-solved as two-point paths from the source, started from a fresh search (path()) and
+        // from the field's descent path (path_from_polyline()); a straightened on-mesh length is
+        // a path on the faces (never below the exact distance): kept where shorter, or where the
+        // distance was too short and the path agrees better with the neighbours.
         using Solver = GeodesicPathSolver<TriangleMesh, NamedParameters>;
         const auto t1 = internal::Clock::now();
         std::vector<char> skip(m.vertex_count(), 0);
@@ -675,12 +676,17 @@ CurvatureFlowDistanceReport gcf_distances(
             for (std::size_t k = 0; k < flagged.size(); ++k)
                 solve(k);
 #endif
+            std::vector<double> update(flagged.size());
+            for (std::size_t k = 0; k < flagged.size(); ++k)
+                update[k] = internal::gcf::face_update(m, f.d, flagged[k]);
             for (std::size_t k = 0; k < flagged.size(); ++k) {
                 const std::uint32_t v = flagged[k];
                 skip[v] = 1;
                 ++r.repair_checked;
-                if (best[k] < f.d[v]) {
-                    f.d[v] = best[k];
+                const double d = internal::gcf::repaired_distance(f.d[v], best[k], update[k],
+                                                                  options.repair_tolerance);
+                if (d != f.d[v]) {
+                    f.d[v] = d;
                     ++r.repair_improved;
                 }
             }

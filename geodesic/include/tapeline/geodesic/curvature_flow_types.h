@@ -183,14 +183,15 @@ struct CurvatureFlowDistanceOptions {
     /// measured on the torus (80 x 32, W = 8): max error 16.6 % without, 0.26 % with it.
     bool cut_locus_guard = true;
     /// With the on-face length (smooth_length = false): after the propagation, every vertex
-    /// outside the source's 1-ring whose distance exceeds the planar triangle update of its
+    /// outside the source's 1-ring whose distance differs from the planar triangle update of its
     /// neighbours' distances by more than this (relative) is re-solved as a two-point path from the
     /// source (GeodesicPathSolver, straightened on-mesh path; started once from a fresh search
-    /// and once from the field's steepest-descent edge path) and keeps the shortest length; then
-    /// again for the vertices flagged with the updated distances,
-    /// `repair_rounds` times in all. Where the geodesic arrives between the directions of the
-    /// visited neighbours' paths, no continuation of them is shortest, and the window cannot turn
-    /// far enough. Not in the thesis. Negative: off.
+    /// and once from the field's steepest-descent edge path). Too long: it keeps the shortest
+    /// length. Too short (no path on the faces is that short; an anchor interpolated low): it
+    /// takes the path's length if that is closer to the update. Then again for the vertices
+    /// flagged with the updated distances, `repair_rounds` times in all. Where the geodesic
+    /// arrives between the directions of the visited neighbours' paths, no continuation of them
+    /// is shortest, and the window cannot turn far enough. Not in the thesis. Negative: off.
     double repair_tolerance = 2e-3;
     std::size_t repair_rounds = 2;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
@@ -238,7 +239,7 @@ struct CurvatureFlowDistanceReport {
     /// windowed distances may lie from the whole-path flow (Algorithm 1), with constant 1.
     double error_bound = 0;
     std::size_t repair_checked = 0;   ///< vertices re-solved as two-point paths (repair_tolerance)
-    std::size_t repair_improved = 0;  ///< of them, those whose two-point path was shorter
+    std::size_t repair_improved = 0;  ///< of them, those whose distance the two-point path replaced
     double repair_seconds = 0;        ///< the repair's share of `seconds`
     double sample_spacing = 0;        ///< the spacing used
     double init_seconds = 0;          ///< mesh arrays and checks

@@ -1,8 +1,9 @@
 // Check of a single-source distance field against the triangle update of its own values, to find
-// the vertices whose propagated path is longer than their neighbours allow (the windowed flow
+// the vertices whose propagated distance is longer than their neighbours allow (the windowed flow
 // continues a neighbour's path, and where the geodesic arrives between the neighbours' directions
-// no continuation is the shortest path). The caller re-solves them as two-point paths, started
-// from a fresh search and from the field's own descent path.
+// no continuation is the shortest path) or shorter (an anchor interpolated low). The caller
+// re-solves them as two-point paths, started from a fresh search and from the field's own descent
+// path.
 #pragma once
 
 #include <tapeline/geodesic/internal/gcf_engine.h>
@@ -60,8 +61,8 @@ inline double face_update(const Mesh& m, const std::vector<double>& d, std::uint
     return best;
 }
 
-/// Vertices not `skip`ped whose finite distance exceeds their face update by more than the
-/// relative `tolerance`.
+/// Vertices not `skip`ped whose finite distance differs from their face update by more than the
+/// relative `tolerance`, either way.
 inline std::vector<std::uint32_t> suspicious_vertices(const Mesh& m, const std::vector<double>& d,
                                                       const std::vector<char>& skip,
                                                       double tolerance) {
@@ -69,10 +70,23 @@ inline std::vector<std::uint32_t> suspicious_vertices(const Mesh& m, const std::
     for (std::uint32_t v = 0; v < m.vertex_count(); ++v) {
         if (skip[v] || !std::isfinite(d[v]))
             continue;
-        if (d[v] > face_update(m, d, v) * (1 + tolerance))
+        const double u = face_update(m, d, v);
+        if (d[v] > u * (1 + tolerance) || d[v] < u * (1 - tolerance))
             out.push_back(v);
     }
     return out;
+}
+
+/// The repaired distance of a flagged vertex: `current`, or `path` (the length of a path on the
+/// faces, never below the exact distance). Too long (not below the update): the shorter. Too short
+/// (below the update by more than `tolerance`: not the length of any path on the faces, e.g. an
+/// anchor interpolated low): the one closer to the update.
+inline double repaired_distance(double current, double path, double update, double tolerance) {
+    if (!std::isfinite(path))
+        return current;
+    if (current >= update * (1 - tolerance))
+        return std::min(current, path);
+    return std::abs(path - update) < std::abs(current - update) ? path : current;
 }
 
 /// The vertices from `source` to v along steepest descent of the field: from v, step to the
