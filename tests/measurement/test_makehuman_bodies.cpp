@@ -89,14 +89,16 @@ TEST(MakeHumanBodies, EveryLandmarkFoundAndGirthsNearTheRulers) {
     }
 }
 
+// The two proxy meshes (other topology, same body) and their base bodies.
+const std::pair<const char*, const char*> kProxyPairs[] = {
+    {"mh_female_average", "mh_female_average_female_generic"},
+    {"mh_male_average", "mh_male_average_male_generic"}};
+
 TEST(MakeHumanBodies, ProxyMeshesAgreeWithTheirBaseBodies) {
     if (!have_data()) {
         GTEST_SKIP() << "no " << kDir;
     }
-    const std::pair<const char*, const char*> pairs[] = {
-        {"mh_female_average", "mh_female_average_female_generic"},
-        {"mh_male_average", "mh_male_average_male_generic"}};
-    for (const auto& [base, proxy] : pairs) {
+    for (const auto& [base, proxy] : kProxyPairs) {
         const Result a = measure(base), b = measure(proxy);
         for (const auto& l : b.landmarks.landmarks) {
             EXPECT_TRUE(l.available()) << proxy << ": " << l.reason;
@@ -141,10 +143,7 @@ TEST(MakeHumanBodies, ProxyMeshLengthsAgreeWithTheirBaseBodies) {
     if (!have_data()) {
         GTEST_SKIP() << "no " << kDir;
     }
-    const std::pair<const char*, const char*> pairs[] = {
-        {"mh_female_average", "mh_female_average_female_generic"},
-        {"mh_male_average", "mh_male_average_male_generic"}};
-    for (const auto& [base, proxy] : pairs) {
+    for (const auto& [base, proxy] : kProxyPairs) {
         auto skin = [](const std::string& body) {
             BodyOptions o;
             o.unit = LengthUnit::dm;
