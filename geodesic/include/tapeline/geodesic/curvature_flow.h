@@ -644,6 +644,8 @@ CurvatureFlowDistanceReport gcf_distances(
         for (std::uint32_t k = m.vv_start[a.vertex]; k < m.vv_start[a.vertex + 1]; ++k)
             skip[m.vv[k]] = 1;  // the 1-ring: straight edges, exact on the faces
         const Solver solver(tm, np);
+        CurvatureFlowOptions repair_flow;
+        repair_flow.max_iterations = options.repair_flow_iterations;
         for (std::size_t round = 0; round < options.repair_rounds; ++round) {
             const auto flagged =
                 internal::gcf::suspicious_vertices(m, f.d, skip, options.repair_tolerance);
@@ -657,13 +659,13 @@ CurvatureFlowDistanceReport gcf_distances(
                         best[k] = std::min(best[k], p.on_mesh.length);
                 };
                 keep(solver.path(SurfacePoint<TriangleMesh>(source),
-                                 SurfacePoint<TriangleMesh>(setup.index().vertex(v))));
+                                 SurfacePoint<TriangleMesh>(setup.index().vertex(v)), repair_flow));
                 const auto down = internal::gcf::descent_path(m, f.d, v, a.vertex);
                 if (down.size() >= 2) {
                     std::vector<typename Solver::Point_3> poly;
                     for (const std::uint32_t u : down)
                         poly.push_back(internal::to_point<typename Solver::Point_3>(m.xyz[u]));
-                    keep(solver.path_from_polyline(poly));
+                    keep(solver.path_from_polyline(poly, repair_flow));
                 }
             };
 #ifdef CGAL_LINKED_WITH_TBB

@@ -189,11 +189,18 @@ struct CurvatureFlowDistanceOptions {
     /// and once from the field's steepest-descent edge path). Too long: it keeps the shortest
     /// length. Too short (no path on the faces is that short; an anchor interpolated low): it
     /// takes the path's length if that is closer to the update. Then again for the vertices
-    /// flagged with the updated distances, `repair_rounds` times in all. Where the geodesic
+    /// flagged with the updated distances (a repaired vertex can expose its neighbours: a region
+    /// whose distances are all too long by the same amount passes the check until its border is
+    /// mended), until none is flagged or after `repair_rounds` rounds. Where the geodesic
     /// arrives between the directions of the visited neighbours' paths, no continuation of them
     /// is shortest, and the window cannot turn far enough. Not in the thesis. Negative: off.
+    /// Measured (W = 8, fandisk from vertex 0): 2 rounds max 1.01 %, 5 or more 0.84 %.
     double repair_tolerance = 2e-3;
-    std::size_t repair_rounds = 2;
+    std::size_t repair_rounds = 8;
+    /// Flow steps of each re-solved path (its max_iterations). The straightened on-mesh length
+    /// decides, and it is the same after 5 steps as after 200 on every shared mesh and the torus
+    /// (measured; fandisk's repair took 4.8 s with 200 steps, 0.8 s with 5).
+    std::size_t repair_flow_iterations = 10;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
     WindowAnchor anchor = WindowAnchor::field;
     /// Algorithm 2 with WindowAnchor::field: paths of at most this many samples are flowed whole
