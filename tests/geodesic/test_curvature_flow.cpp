@@ -206,6 +206,48 @@ TEST(CurvatureFlow, FromAGivenPolyline) {
     EXPECT_EQ(r.on_mesh.points.back(), zigzag.back());
 }
 
+// The end point of a given polyline is the one given, even where walking towards it from the
+// point before stops on the wrong sheet of a fold. A hairpin: two 1 x 1 sheets 0.02 apart (top
+// z = 0.02, bottom z = 0) joined along x = 1 by a band. The polyline's last piece crosses the gap
+// from the top sheet to a bottom vertex; the nearest-vertex walk along it ends on the top sheet
+// right above. The path then must end at the bottom vertex, and (a path on the faces) be at least
+// the geodesic distance, 0.8 + 0.02 + 0.7 unfolded. (Found on a coarse mesh, where the end point
+// moved by 40 % of the path's length.)
+TEST(CurvatureFlow, GivenPolylineEndsWhereItWasGivenAcrossAFold) {
+    const std::size_t n = 10;
+    const double gap = 0.02;
+    tg::Soup soup;
+    auto id = [&](std::size_t sheet, std::size_t i, std::size_t j) {
+        return sheet * (n + 1) * (n + 1) + j * (n + 1) + i;
+    };
+    for (std::size_t sheet = 0; sheet < 2; ++sheet)
+        for (std::size_t j = 0; j <= n; ++j)
+            for (std::size_t i = 0; i <= n; ++i)
+                soup.points.push_back({static_cast<double>(i) / n, static_cast<double>(j) / n,
+                                       sheet == 0 ? 0.0 : gap});
+    for (std::size_t j = 0; j < n; ++j) {
+        for (std::size_t i = 0; i < n; ++i) {
+            // bottom faces down (-z), top faces up: one consistently oriented surface
+            soup.faces.push_back({id(0, i, j), id(0, i, j + 1), id(0, i + 1, j)});
+            soup.faces.push_back({id(0, i + 1, j), id(0, i, j + 1), id(0, i + 1, j + 1)});
+            soup.faces.push_back({id(1, i, j), id(1, i + 1, j), id(1, i, j + 1)});
+            soup.faces.push_back({id(1, i + 1, j), id(1, i + 1, j + 1), id(1, i, j + 1)});
+        }
+        soup.faces.push_back({id(0, n, j), id(0, n, j + 1), id(1, n, j)});
+        soup.faces.push_back({id(1, n, j), id(0, n, j + 1), id(1, n, j + 1)});
+    }
+    const tg::Vec3 start{0.2, 0.5, gap}, end{0.3, 0.5, 0.0};
+    const std::vector<tg::Vec3> polyline{start, {1.0, 0.5, gap}, end};
+    const auto r = tg::gcf_path_from_polyline(soup, polyline);
+    ASSERT_FALSE(r.on_mesh.points.empty());
+    EXPECT_LE(tg::euclidean(r.on_mesh.points.back(), end), 1e-12);
+    EXPECT_LE(tg::euclidean(r.on_mesh.points.front(), start), 1e-12);
+    const double geodesic = (1.0 - 0.2) + gap + (1.0 - 0.3);
+    EXPECT_GE(r.on_mesh.length, geodesic * (1 - 1e-9));
+    std::printf("[ gcf      ] hairpin: path from the given polyline %.6f, geodesic %.6f\n",
+                r.on_mesh.length, geodesic);
+}
+
 namespace {
 
 void expect_invalid(const std::function<void()>& f, const std::string& fragment) {

@@ -471,14 +471,15 @@ public:
         if (pts.size() < 2)
             throw InvalidInput(std::string(Setup::kWhere) +
                                ": the initial polyline needs at least two points");
+        // Both endpoints by a search over all vertices; the points between by walking from the
+        // point before (a walk can stop at a local minimum of the distance on a fold, which
+        // moved the end point of a path on a coarse mesh by 40 % of its length).
         const auto a = setup_.locate_point(pts.front());
+        const auto b = setup_.locate_point(pts.back());
         std::vector<std::uint32_t> hints{a.vertex};
-        for (std::size_t i = 1; i < pts.size(); ++i)
+        for (std::size_t i = 1; i + 1 < pts.size(); ++i)
             hints.push_back(internal::gcf::nearest_vertex_walk(m, pts[i], hints.back()));
-        internal::gcf::Sample b;
-        b.p = pts.back();
-        b.vertex = hints.back();
-        internal::gcf::project_around(m, b);
+        hints.push_back(b.vertex);
         pts.front() = a.p;
         pts.back() = b.p;
         check_distinct(a, b);
