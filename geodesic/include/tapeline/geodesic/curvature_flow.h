@@ -634,10 +634,11 @@ CurvatureFlowDistanceReport gcf_distances(
     r.error_bound = f.epsilon * static_cast<double>(f.max_faces) * m.mean_edge;
     if (!options.smooth_length && options.repair_tolerance >= 0 && options.repair_rounds > 0) {
         // Vertices whose distance differs from what their neighbours' distances imply are
-        // re-solved as two-point paths from the source, started from a fresh search (path()) and
-        // from the field's descent path (path_from_polyline()); a straightened on-mesh length is
-        // a path on the faces (never below the exact distance): kept where shorter, or where the
-        // distance was too short and the path agrees better with the neighbours.
+        // re-solved as two-point paths from the source, started from a fresh search (path()),
+        // from the best neighbour's path with the vertex appended and from the field's descent
+        // path (path_from_polyline()); a straightened on-mesh length is a path on the faces
+        // (never below the exact distance): kept where shorter, or where the distance was too
+        // short and the path agrees better with the neighbours (repaired_distance).
         using Solver = GeodesicPathSolver<TriangleMesh, NamedParameters>;
         const auto t1 = internal::Clock::now();
         std::vector<char> skip(m.vertex_count(), 0);
@@ -647,20 +648,48 @@ CurvatureFlowDistanceReport gcf_distances(
         const Solver solver(tm, np);
         CurvatureFlowOptions repair_flow;
         repair_flow.max_iterations = options.repair_flow_iterations;
+        // Each vertex is re-solved once (its shortest path length is kept); every round checks
+        // all vertices again with the distances as they stand, so a vertex whose neighbours were
+        // mended after it was solved is judged again against them.
+        std::vector<double> solved(m.vertex_count(), std::numeric_limits<double>::quiet_NaN());
         for (std::size_t round = 0; round < options.repair_rounds; ++round) {
             const auto flagged =
                 internal::gcf::suspicious_vertices(m, f.d, skip, options.repair_tolerance);
-            if (flagged.empty())
-                break;
-            std::vector<double> best(flagged.size(), std::numeric_limits<double>::infinity());
-            auto solve = [&](std::size_t k) {
-                const std::uint32_t v = flagged[k];
+            std::vector<std::uint32_t> fresh;
+            for (const std::uint32_t v : flagged)
+                if (std::isnan(solved[v]))
+                    fresh.push_back(v);
+            auto solve = [&](std::uint32_t v) {
+                double best = std::numeric_limits<double>::infinity();
                 auto keep = [&](const typename Solver::Result& p) {
                     if (p.on_mesh.found())
-                        best[k] = std::min(best[k], p.on_mesh.length);
+                        best = std::min(best, p.on_mesh.length);
                 };
                 keep(solver.path(SurfacePoint<TriangleMesh>(source),
                                  SurfacePoint<TriangleMesh>(setup.index().vertex(v)), repair_flow));
+                // The geodesic of the neighbour u that the distances say is the best way in (the
+                // smallest d(u) + |uv|), with v appended: where the fresh search and the descent
+                // both start in a longer class (coarse meshes, paths through saddle vertices).
+                std::uint32_t via = internal::gcf::kNone;
+                double via_d = std::numeric_limits<double>::infinity();
+                for (std::uint32_t j = m.vv_start[v]; j < m.vv_start[v + 1]; ++j) {
+                    const std::uint32_t u = m.vv[j];
+                    const double t = f.d[u] + (m.xyz[v] - m.xyz[u]).norm();
+                    if (u != a.vertex && t < via_d) {
+                        via_d = t;
+                        via = u;
+                    }
+                }
+                if (via != internal::gcf::kNone) {
+                    const auto pu = solver.path(
+                        SurfacePoint<TriangleMesh>(source),
+                        SurfacePoint<TriangleMesh>(setup.index().vertex(via)), repair_flow);
+                    if (pu.on_mesh.found()) {
+                        auto poly = pu.on_mesh.points;
+                        poly.push_back(internal::to_point<typename Solver::Point_3>(m.xyz[v]));
+                        keep(solver.path_from_polyline(poly, repair_flow));
+                    }
+                }
                 const auto down = internal::gcf::descent_path(m, f.d, v, a.vertex);
                 if (down.size() >= 2) {
                     std::vector<typename Solver::Point_3> poly;
@@ -668,31 +697,35 @@ CurvatureFlowDistanceReport gcf_distances(
                         poly.push_back(internal::to_point<typename Solver::Point_3>(m.xyz[u]));
                     keep(solver.path_from_polyline(poly, repair_flow));
                 }
+                solved[v] = best;
             };
 #ifdef CGAL_LINKED_WITH_TBB
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flagged.size(), 1),
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, fresh.size(), 1),
                               [&](const tbb::blocked_range<std::size_t>& range) {
                                   for (std::size_t k = range.begin(); k != range.end(); ++k)
-                                      solve(k);
+                                      solve(fresh[k]);
                               });
 #else
-            for (std::size_t k = 0; k < flagged.size(); ++k)
-                solve(k);
+            for (const std::uint32_t v : fresh)
+                solve(v);
 #endif
+            r.repair_checked += fresh.size();
             std::vector<double> update(flagged.size());
             for (std::size_t k = 0; k < flagged.size(); ++k)
                 update[k] = internal::gcf::face_update(m, f.d, flagged[k]);
+            std::size_t changed = 0;
             for (std::size_t k = 0; k < flagged.size(); ++k) {
                 const std::uint32_t v = flagged[k];
-                skip[v] = 1;
-                ++r.repair_checked;
-                const double d = internal::gcf::repaired_distance(f.d[v], best[k], update[k],
+                const double d = internal::gcf::repaired_distance(f.d[v], solved[v], update[k],
                                                                   options.repair_tolerance);
                 if (d != f.d[v]) {
                     f.d[v] = d;
-                    ++r.repair_improved;
+                    ++changed;
                 }
             }
+            r.repair_improved += changed;
+            if (changed == 0)
+                break;
         }
         r.repair_seconds = internal::seconds_since(t1);
     }

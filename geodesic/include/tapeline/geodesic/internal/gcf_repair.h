@@ -2,8 +2,8 @@
 // the vertices whose propagated distance is longer than their neighbours allow (the windowed flow
 // continues a neighbour's path, and where the geodesic arrives between the neighbours' directions
 // no continuation is the shortest path) or shorter (an anchor interpolated low). The caller
-// re-solves them as two-point paths, started from a fresh search and from the field's own descent
-// path.
+// re-solves them as two-point paths, started from a fresh search, from a neighbour's path and from
+// the field's own descent path.
 #pragma once
 
 #include <tapeline/geodesic/internal/gcf_engine.h>
@@ -80,13 +80,18 @@ inline std::vector<std::uint32_t> suspicious_vertices(const Mesh& m, const std::
 /// The repaired distance of a flagged vertex: `current`, or `path` (the length of a path on the
 /// faces, never below the exact distance). Too long (not below the update): the shorter. Too short
 /// (below the update by more than `tolerance`: not the length of any path on the faces, e.g. an
-/// anchor interpolated low): the one closer to the update.
+/// anchor interpolated low): the path where it is not longer than the update allows or is closer
+/// to the update than `current` is. (Each rule alone was measured worse: "closer" alone left
+/// vertices 3 % short on a coarse mesh whose neighbours were mended later, "not longer" alone
+/// one vertex 1.01 % short on fandisk whose update is itself 0.4 % short.)
 inline double repaired_distance(double current, double path, double update, double tolerance) {
     if (!std::isfinite(path))
         return current;
     if (current >= update * (1 - tolerance))
         return std::min(current, path);
-    return std::abs(path - update) < std::abs(current - update) ? path : current;
+    const bool agrees = path <= update * (1 + tolerance);
+    const bool closer = std::abs(path - update) < std::abs(current - update);
+    return agrees || closer ? path : current;
 }
 
 /// The vertices from `source` to v along steepest descent of the field: from v, step to the
