@@ -24,7 +24,8 @@ done
 
 # Issue 4, shared meshes (GCF_SHARED_ONLY=1): the on-face ('/faces') errors on every shared mesh
 # up to 35k vertices (also those whose licence keeps them out of the project; bob_loop3, 342k,
-# is left out) and icospheres 5-7 only, into $out/issue4_shared (the full run below takes hours).
+# is left out), the torus, the jittered ellipsoid and icospheres 4-7 only, into
+# $out/issue4_shared (the full run below takes hours).
 if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
   sub="$out/issue4_shared"
   mkdir -p "$sub"
@@ -40,6 +41,7 @@ if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
     --out "$sub/gcf_shared.jsonl"
   "$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
     --methods exact-mmp,gcf-window:8/faces,gcf-window:8 \
+    --surface icosphere:4 --surface ellipsoid:1,0.6,0.3:5:0.25 \
     --surface icosphere:5 --surface icosphere:6 --surface icosphere:7 --out "$sub/gcf_shared.jsonl"
   /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_shared.jsonl" \
     --out-dir "$sub" --title "Issue 4: gcf-window on the shared meshes (on-face length)"
