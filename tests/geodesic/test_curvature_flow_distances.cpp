@@ -338,8 +338,8 @@ TEST(CurvatureFlowDistances, FoldedGridOnFaceLengthIsTheUnfoldedDistance) {
         o.window = 8;
         o.smooth_length = false;
         o.polyhedral_length = polyhedral;
-        o.repair_tolerance =
-            -1;  // the two length measures themselves (the repair mends chords too)
+        // The two length measures themselves (the repair pass mends the chords' field too).
+        o.repair_tolerance = -1;
         const tg::GcfField f = tg::gcf_distances(folded, src, o);
         const Errors e = relative_errors(folded, src, f.d, truth);
         std::printf("[ gcf-dist ] grid folded 90 degrees, window 8, %s: mean %.2e max %.2e\n",
