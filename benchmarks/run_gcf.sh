@@ -48,6 +48,21 @@ if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
   exit 0
 fi
 
+# Issue 4, scaling (GCF_SCALING_ONLY=1): Algorithm 2 (W = 8, both lengths) beside Dijkstra and
+# exact-mmp on icospheres 5 to 8 (10k to 655k vertices), one source, into $out/issue4_scaling:
+# the time exponent and the time ratio to Dijkstra of the current code without parts 1-4.
+if [ "${GCF_SCALING_ONLY:-0}" = 1 ]; then
+  sub="$out/issue4_scaling"
+  mkdir -p "$sub"
+  "$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 \
+    --methods exact-mmp,dijkstra,gcf-window:8,gcf-window:8/faces \
+    --surface icosphere:5 --surface icosphere:6 --surface icosphere:7 --surface icosphere:8 \
+    --out "$sub/gcf_scaling.jsonl"
+  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_scaling.jsonl" \
+    --out-dir "$sub" --title "Issue 4: gcf-window scaling against Dijkstra and exact MMP"
+  exit 0
+fi
+
 # 1. Accuracy, up to ~10k vertices: 2 sources x 2 repetitions.
 "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 2 \
   --methods exact-mmp,dijkstra,heat-idt,gcf-exact,$windows \
