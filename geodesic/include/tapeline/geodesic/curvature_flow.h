@@ -670,16 +670,7 @@ CurvatureFlowDistanceReport gcf_distances(
                 // The geodesic of the neighbour u that the distances say is the best way in (the
                 // smallest d(u) + |uv|), with v appended: where the fresh search and the descent
                 // both start in a longer class (coarse meshes, paths through saddle vertices).
-                std::uint32_t via = internal::gcf::kNone;
-                double via_d = std::numeric_limits<double>::infinity();
-                for (std::uint32_t j = m.vv_start[v]; j < m.vv_start[v + 1]; ++j) {
-                    const std::uint32_t u = m.vv[j];
-                    const double t = f.d[u] + (m.xyz[v] - m.xyz[u]).norm();
-                    if (u != a.vertex && t < via_d) {
-                        via_d = t;
-                        via = u;
-                    }
-                }
+                const std::uint32_t via = internal::gcf::entry_neighbour(m, f.d, v, a.vertex);
                 if (via != internal::gcf::kNone) {
                     const auto pu = solver.path(
                         SurfacePoint<TriangleMesh>(source),

@@ -94,6 +94,23 @@ inline double repaired_distance(double current, double path, double update, doub
     return agrees || closer ? path : current;
 }
 
+/// The neighbour u of v (not `source`) with the smallest d(u) + |uv|: where the distances say the
+/// way into v comes from. kNone when v has no other neighbour.
+inline std::uint32_t entry_neighbour(const Mesh& m, const std::vector<double>& d, std::uint32_t v,
+                                     std::uint32_t source) {
+    std::uint32_t best = kNone;
+    double best_d = std::numeric_limits<double>::infinity();
+    for (std::uint32_t k = m.vv_start[v]; k < m.vv_start[v + 1]; ++k) {
+        const std::uint32_t u = m.vv[k];
+        const double t = d[u] + (m.xyz[v] - m.xyz[u]).norm();
+        if (u != source && t < best_d) {
+            best_d = t;
+            best = u;
+        }
+    }
+    return best;
+}
+
 /// The vertices from `source` to v along steepest descent of the field: from v, step to the
 /// neighbour with the smallest distance while it decreases. An edge path in the homotopy class
 /// the field implies (which a fresh two-point search can miss where two routes are nearly equally
