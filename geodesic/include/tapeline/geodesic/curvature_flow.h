@@ -19,6 +19,7 @@
 #include <tapeline/geodesic/internal/gcf_distances.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
 #include <tapeline/geodesic/internal/gcf_repair.h>
+#include <tapeline/geodesic/internal/gcf_steiner.h>
 #include <tapeline/geodesic/internal/gcf_trace.h>
 #include <tapeline/geodesic/internal/mesh_checks.h>
 #include <tapeline/geodesic/internal/named_parameters.h>
@@ -652,9 +653,27 @@ CurvatureFlowDistanceReport gcf_distances(
         // all vertices again with the distances as they stand, so a vertex whose neighbours were
         // mended after it was solved is judged again against them.
         std::vector<double> solved(m.vertex_count(), std::numeric_limits<double>::quiet_NaN());
+        std::optional<internal::gcf::SteinerTree> graph;
+        if (options.repair_steiner_points > 0) {
+            const auto tg0 = internal::Clock::now();
+            graph.emplace(m, a.vertex, options.repair_steiner_points);
+            r.repair_graph_seconds = internal::seconds_since(tg0);
+        }
         for (std::size_t round = 0; round < options.repair_rounds; ++round) {
-            const auto flagged =
+            auto flagged =
                 internal::gcf::suspicious_vertices(m, f.d, skip, options.repair_tolerance);
+            if (graph) {
+                // Above the length of a path on the faces: too long whatever the neighbours say.
+                std::vector<char> in(m.vertex_count(), 0);
+                for (const std::uint32_t v : flagged)
+                    in[v] = 1;
+                for (std::uint32_t v = 0; v < m.vertex_count(); ++v) {
+                    if (!skip[v] && !in[v] && f.d[v] > graph->distance(v)) {
+                        flagged.push_back(v);
+                        r.repair_above_graph += std::isnan(solved[v]) ? 1 : 0;
+                    }
+                }
+            }
             std::vector<std::uint32_t> fresh;
             for (const std::uint32_t v : flagged)
                 if (std::isnan(solved[v]))
@@ -680,6 +699,13 @@ CurvatureFlowDistanceReport gcf_distances(
                         poly.push_back(internal::to_point<typename Solver::Point_3>(m.xyz[v]));
                         keep(solver.path_from_polyline(poly, repair_flow));
                     }
+                }
+                if (graph) {
+                    std::vector<typename Solver::Point_3> poly;
+                    for (const auto& p : graph->path_to(v))
+                        poly.push_back(internal::to_point<typename Solver::Point_3>(p));
+                    if (poly.size() >= 2)
+                        keep(solver.path_from_polyline(poly, repair_flow));
                 }
                 const auto down = internal::gcf::descent_path(m, f.d, v, a.vertex);
                 if (down.size() >= 2) {

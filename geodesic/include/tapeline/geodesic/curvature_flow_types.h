@@ -204,6 +204,15 @@ struct CurvatureFlowDistanceOptions {
     /// decides, and it is the same after 5 steps as after 200 on every shared mesh and the torus
     /// (measured; fandisk's repair took 4.8 s with 200 steps, 0.8 s with 5).
     std::size_t repair_flow_iterations = 10;
+    /// Points inside every edge of the Steiner graph (gcf_steiner.h: vertices and these points,
+    /// joined across each face) whose single-source shortest paths the repair uses twice: a
+    /// vertex whose distance is above its graph distance is flagged too (a path on the faces that
+    /// short exists), and each re-solved vertex is also started from its graph path. Graph paths
+    /// cross the faces near the geodesic and so start the flow in its homotopy class where the
+    /// other starts end on the wrong side of a saddle vertex (decimated-knight from vertex 0:
+    /// max error 1.39 % without, see geodesic/README.md). 0: no graph. Measured on
+    /// decimated-knight: 1 or 2 points per edge still missed a vertex by 1.0 %, 3 did not.
+    std::uint32_t repair_steiner_points = 3;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
     WindowAnchor anchor = WindowAnchor::field;
     /// Algorithm 2 with WindowAnchor::field: paths of at most this many samples are flowed whole
@@ -250,6 +259,8 @@ struct CurvatureFlowDistanceReport {
     double error_bound = 0;
     std::size_t repair_checked = 0;   ///< vertices re-solved as two-point paths (repair_tolerance)
     std::size_t repair_improved = 0;  ///< of them, those whose distance the two-point path replaced
+    std::size_t repair_above_graph = 0;  ///< flagged because above the Steiner graph's distance
+    double repair_graph_seconds = 0;     ///< the Steiner graph's share of repair_seconds
     double repair_seconds = 0;        ///< the repair's share of `seconds`
     double sample_spacing = 0;        ///< the spacing used
     double init_seconds = 0;          ///< mesh arrays and checks
