@@ -404,9 +404,10 @@ TEST(CurvatureFlowDistances, SteinerGraphStartReachesGeodesicsThroughSaddleVerti
         const tg::GcfField with = tg::gcf_distances(knight, source, o);
         const Errors before = relative_errors(knight, source, without.d, mmp.d);
         const Errors after = relative_errors(knight, source, with.d, mmp.d);
-        std::printf("[ gcf-dist ] decimated-knight from %zu, window 8, repaired: without the graph "
-                    "max %.2e, with it max %.2e (%zu flagged above the graph distance)\n",
-                    source, before.max, after.max, with.report.repair_above_graph);
+        std::printf(
+            "[ gcf-dist ] decimated-knight from %zu, window 8, repaired: without the graph "
+            "max %.2e, with it max %.2e (%zu flagged above the graph distance)\n",
+            source, before.max, after.max, with.report.repair_above_graph);
         EXPECT_GT(before.max, 1e-2) << source;
         EXPECT_LE(after.max, 1e-2) << source;
         EXPECT_LE(after.mean, before.mean) << source;

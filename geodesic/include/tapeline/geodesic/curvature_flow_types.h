@@ -186,18 +186,20 @@ struct CurvatureFlowDistanceOptions {
     /// outside the source's 1-ring whose distance differs from the planar triangle update of its
     /// neighbours' distances by more than this (relative) is re-solved as a two-point path from the
     /// source (GeodesicPathSolver, straightened on-mesh path), started from a fresh search, from
-    /// the path of the neighbour u with the smallest d(u) + |uv| with v appended, and from the
-    /// field's steepest-descent edge path. Too long: it keeps the shortest length. Too short (no
-    /// path on the faces is that short; an anchor interpolated low): it takes the path's length
-    /// where that is not above the update or is closer to it. Then the check runs again with the
-    /// updated distances (a repaired vertex can expose its neighbours: a region whose distances
-    /// are all too long by the same amount passes the check until its border is mended; a vertex
-    /// solved before is judged again with its path length kept), until nothing changes or after
-    /// `repair_rounds` rounds. Where the geodesic arrives between the directions of the visited
-    /// neighbours' paths, no continuation of them is shortest, and the window cannot turn far
-    /// enough. Not in the thesis. Negative: off. Measured (W = 8, fandisk from vertex 0, max
-    /// error): 2 rounds 1.01 %, 8 rounds 0.84 %, with the neighbour's path and the re-check
-    /// 0.51 %; decimated-knight (502 vertices) from vertex 186: 3.75 % -> 1.25 %.
+    /// the path of the neighbour u with the smallest d(u) + |uv| with v appended, from the
+    /// field's steepest-descent edge path and from a Steiner-graph path (repair_steiner_points,
+    /// whose graph distance also flags every vertex above it). Too long: it keeps the shortest
+    /// length. Too short (no path on the faces is that short; an anchor interpolated low): it takes
+    /// the path's length where that is not above the update or is closer to it. Then the check runs
+    /// again with the updated distances (a repaired vertex can expose its neighbours: a region
+    /// whose distances are all too long by the same amount passes the check until its border is
+    /// mended; a vertex solved before is judged again with its path length kept), until nothing
+    /// changes or after `repair_rounds` rounds. Where the geodesic arrives between the directions
+    /// of the visited neighbours' paths, no continuation of them is shortest, and the window cannot
+    /// turn far enough. Not in the thesis. Negative: off. Measured (W = 8, fandisk from vertex 0,
+    /// max error): 2 rounds 1.01 %, 8 rounds 0.84 %, with the neighbour's path and the re-check
+    /// 0.51 %; decimated-knight (502 vertices) from vertex 186: 3.75 % -> 1.25 % (0.81 % with
+    /// the Steiner-graph start).
     double repair_tolerance = 2e-3;
     std::size_t repair_rounds = 8;
     /// Flow steps of each re-solved path (its max_iterations). The straightened on-mesh length
@@ -206,12 +208,12 @@ struct CurvatureFlowDistanceOptions {
     std::size_t repair_flow_iterations = 10;
     /// Points inside every edge of the Steiner graph (gcf_steiner.h: vertices and these points,
     /// joined across each face) whose single-source shortest paths the repair uses twice: a
-    /// vertex whose distance is above its graph distance is flagged too (a path on the faces that
-    /// short exists), and each re-solved vertex is also started from its graph path. Graph paths
-    /// cross the faces near the geodesic and so start the flow in its homotopy class where the
-    /// other starts end on the wrong side of a saddle vertex (decimated-knight from vertex 0:
-    /// max error 1.39 % without, see geodesic/README.md). 0: no graph. Measured on
-    /// decimated-knight: 1 or 2 points per edge still missed a vertex by 1.0 %, 3 did not.
+    /// vertex whose distance is above its graph distance by more than repair_tolerance is flagged
+    /// too (a path on the faces that much shorter exists), and each re-solved vertex is also
+    /// started from its graph path. Graph paths cross the faces near the geodesic and so start the
+    /// flow in its homotopy class where the other starts end on the wrong side of a saddle vertex
+    /// (W = 8, decimated-knight from vertices 0 / 186: max error 1.39 % / 1.25 % without, 0.69 % /
+    /// 0.81 % with 3 points; with 1 or 2 points one vertex stays 1.01 % long). 0: no graph.
     std::uint32_t repair_steiner_points = 3;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
     WindowAnchor anchor = WindowAnchor::field;
@@ -261,10 +263,10 @@ struct CurvatureFlowDistanceReport {
     std::size_t repair_improved = 0;  ///< of them, those whose distance the two-point path replaced
     std::size_t repair_above_graph = 0;  ///< flagged because above the Steiner graph's distance
     double repair_graph_seconds = 0;     ///< the Steiner graph's share of repair_seconds
-    double repair_seconds = 0;        ///< the repair's share of `seconds`
-    double sample_spacing = 0;        ///< the spacing used
-    double init_seconds = 0;          ///< mesh arrays and checks
-    double seconds = 0;               ///< total
+    double repair_seconds = 0;           ///< the repair's share of `seconds`
+    double sample_spacing = 0;           ///< the spacing used
+    double init_seconds = 0;             ///< mesh arrays and checks
+    double seconds = 0;                  ///< total
     /// "ok" (every flow converged or stalled), "max_iterations" (some flow hit the limit),
     /// "solver_failure" (some linear solve failed).
     std::string status = "ok";

@@ -2,8 +2,8 @@
 // the vertices whose propagated distance is longer than their neighbours allow (the windowed flow
 // continues a neighbour's path, and where the geodesic arrives between the neighbours' directions
 // no continuation is the shortest path) or shorter (an anchor interpolated low). The caller
-// re-solves them as two-point paths, started from a fresh search, from a neighbour's path and from
-// the field's own descent path.
+// re-solves them as two-point paths, started from a fresh search, from a neighbour's path, from
+// the field's own descent path and from a Steiner-graph path (gcf_steiner.h).
 #pragma once
 
 #include <tapeline/geodesic/internal/gcf_engine.h>

@@ -26,8 +26,7 @@ class SteinerTree {
 public:
     /// Dijkstra from vertex `source` over the whole graph (every vertex reachable in its component
     /// gets a finite distance). per_edge >= 1.
-    SteinerTree(const Mesh& m, std::uint32_t source, std::uint32_t per_edge)
-        : m_(m), k_(per_edge) {
+    SteinerTree(const Mesh& m, std::uint32_t source, std::uint32_t per_edge) : m_(m), k_(per_edge) {
         number_edges();
         const std::size_t nodes = m.vertex_count() + ends_.size() * k_;
         dist_.assign(nodes, std::numeric_limits<double>::infinity());
