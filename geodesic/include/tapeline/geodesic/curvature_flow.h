@@ -602,6 +602,8 @@ CurvatureFlowDistanceReport gcf_distances(
     if (!std::isfinite(options.sample_spacing) || options.sample_spacing < 0)
         throw InvalidInput(
             "gcf_distances: sample_spacing must be finite and >= 0 (0 = the mean edge length)");
+    if (!(options.repair_graph_margin >= 0 && options.repair_graph_margin <= 1))
+        throw InvalidInput("gcf_distances: repair_graph_margin must be in [0, 1]");
     const internal::GcfSetup<TriangleMesh, NamedParameters> setup(tm, np);
     const auto a = setup.locate(SurfacePoint<TriangleMesh>(source), "the source");
     const auto& m = setup.mesh();
@@ -673,7 +675,8 @@ CurvatureFlowDistanceReport gcf_distances(
                     in[v] = 1;
                 for (std::uint32_t v = 0; v < m.vertex_count(); ++v) {
                     if (!skip[v] && !in[v] &&
-                        f.d[v] > graph->distance(v) * (1 + options.repair_tolerance)) {
+                        (f.d[v] > graph->distance(v) * (1 + options.repair_tolerance) ||
+                         f.d[v] < graph->distance(v) * (1 - options.repair_graph_margin))) {
                         flagged.push_back(v);
                         r.repair_above_graph += std::isnan(solved[v]) ? 1 : 0;
                     }
@@ -738,8 +741,14 @@ CurvatureFlowDistanceReport gcf_distances(
             std::size_t changed = 0;
             for (std::size_t k = 0; k < flagged.size(); ++k) {
                 const std::uint32_t v = flagged[k];
-                const double d = internal::gcf::repaired_distance(f.d[v], solved[v], update[k],
-                                                                  options.repair_tolerance);
+                // Far below the graph distance (by more than the graph's own error on the shared
+                // meshes): not the length of a path on the faces, whatever the neighbours say.
+                const bool far_below =
+                    graph && f.d[v] < graph->distance(v) * (1 - options.repair_graph_margin);
+                const double d = far_below && std::isfinite(solved[v])
+                                     ? solved[v]
+                                     : internal::gcf::repaired_distance(
+                                           f.d[v], solved[v], update[k], options.repair_tolerance);
                 if (d != f.d[v]) {
                     f.d[v] = d;
                     ++changed;
