@@ -417,12 +417,12 @@ TEST(CurvatureFlowDistances, SteinerGraphStartReachesGeodesicsThroughSaddleVerti
         const Errors after = relative_errors(knight, source, with.d, mmp.d);
         std::printf(
             "[ gcf-dist ] decimated-knight from %zu, window 8, repaired: without the graph "
-            "max %.2e, with it max %.2e (%zu flagged above the graph distance)\n",
-            source, before.max, after.max, with.report.repair_above_graph);
+            "max %.2e, with it max %.2e (%zu flagged by the graph)\n",
+            source, before.max, after.max, with.report.repair_graph_flagged);
         EXPECT_GT(before.max, 1e-2) << source;
         EXPECT_LE(after.max, 1e-2) << source;
         EXPECT_LE(after.mean, before.mean) << source;
-        EXPECT_EQ(without.report.repair_above_graph, 0u);
+        EXPECT_EQ(without.report.repair_graph_flagged, 0u);
     }
 }
 

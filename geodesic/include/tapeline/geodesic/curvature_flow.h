@@ -636,13 +636,14 @@ CurvatureFlowDistanceReport gcf_distances(
     r.max_faces = f.max_faces;
     r.error_bound = f.epsilon * static_cast<double>(f.max_faces) * m.mean_edge;
     if (!options.smooth_length && options.repair_tolerance >= 0 && options.repair_rounds > 0) {
-        // Vertices whose distance differs from what their neighbours' distances imply, or is above
-        // their Steiner-graph distance, are re-solved as two-point paths from the source, started
-        // from a fresh search (path()), from the best neighbour's path with the vertex appended,
-        // from the graph's path and from the field's descent path (path_from_polyline()); a
-        // straightened on-mesh length is a path on the faces
-        // (never below the exact distance): kept where shorter, or where the distance was too
-        // short and the path agrees better with the neighbours (repaired_distance).
+        // Vertices whose distance differs from what their neighbours' distances imply, or from
+        // their Steiner-graph distance (above it, or far below it), are re-solved as two-point
+        // paths from the source, started from a fresh search (path()), from the best neighbour's
+        // path with the vertex appended, from the graph's path and from the field's descent path
+        // (path_from_polyline()). A straightened on-mesh length is a path on the faces (never
+        // below the exact distance): kept where shorter, where the distance was far below the
+        // graph's, or where it was too short and the path agrees better with the neighbours
+        // (repaired_distance).
         using Solver = GeodesicPathSolver<TriangleMesh, NamedParameters>;
         const auto t1 = internal::Clock::now();
         std::vector<char> skip(m.vertex_count(), 0);
@@ -667,9 +668,10 @@ CurvatureFlowDistanceReport gcf_distances(
                 internal::gcf::suspicious_vertices(m, f.d, skip, options.repair_tolerance);
             if (graph) {
                 // Above the length of a path on the faces by more than the tolerance: too long
-                // whatever the neighbours say. (Without the tolerance, on an icosphere whose graph
-                // paths along the grid lines are as long as the geodesics, 1e-7 above the graph
-                // flagged most vertices: level 7 took 99 s instead of 12.)
+                // whatever the neighbours say; far below it: see far_below. (Without the tolerance,
+                // on an icosphere whose graph paths along the grid lines are as long as the
+                // geodesics, 1e-7 above the graph flagged most vertices: level 7 took 99 s instead
+                // of 12.)
                 std::vector<char> in(m.vertex_count(), 0);
                 for (const std::uint32_t v : flagged)
                     in[v] = 1;
@@ -678,7 +680,7 @@ CurvatureFlowDistanceReport gcf_distances(
                         (f.d[v] > graph->distance(v) * (1 + options.repair_tolerance) ||
                          f.d[v] < graph->distance(v) * (1 - options.repair_graph_margin))) {
                         flagged.push_back(v);
-                        r.repair_above_graph += std::isnan(solved[v]) ? 1 : 0;
+                        r.repair_graph_flagged += std::isnan(solved[v]) ? 1 : 0;
                     }
                 }
             }

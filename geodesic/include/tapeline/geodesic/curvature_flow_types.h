@@ -268,12 +268,14 @@ struct CurvatureFlowDistanceReport {
     double error_bound = 0;
     std::size_t repair_checked = 0;   ///< vertices re-solved as two-point paths (repair_tolerance)
     std::size_t repair_improved = 0;  ///< of them, those whose distance the two-point path replaced
-    std::size_t repair_above_graph = 0;  ///< flagged because above the Steiner graph's distance
-    double repair_graph_seconds = 0;     ///< the Steiner graph's share of repair_seconds
-    double repair_seconds = 0;           ///< the repair's share of `seconds`
-    double sample_spacing = 0;           ///< the spacing used
-    double init_seconds = 0;             ///< mesh arrays and checks
-    double seconds = 0;                  ///< total
+    /// re-solved because the Steiner graph's distance says so (above it by more than
+    /// repair_tolerance, or below it by more than repair_graph_margin) and the neighbours do not
+    std::size_t repair_graph_flagged = 0;
+    double repair_graph_seconds = 0;  ///< the Steiner graph's share of repair_seconds
+    double repair_seconds = 0;        ///< the repair's share of `seconds`
+    double sample_spacing = 0;        ///< the spacing used
+    double init_seconds = 0;          ///< mesh arrays and checks
+    double seconds = 0;               ///< total
     /// "ok" (every flow converged or stalled), "max_iterations" (some flow hit the limit),
     /// "solver_failure" (some linear solve failed).
     std::string status = "ok";
