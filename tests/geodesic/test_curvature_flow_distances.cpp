@@ -384,16 +384,6 @@ TEST(CurvatureFlowDistances, SpotOnFaceLengthMeetsTheTargets) {
     EXPECT_LE(e.max, 1e-2);
 }
 
-// The repair pass (CurvatureFlowDistanceOptions::repair_tolerance), on the benchmark's second
-// sources. From spot's vertex 548 the windowed on-face field has a vertex 1.4 % long (its geodesic
-// arrives between the directions of its visited neighbours' paths); from the torus' vertex 10088
-// one 1.2 % long, where a fresh two-point search takes the other way round the inner side and only
-// the field's own descent path starts in the right class. The repaired field must meet the 1 %
-// target, and every distance it replaces must be a path length, so not below the exact one (a
-// straightened on-mesh path is a path on the faces). From fandisk's vertex 0 a region of vertices
-// is ~1 % long together, so each agrees with its neighbours' update; only after its border is
-// mended are the next vertices flagged (two rounds left one 1.01 % long). Not every source is
-// repaired: from spot's vertex 2921 one vertex stays 2.1 % long (geodesic/README.md).
 // On decimated-knight (502 vertices) the exact geodesics from vertex 0 to 481 and from 186 to 181
 // run through saddle vertices; every start the repair had before the Steiner graph (fresh search,
 // best neighbour's path, descent path) flowed to a locally shortest path beside the saddle, 1.39 %
@@ -457,6 +447,16 @@ TEST(CurvatureFlowDistances, FieldFarBelowTheGraphDistanceIsReSolved) {
             EXPECT_GE(with.d[v], mmp.d[v] * (1 - 1e-9)) << v;
 }
 
+// The repair pass (CurvatureFlowDistanceOptions::repair_tolerance), on the benchmark's second
+// sources. From spot's vertex 548 the windowed on-face field has a vertex 1.4 % long (its geodesic
+// arrives between the directions of its visited neighbours' paths); from the torus' vertex 10088
+// one 1.2 % long, where a fresh two-point search takes the other way round the inner side and only
+// the field's own descent path starts in the right class. The repaired field must meet the 1 %
+// target, and every distance it replaces must be a path length, so not below the exact one (a
+// straightened on-mesh path is a path on the faces). From fandisk's vertex 0 a region of vertices
+// is ~1 % long together, so each agrees with its neighbours' update; only after its border is
+// mended are the next vertices flagged (two rounds left one 1.01 % long). Not every source is
+// repaired: from decimated-knight's vertex 293 one vertex stays 2.47 % long (geodesic/README.md).
 TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
     struct Case {
         const char* name;

@@ -182,24 +182,24 @@ struct CurvatureFlowDistanceOptions {
     /// a handle) the straightest continuation can come from the longer side. Not in the thesis;
     /// measured on the torus (80 x 32, W = 8): max error 16.6 % without, 0.26 % with it.
     bool cut_locus_guard = true;
-    /// With the on-face length (smooth_length = false): after the propagation, every vertex
-    /// outside the source's 1-ring whose distance differs from the planar triangle update of its
+    /// With the on-face length (smooth_length = false): after the propagation, every vertex outside
+    /// the source's 1-ring whose distance differs from the planar triangle update of its
     /// neighbours' distances by more than this (relative) is re-solved as a two-point path from the
     /// source (GeodesicPathSolver, straightened on-mesh path), started from a fresh search, from
-    /// the path of the neighbour u with the smallest d(u) + |uv| with v appended, from the
-    /// field's steepest-descent edge path and from a Steiner-graph path (repair_steiner_points,
-    /// whose graph distance also flags every vertex above it). Too long: it keeps the shortest
-    /// length. Too short (no path on the faces is that short; an anchor interpolated low): it takes
-    /// the path's length where that is not above the update or is closer to it. Then the check runs
-    /// again with the updated distances (a repaired vertex can expose its neighbours: a region
-    /// whose distances are all too long by the same amount passes the check until its border is
-    /// mended; a vertex solved before is judged again with its path length kept), until nothing
-    /// changes or after `repair_rounds` rounds. Where the geodesic arrives between the directions
-    /// of the visited neighbours' paths, no continuation of them is shortest, and the window cannot
-    /// turn far enough. Not in the thesis. Negative: off. Measured (W = 8, fandisk from vertex 0,
-    /// max error): 2 rounds 1.01 %, 8 rounds 0.84 %, with the neighbour's path and the re-check
-    /// 0.51 %; decimated-knight (502 vertices) from vertex 186: 3.75 % -> 1.25 % (0.81 % with
-    /// the Steiner-graph start).
+    /// the path of the neighbour u with the smallest d(u) + |uv| with v appended, from the field's
+    /// steepest-descent edge path and from a Steiner-graph path (repair_steiner_points, whose graph
+    /// distance also flags vertices above it or far below it, repair_graph_margin). Too long: it
+    /// keeps the shortest length. Too short (no path on the faces is that short; an anchor
+    /// interpolated low): it takes the path's length where that is not above the update or is
+    /// closer to it. Then the check runs again with the updated distances (a repaired vertex can
+    /// expose its neighbours: a region whose distances are all too long by the same amount passes
+    /// the check until its border is mended; a vertex solved before is judged again with its path
+    /// length kept), until nothing changes or after `repair_rounds` rounds. Where the geodesic
+    /// arrives between the directions of the visited neighbours' paths, no continuation of them is
+    /// shortest, and the window cannot turn far enough. Not in the thesis. Negative: off. Measured
+    /// (W = 8, fandisk from vertex 0, max error): 2 rounds 1.01 %, 8 rounds 0.84 %, with the
+    /// neighbour's path and the re-check 0.51 %; decimated-knight (502 vertices) from vertex 186:
+    /// 3.75 % -> 1.25 % (0.81 % with the Steiner-graph start).
     double repair_tolerance = 2e-3;
     std::size_t repair_rounds = 8;
     /// Flow steps of each re-solved path (its max_iterations). The straightened on-mesh length
