@@ -212,6 +212,10 @@ TEST(CurvatureFlowDistances, BadOptionsAreRejected) {
     o = {};
     o.flow.step = 0;
     EXPECT_THROW(tg::gcf_distances(soup, 0, o), tapeline::InvalidInput);
+    o = {};
+    o.smooth_length = false;
+    o.repair_steiner_points = -2;
+    EXPECT_THROW(tg::gcf_distances(soup, 0, o), tapeline::InvalidInput);
     for (const double margin : {-0.1, 1.5, std::nan("")}) {
         o = {};
         o.smooth_length = false;

@@ -602,6 +602,9 @@ CurvatureFlowDistanceReport gcf_distances(
     if (!std::isfinite(options.sample_spacing) || options.sample_spacing < 0)
         throw InvalidInput(
             "gcf_distances: sample_spacing must be finite and >= 0 (0 = the mean edge length)");
+    if (options.repair_steiner_points < -1)
+        throw InvalidInput(
+            "gcf_distances: repair_steiner_points must be -1 (automatic), 0 (none) or positive");
     if (!(options.repair_graph_margin >= 0 && options.repair_graph_margin <= 1))
         throw InvalidInput("gcf_distances: repair_graph_margin must be in [0, 1]");
     const internal::GcfSetup<TriangleMesh, NamedParameters> setup(tm, np);
@@ -658,9 +661,12 @@ CurvatureFlowDistanceReport gcf_distances(
         // mended after it was solved is judged again against them.
         std::vector<double> solved(m.vertex_count(), std::numeric_limits<double>::quiet_NaN());
         std::optional<internal::gcf::SteinerTree> graph;
-        if (options.repair_steiner_points > 0) {
+        const int points = options.repair_steiner_points >= 0 ? options.repair_steiner_points
+                           : m.vertex_count() < 20000         ? 8
+                                                              : 3;
+        if (points > 0) {
             const auto tg0 = internal::Clock::now();
-            graph.emplace(m, a.vertex, options.repair_steiner_points);
+            graph.emplace(m, a.vertex, static_cast<std::uint32_t>(points));
             r.repair_graph_seconds = internal::seconds_since(tg0);
         }
         for (std::size_t round = 0; round < options.repair_rounds; ++round) {

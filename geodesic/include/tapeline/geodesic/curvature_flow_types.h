@@ -213,8 +213,11 @@ struct CurvatureFlowDistanceOptions {
     /// started from its graph path. Graph paths cross the faces near the geodesic and so start the
     /// flow in its homotopy class where the other starts end on the wrong side of a saddle vertex
     /// (W = 8, decimated-knight from vertices 0 / 186: max error 1.39 % / 1.25 % without, 0.69 % /
-    /// 0.81 % with 3 points; with 1 or 2 points one vertex stays 1.01 % long). 0: no graph.
-    std::uint32_t repair_steiner_points = 3;
+    /// 0.81 % with 3 points; with 1 or 2 points one vertex stays 1.01 % long; from vertex 293 one
+    /// stays 2.47 % long with 3 points, 0.41 % with 8, whose graph path is in the geodesic's
+    /// class). -1 (default): 8 on meshes under 20,000 vertices, 3 on larger ones (the graph's
+    /// Dijkstra costs ~35 us per vertex with 8 points, ~7 with 3). 0: no graph.
+    int repair_steiner_points = -1;
     /// With the Steiner graph: a distance below the graph distance by more than this (relative)
     /// is re-solved and replaced by the path's length whatever its neighbours say. Graph distances
     /// are above the exact ones, by 0.6-0.9 % on average and by at most 2.5-5 % on the shared
