@@ -5,8 +5,8 @@
 // 2001). Its paths lie on the faces, are never shorter than the polyhedral geodesic, and cross the
 // faces close to it: started from one, the two-point flow and its straightening land in the
 // geodesic's homotopy class where the edge-graph search does not (a coarse mesh whose geodesics
-// run through saddle vertices). The repair pass of gcf_distances uses it as one more start and as
-// an upper bound of every vertex's distance.
+// run through saddle vertices). The repair pass of gcf_distances uses it as one more start, as an
+// upper bound of every vertex's distance and, with a margin, as a check of distances far below it.
 #pragma once
 
 #include <tapeline/geodesic/internal/gcf_engine.h>
