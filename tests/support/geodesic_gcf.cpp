@@ -118,4 +118,20 @@ GcfField gcf_distances(const Soup& soup, std::size_t source,
     });
 }
 
+std::vector<double> steiner_distances(const Soup& soup, std::size_t source, unsigned per_edge,
+                                      unsigned near_per_edge, double near_radius) {
+    cgal::SurfaceMesh tm;
+    cgal::build(soup, tm);
+    const tg::internal::GcfSetup<cgal::SurfaceMesh, CGAL::parameters::Default_named_parameters>
+        setup(tm, CGAL::parameters::default_values());
+    const auto& index = setup.index();
+    const auto from = static_cast<std::uint32_t>(index.index(cgal::vertex_at(tm, source)));
+    const tg::internal::gcf::SteinerTree graph(setup.mesh(), from, per_edge, near_per_edge,
+                                               near_radius * setup.mesh().mean_edge);
+    std::vector<double> d(soup.points.size());
+    for (std::size_t v = 0; v < d.size(); ++v)
+        d[v] = graph.distance(static_cast<std::uint32_t>(index.index(cgal::vertex_at(tm, v))));
+    return d;
+}
+
 }  // namespace tapeline_test::geodesic

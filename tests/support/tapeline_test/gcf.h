@@ -72,4 +72,10 @@ GcfField gcf_distances(const Soup& soup, std::size_t source,
                        const CurvatureFlowDistanceOptions& options = {},
                        MeshKind kind = MeshKind::surface_mesh);
 
+/// Distances from soup vertex `source` over the repair pass's Steiner graph
+/// (internal/gcf_steiner.h): per_edge points inside every edge, near_per_edge inside those with
+/// an end within near_radius mean edge lengths of the source. Per soup vertex.
+std::vector<double> steiner_distances(const Soup& soup, std::size_t source, unsigned per_edge,
+                                      unsigned near_per_edge = 0, double near_radius = 0);
+
 }  // namespace tapeline_test::geodesic

@@ -207,24 +207,30 @@ struct CurvatureFlowDistanceOptions {
     /// (measured; fandisk's repair took 4.8 s with 200 steps, 0.8 s with 5).
     std::size_t repair_flow_iterations = 10;
     /// Points inside every edge of the Steiner graph (gcf_steiner.h: vertices and these points,
-    /// joined across each face) whose single-source shortest paths the repair uses twice: a
+    /// joined across each face) whose single-source shortest paths the repair uses three times: a
     /// vertex whose distance is above its graph distance by more than repair_tolerance is flagged
-    /// too (a path on the faces that much shorter exists), and each re-solved vertex is also
-    /// started from its graph path. Graph paths cross the faces near the geodesic and so start the
-    /// flow in its homotopy class where the other starts end on the wrong side of a saddle vertex
-    /// (W = 8, decimated-knight from vertices 0 / 186: max error 1.39 % / 1.25 % without, 0.69 % /
-    /// 0.81 % with 3 points; with 1 or 2 points one vertex stays 1.01 % long; from vertex 293 one
-    /// stays 2.47 % long with 3 points, 0.41 % with 8, whose graph path is in the geodesic's
-    /// class). -1 (default): 8 on meshes under 20,000 vertices, 3 on larger ones (the graph's
-    /// Dijkstra costs ~35 us per vertex with 8 points, ~7 with 3). 0: no graph.
+    /// too (a path on the faces that much shorter exists), each re-solved vertex is also started
+    /// from its graph path, and its graph distance is one more path length it may take. Graph
+    /// paths cross the faces near the geodesic and so start the flow in its homotopy class where
+    /// the other starts end on the wrong side of a saddle vertex (W = 8, decimated-knight from
+    /// vertices 0 / 186: max error 1.39 % / 1.25 % without, 0.69 % / 0.81 % with 3 points; with 1
+    /// or 2 points one vertex stays 1.01 % long; from vertex 293 one stays 2.47 % long with 3
+    /// points, 0.41 % with 8, whose graph path is in the geodesic's class). Edges within 12 mean
+    /// edge lengths of the source get 32 points: there a graph path is only a few edges long and
+    /// its relative error largest (8 points: up to 4 % on bunny_decimated and blub, 0.8 % with 32).
+    /// -1 (default): 8 on meshes under 50,000 vertices, 3 on larger ones (the graph's Dijkstra
+    /// costs ~35 us per vertex with 8 points, ~7 with 3). 0: no graph.
     int repair_steiner_points = -1;
     /// With the Steiner graph: a distance below the graph distance by more than this (relative)
-    /// is re-solved and replaced by the path's length whatever its neighbours say. Graph distances
-    /// are above the exact ones, by 0.6-0.9 % on average and by at most 2.5-5 % on the shared
-    /// meshes (3 points per edge, away from the source); a field that much below is no path on
-    /// the faces but a run of anchors interpolated low, which the neighbour check misses because
-    /// the whole run agrees (W = 4: blub 29 %, decimated-knight 32 % short). 1: never.
-    double repair_graph_margin = 0.03;
+    /// is re-solved and replaced by the shortest path found (at most the graph distance) whatever
+    /// its neighbours say: no path on the faces is that short. A run of anchors interpolated low
+    /// agrees with itself, so the neighbour check misses it (W = 4: blub 29 %, decimated-knight
+    /// 32 % short; W = 8: bunny_decimated from vertex 1090 2.0 %, decimated-knight from 420 1.1 %).
+    /// The margin must exceed the graph's own error, or exact distances are flagged: with 8 points
+    /// (32 near the source) that error is at most 0.78 % on the 12 shared meshes from 5 sources
+    /// each (typically 0.2-0.5 %), with 3 points at most 2.2 %.
+    /// -1 (default): 0.01 with 8 or more points per edge, 0.03 with fewer. 1: never.
+    double repair_graph_margin = -1;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
     WindowAnchor anchor = WindowAnchor::field;
     /// Algorithm 2 with WindowAnchor::field: paths of at most this many samples are flowed whole

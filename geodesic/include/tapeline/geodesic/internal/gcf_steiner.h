@@ -25,10 +25,28 @@ namespace tapeline::geodesic::internal::gcf {
 class SteinerTree {
 public:
     /// Dijkstra from vertex `source` over the whole graph (every vertex reachable in its component
-    /// gets a finite distance). per_edge >= 1.
-    SteinerTree(const Mesh& m, std::uint32_t source, std::uint32_t per_edge) : m_(m), k_(per_edge) {
+    /// gets a finite distance). per_edge >= 1. Edges with an end within Euclidean distance
+    /// near_radius of the source get near_per_edge points instead (when larger): a path a few
+    /// edges long is as long as its graph path only to a fraction of an edge per crossing, which is
+    /// a large fraction of its length, so the graph's relative error is largest near the source
+    /// (see gcf_distances for the figures). The geodesic ball of that radius lies inside the
+    /// Euclidean one.
+    SteinerTree(const Mesh& m, std::uint32_t source, std::uint32_t per_edge,
+                std::uint32_t near_per_edge = 0, double near_radius = 0)
+        : m_(m) {
         number_edges();
-        const std::size_t nodes = m.vertex_count() + ends_.size() * k_;
+        const Vec3 s = m.xyz[source];
+        start_.assign(ends_.size() + 1, 0);
+        for (std::size_t e = 0; e < ends_.size(); ++e) {
+            const bool near = near_per_edge > per_edge &&
+                              std::min((m.xyz[ends_[e][0]] - s).norm(),
+                                       (m.xyz[ends_[e][1]] - s).norm()) <= near_radius;
+            start_[e + 1] = start_[e] + (near ? near_per_edge : per_edge);
+        }
+        edge_.resize(start_.back());
+        for (std::uint32_t e = 0; e < ends_.size(); ++e)
+            std::fill(edge_.begin() + start_[e], edge_.begin() + start_[e + 1], e);
+        const std::size_t nodes = m.vertex_count() + edge_.size();
         dist_.assign(nodes, std::numeric_limits<double>::infinity());
         pred_.assign(nodes, kNone);
         using Item = std::pair<double, std::uint32_t>;
@@ -59,7 +77,7 @@ public:
                 for (std::uint32_t k = m.vf_start[x]; k < m.vf_start[x + 1]; ++k)
                     relax_face(m.vf[k]);
             } else {
-                for (const std::uint32_t f : faces_[(x - m.vertex_count()) / k_])
+                for (const std::uint32_t f : faces_[edge_[x - m.vertex_count()]])
                     if (f != kNone)
                         relax_face(f);
             }
@@ -111,8 +129,9 @@ private:
         const std::size_t nv = m_.vertex_count();
         if (x < nv)
             return m_.xyz[x];
-        const std::size_t e = (x - nv) / k_, i = (x - nv) % k_ + 1;
-        const double t = static_cast<double>(i) / static_cast<double>(k_ + 1);
+        const std::uint32_t e = edge_[x - nv];
+        const double t = static_cast<double>(x - nv - start_[e] + 1) /
+                         static_cast<double>(start_[e + 1] - start_[e] + 1);
         return (1 - t) * m_.xyz[ends_[e][0]] + t * m_.xyz[ends_[e][1]];
     }
 
@@ -121,15 +140,16 @@ private:
         const auto nv = static_cast<std::uint32_t>(m_.vertex_count());
         for (int c = 0; c < 3; ++c) {
             out.push_back(m_.corner[3 * f + c]);
-            const std::uint32_t base = nv + edge_of_[3 * f + c] * k_;
-            for (std::uint32_t i = 0; i < k_; ++i)
-                out.push_back(base + i);
+            const std::uint32_t e = edge_of_[3 * f + c];
+            for (std::uint32_t i = start_[e]; i < start_[e + 1]; ++i)
+                out.push_back(nv + i);
         }
     }
 
     const Mesh& m_;
-    std::uint32_t k_;
     std::vector<std::uint32_t> edge_of_;
+    std::vector<std::uint32_t> start_;  // edge e's points are nodes nv + [start_[e], start_[e+1])
+    std::vector<std::uint32_t> edge_;   // the edge of node nv + i
     std::vector<std::array<std::uint32_t, 2>> ends_;
     std::vector<std::array<std::uint32_t, 2>> faces_;
     std::vector<double> dist_;
