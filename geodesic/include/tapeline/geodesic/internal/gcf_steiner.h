@@ -1,12 +1,13 @@
 // Single-source shortest paths over a Steiner graph of the mesh: its nodes are the vertices and
-// `per_edge` points evenly spaced inside every edge, and every two nodes on the boundary of a face
-// are joined by the straight segment across it (the fixed scheme of M. Lanthier, A. Maheshwari,
-// J.-R. Sack, "Approximating shortest paths on weighted polyhedral surfaces", Algorithmica 30(4),
-// 2001). Its paths lie on the faces, are never shorter than the polyhedral geodesic, and cross the
-// faces close to it: started from one, the two-point flow and its straightening land in the
-// geodesic's homotopy class where the edge-graph search does not (a coarse mesh whose geodesics
-// run through saddle vertices). The repair pass of gcf_distances uses it as one more start, as an
-// upper bound of every vertex's distance and, with a margin, as a check of distances far below it.
+// `per_edge` points evenly spaced inside every edge (more near the source), and every two nodes on
+// the boundary of a face are joined by the straight segment across it (the fixed scheme of
+// M. Lanthier, A. Maheshwari, J.-R. Sack, "Approximating shortest paths on weighted polyhedral
+// surfaces", Algorithmica 30(4), 2001). Its paths lie on the faces, are never shorter than the
+// polyhedral geodesic, and cross the faces close to it: started from one, the two-point flow and
+// its straightening land in the geodesic's homotopy class where the edge-graph search does not (a
+// coarse mesh whose geodesics run through saddle vertices). The repair pass of gcf_distances uses
+// it as one more start, as an upper bound of every vertex's distance (a path length it may take)
+// and, with a margin, as a check of distances far below it.
 #pragma once
 
 #include <tapeline/geodesic/internal/gcf_engine.h>
@@ -26,11 +27,11 @@ class SteinerTree {
 public:
     /// Dijkstra from vertex `source` over the whole graph (every vertex reachable in its component
     /// gets a finite distance). per_edge >= 1. Edges with an end within Euclidean distance
-    /// near_radius of the source get near_per_edge points instead (when larger): a path a few
-    /// edges long is as long as its graph path only to a fraction of an edge per crossing, which is
-    /// a large fraction of its length, so the graph's relative error is largest near the source
-    /// (see gcf_distances for the figures). The geodesic ball of that radius lies inside the
-    /// Euclidean one.
+    /// near_radius of the source get near_per_edge points instead (when larger): a graph path
+    /// loses up to a fraction of an edge at each crossing, which near the source is a large part
+    /// of the path's length, so the graph's relative error is largest there (figures at
+    /// CurvatureFlowDistanceOptions::repair_steiner_points). The geodesic ball of that radius lies
+    /// inside the Euclidean one.
     SteinerTree(const Mesh& m, std::uint32_t source, std::uint32_t per_edge,
                 std::uint32_t near_per_edge = 0, double near_radius = 0)
         : m_(m) {
