@@ -7,7 +7,8 @@
 #   2. scaling of the windowed flow on icospheres level 5 to 8 (10k to 655k vertices) and the
 #      41k-vertex meshes.
 #   benchmarks/run_gcf.sh [build/apps/tapeline] [out-dir]
-# GCF_SOURCES_ONLY=1, GCF_SHARED_ONLY=1 or GCF_SCALING_ONLY=1 runs one issue-4 part only (below).
+# GCF_SOURCES_ONLY=1, GCF_SHARED_ONLY=1, GCF_LARGE_ONLY=1, GCF_WINDOW_ONLY=1 or
+# GCF_SCALING_ONLY=1 runs one issue-4 part only (below).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$root/build/apps/tapeline}
@@ -63,6 +64,38 @@ if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
     --surface icosphere:5 --surface icosphere:6 --surface icosphere:7 --out "$sub/gcf_shared.jsonl"
   /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_shared.jsonl" \
     --out-dir "$sub" --title "Issue 4: gcf-window on the shared meshes (on-face length)"
+  exit 0
+fi
+
+# Issue 4, the largest shared mesh (GCF_LARGE_ONLY=1): bob_loop3 (342k vertices; 3 Steiner points
+# per edge in the repair, 3 % margin), two sources, into $out/issue4_large.
+if [ "${GCF_LARGE_ONLY:-0}" = 1 ]; then
+  sub="$out/issue4_large"
+  mkdir -p "$sub"
+  "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
+    --methods exact-mmp,dijkstra,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8 \
+    --mesh "$shared/bob_loop3.ply" --out "$sub/gcf_large.jsonl"
+  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_large.jsonl" \
+    --out-dir "$sub" --title "Issue 4: gcf-window on bob_loop3 (342k)"
+  exit 0
+fi
+
+# Issue 4, window sweep (GCF_WINDOW_ONLY=1): error and time of the on-face field against W (2 to
+# 32) on spot, fandisk, the torus and icosphere 5, two sources, into $out/issue4_window
+# (window_sweep.png).
+if [ "${GCF_WINDOW_ONLY:-0}" = 1 ]; then
+  sub="$out/issue4_window"
+  mkdir -p "$sub"
+  sweep=()
+  for m in spot.obj fandisk.obj; do
+    [ -f "$shared/$m" ] && sweep+=(--mesh "$shared/$m")
+  done
+  "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
+    --methods exact-mmp,dijkstra,gcf-window:2/faces,gcf-window:4/faces,gcf-window:8/faces,gcf-window:16/faces,gcf-window:32/faces \
+    "${sweep[@]}" --surface torus:1,0.4:160,64 --surface icosphere:5 \
+    --out "$sub/gcf_window.jsonl"
+  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_window.jsonl" \
+    --out-dir "$sub" --title "Issue 4: gcf-window on-face field against the window W"
   exit 0
 fi
 
