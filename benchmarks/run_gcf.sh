@@ -32,86 +32,89 @@ for m in decimated-knight.off 3holes.off bunny_decimated.off fertility.off eleph
   [ -f "$shared/$m" ] && all+=(--mesh "$shared/$m")
 done
 
+# An issue-4 part: part_dir makes its directory $sub, bench_part runs the benchmark (one
+# repetition), report_part writes the tables and plots beside its JSON lines and ends the script.
+part_dir() {
+  sub="$out/$1"
+  mkdir -p "$sub"
+}
+bench_part() { "$bin" bench geodesic "${common[@]}" --repeat 1 "$@"; }
+report_part() {
+  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$1" --out-dir "$(dirname "$1")" \
+    --title "$2"
+  exit 0
+}
+
 # Issue 4, many sources (GCF_SOURCES_ONLY=1): the on-face errors at W = 8 and W = 4 from six
 # sources on each shared mesh up to 43k vertices (vertex 0, then seeded random ones: the shared
 # run's two and four more), to check that max <= 1 % does not hang on the benchmark's two
 # sources, into $out/issue4_sources.
 if [ "${GCF_SOURCES_ONLY:-0}" = 1 ]; then
-  sub="$out/issue4_sources"
-  mkdir -p "$sub"
-  "$bin" bench geodesic "${common[@]}" --sources 6 --repeat 1 \
+  part_dir issue4_sources
+  bench_part --sources 6 \
     --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces "${all[@]}" \
     --out "$sub/gcf_sources.jsonl"
-  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_sources.jsonl" \
-    --out-dir "$sub" --title "Issue 4: gcf-window on the shared meshes from six sources each"
-  exit 0
+  report_part "$sub/gcf_sources.jsonl" \
+    "Issue 4: gcf-window on the shared meshes from six sources each"
 fi
 
 # Issue 4, shared meshes (GCF_SHARED_ONLY=1): the on-face ('/faces') errors on every shared mesh
 # up to 43k vertices, the torus, the jittered ellipsoid and icospheres 4-7 only, into
 # $out/issue4_shared (the full run below takes hours).
 if [ "${GCF_SHARED_ONLY:-0}" = 1 ]; then
-  sub="$out/issue4_shared"
-  mkdir -p "$sub"
-  "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
+  part_dir issue4_shared
+  bench_part --sources 2 \
     --methods exact-mmp,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8/faces/raw,gcf-window:8 \
     "${all[@]}" \
     --surface torus:1,0.4:160,64 \
     --out "$sub/gcf_shared.jsonl"
-  "$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
+  bench_part --sources 1 --append \
     --methods exact-mmp,gcf-window:8/faces,gcf-window:8 \
     --surface icosphere:4 --surface ellipsoid:1,0.6,0.3:5:0.25 \
     --surface icosphere:5 --surface icosphere:6 --surface icosphere:7 --out "$sub/gcf_shared.jsonl"
-  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_shared.jsonl" \
-    --out-dir "$sub" --title "Issue 4: gcf-window on the shared meshes (on-face length)"
-  exit 0
+  report_part "$sub/gcf_shared.jsonl" \
+    "Issue 4: gcf-window on the shared meshes (on-face length)"
 fi
 
 # Issue 4, the largest shared mesh (GCF_LARGE_ONLY=1): bob_loop3 (342k vertices; 3 Steiner points
 # per edge in the repair, 3 % margin), two sources, into $out/issue4_large.
 if [ "${GCF_LARGE_ONLY:-0}" = 1 ]; then
-  sub="$out/issue4_large"
-  mkdir -p "$sub"
-  "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
+  part_dir issue4_large
+  bench_part --sources 2 \
     --methods exact-mmp,dijkstra,gcf-window:4/faces,gcf-window:8/faces,gcf-window:8 \
     --mesh "$shared/bob_loop3.ply" --out "$sub/gcf_large.jsonl"
-  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_large.jsonl" \
-    --out-dir "$sub" --title "Issue 4: gcf-window on bob_loop3 (342k)"
-  exit 0
+  report_part "$sub/gcf_large.jsonl" \
+    "Issue 4: gcf-window on bob_loop3 (342k)"
 fi
 
 # Issue 4, window sweep (GCF_WINDOW_ONLY=1): error and time of the on-face field against W (2 to
 # 32) on spot, fandisk, the torus and icosphere 5, two sources, into $out/issue4_window
 # (window_sweep.png).
 if [ "${GCF_WINDOW_ONLY:-0}" = 1 ]; then
-  sub="$out/issue4_window"
-  mkdir -p "$sub"
+  part_dir issue4_window
   sweep=()
   for m in spot.obj fandisk.obj; do
     [ -f "$shared/$m" ] && sweep+=(--mesh "$shared/$m")
   done
-  "$bin" bench geodesic "${common[@]}" --sources 2 --repeat 1 \
+  bench_part --sources 2 \
     --methods exact-mmp,dijkstra,gcf-window:2/faces,gcf-window:4/faces,gcf-window:8/faces,gcf-window:16/faces,gcf-window:32/faces \
     "${sweep[@]}" --surface torus:1,0.4:160,64 --surface icosphere:5 \
     --out "$sub/gcf_window.jsonl"
-  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_window.jsonl" \
-    --out-dir "$sub" --title "Issue 4: gcf-window on-face field against the window W"
-  exit 0
+  report_part "$sub/gcf_window.jsonl" \
+    "Issue 4: gcf-window on-face field against the window W"
 fi
 
 # Issue 4, scaling (GCF_SCALING_ONLY=1): Algorithm 2 (W = 8, both lengths) beside Dijkstra and
 # exact-mmp on icospheres 5 to 8 (10k to 655k vertices), one source, into $out/issue4_scaling:
 # the time exponent and the time ratio to Dijkstra of the current code without parts 1-4.
 if [ "${GCF_SCALING_ONLY:-0}" = 1 ]; then
-  sub="$out/issue4_scaling"
-  mkdir -p "$sub"
-  "$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 \
+  part_dir issue4_scaling
+  bench_part --sources 1 \
     --methods exact-mmp,dijkstra,gcf-window:8,gcf-window:8/faces \
     --surface icosphere:5 --surface icosphere:6 --surface icosphere:7 --surface icosphere:8 \
     --out "$sub/gcf_scaling.jsonl"
-  /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$sub/gcf_scaling.jsonl" \
-    --out-dir "$sub" --title "Issue 4: gcf-window scaling against Dijkstra and exact MMP"
-  exit 0
+  report_part "$sub/gcf_scaling.jsonl" \
+    "Issue 4: gcf-window scaling against Dijkstra and exact MMP"
 fi
 
 # 1. Accuracy, up to ~10k vertices: 2 sources x 2 repetitions.
@@ -125,9 +128,9 @@ fi
 #    grows like V^1.5) on icosphere:6 only.
 big=()
 [ -f "$shared/armadillo.obj" ] && big+=(--mesh "$shared/armadillo.obj")
-"$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
+bench_part --sources 1 --append \
   --methods exact-mmp,dijkstra,heat-idt,gcf-exact,$windows --surface icosphere:6 --out "$jsonl"
-"$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append \
+bench_part --sources 1 --append \
   --methods exact-mmp,dijkstra,heat-idt,$windows \
   --surface ellipsoid:1,0.6,0.3:6:0.25 --surface torus:1,0.4:320,128 "${big[@]}" \
   --surface icosphere:7 --surface icosphere:8 --out "$jsonl"
