@@ -534,8 +534,8 @@ TEST(CurvatureFlowDistances, DefaultMarginMendsShortRunsAndKeepsExactVertices) {
 // target, and every distance it replaces must be a path length, so not below the exact one (a
 // straightened on-mesh path is a path on the faces). From fandisk's vertex 0 a region of vertices
 // is ~1 % long together, so each agrees with its neighbours' update; only after its border is
-// mended are the next vertices flagged (two rounds left one 1.01 % long). Not every source is
-// repaired: from decimated-knight's vertex 293 one vertex stays 2.47 % long (geodesic/README.md).
+// mended are the next vertices flagged (two rounds left one 1.01 % long). Other sources, six per
+// shared mesh, are measured by benchmarks/run_gcf.sh (GCF_SOURCES_ONLY=1; geodesic/README.md).
 TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
     struct Case {
         const char* name;
