@@ -19,6 +19,10 @@ enum class EaseMode {
                   ///< are fractions of the measurement, e.g. chestEase 0.15)
 };
 
+inline const char* to_string(EaseMode m) {
+    return m == EaseMode::keep_mm ? "keep_mm" : "proportional";
+}
+
 /// Weights of the residual groups (grading/README.md gives each formula). Fit and seam residuals
 /// are in mm; style and smoothness residuals are made lengths by the reference length
 /// `GradingOptions::reference_length_mm`, so a weight of 1 means "1 unit here costs as much as

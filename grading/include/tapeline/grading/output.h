@@ -5,6 +5,7 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/grading/grade.h>
+#include <tapeline/grading/grading_json.h>
 #include <tapeline/pattern/internal/bitmap_font.h>
 #include <tapeline/pattern/png.h>
 
@@ -36,60 +37,7 @@ inline std::string fit_table(const GradingReport& r) {
     return o.str();
 }
 
-inline nlohmann::json report_json(const GradingReport& r) {
-    using nlohmann::json;
-    json j;
-    j["pieces"] = r.pieces;
-    j["nodes"] = r.nodes;
-    j["variables"] = r.variables;
-    j["residuals"] = r.residuals;
-    j["fit"] = json::array();
-    for (const FitRow& f : r.fit) {
-        j["fit"].push_back({{"measurement", f.measurement},
-                            {"pieces", f.where},
-                            {"target_mm", f.target_mm},
-                            {"ease_mm", f.ease_mm},
-                            {"achieved_mm", f.achieved_mm},
-                            {"error_mm", f.error_mm}});
-    }
-    j["seams"] = json::array();
-    for (const SeamRow& s : r.seams) {
-        j["seams"].push_back({{"name", s.name},
-                              {"length_a_mm", s.length_a_mm},
-                              {"length_b_mm", s.length_b_mm},
-                              {"ratio", s.ratio},
-                              {"mismatch_mm", s.mismatch_mm}});
-    }
-    j["style"] = {{"max_angle_change_deg", r.style.max_angle_change_deg},
-                  {"mean_angle_change_deg", r.style.mean_angle_change_deg},
-                  {"max_curve_change", r.style.max_curve_change},
-                  {"proportion_spread", r.style.proportion_spread},
-                  {"max_grain_change_deg", r.style.max_grain_change_deg},
-                  {"cost", r.style.cost}};
-    j["front"] = json::array();
-    for (const ParetoPoint& p : r.front) {
-        j["front"].push_back({{"fit", p.fit},
-                              {"style", p.style},
-                              {"max_fit_error_mm", p.max_fit_error_mm},
-                              {"max_seam_mismatch_mm", p.max_seam_mismatch_mm},
-                              {"within_tolerance", p.within_tolerance},
-                              {"origin", p.origin}});
-    }
-    j["chosen"] = r.chosen;
-    j["chosen_why"] = r.chosen_why;
-    j["within_tolerance"] = r.within_tolerance;
-    j["max_fit_error_mm"] = r.max_fit_error_mm;
-    j["max_seam_mismatch_mm"] = r.max_seam_mismatch_mm;
-    j["ceres"] = {{"iterations", r.ceres_iterations}, {"status", r.ceres_status}};
-    j["nsga2_evaluations"] = r.evaluations;
-    j["notes"] = r.notes;
-    j["timings_s"] = {{"setup", r.timings.setup_s},
-                      {"ceres_fast_path", r.timings.ceres_fast_path_s},
-                      {"nsga2", r.timings.nsga2_s},
-                      {"polish", r.timings.polish_s},
-                      {"total", r.timings.total_s}};
-    return j;
-}
+inline nlohmann::json report_json(const GradingReport& r) { return r; }
 
 /// Grade rules as JSON: per piece, per named point or outline vertex, base → graded and the
 /// offset (mm, y up).
