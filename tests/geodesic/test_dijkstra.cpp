@@ -25,7 +25,7 @@ TEST(Dijkstra, NeverBelowExact) {
             ASSERT_GE(dij.d[v], tg::euclidean(soup.points[v], soup.points[11]) * (1 - 1e-12));
         }
         EXPECT_EQ(dij.report.method, "dijkstra");
-        EXPECT_EQ(dij.report.pre_seconds, 0.0);
+        EXPECT_EQ(dij.report.prepare_seconds, 0.0);
     }
 }
 

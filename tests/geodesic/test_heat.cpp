@@ -127,15 +127,15 @@ TEST(Heat, MultipleSourcesAvoidTheJointNormalisationBias) {
 }
 
 // One solver, several queries: each query equals the one-shot function, the factorisation time
-// is reported once (pre_seconds identical for every query).
+// is reported once (prepare_seconds identical for every query).
 TEST(Heat, PrefactoredSolverMatchesOneShot) {
     const tg::Soup soup = tg::surface("ellipsoid:1,1,0.5:3");
     const auto fields = tg::heat_queries(soup, {tg::Sources::vertex(3), tg::Sources::vertex(300)});
     ASSERT_EQ(fields.size(), 2u);
     EXPECT_EQ(fields[0].d, tg::distances(soup, tg::Method::heat, tg::Sources::vertex(3)).d);
     EXPECT_EQ(fields[1].d, tg::distances(soup, tg::Method::heat, tg::Sources::vertex(300)).d);
-    EXPECT_GT(fields[0].report.pre_seconds, 0.0);
-    EXPECT_EQ(fields[0].report.pre_seconds, fields[1].report.pre_seconds);
+    EXPECT_GT(fields[0].report.prepare_seconds, 0.0);
+    EXPECT_EQ(fields[0].report.prepare_seconds, fields[1].report.prepare_seconds);
 }
 
 // Meshes with boundary: flat square (truth Euclidean; measured mean rel 2.6e-2, max |err| 0.64 h)

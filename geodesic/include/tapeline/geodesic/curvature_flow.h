@@ -615,7 +615,7 @@ CurvatureFlowDistanceReport gcf_distances(
     CurvatureFlowDistanceReport r;
     r.vertices = m.vertex_count();
     r.faces = m.face_count();
-    r.init_seconds = internal::seconds_since(t0);
+    r.prepare_seconds = internal::seconds_since(t0);
     const double h = m.mean_edge > 0 ? m.mean_edge : 1.0;
     r.sample_spacing = options.sample_spacing > 0 ? options.sample_spacing : h;
     internal::gcf::PropagateParams pp;
@@ -785,7 +785,12 @@ CurvatureFlowDistanceReport gcf_distances(
         r.status = "solver_failure";
     else if (r.max_iterations > 0)
         r.status = "max_iterations";
+    r.method = options.window == 0                          ? "gcf_exact"
+               : options.anchor == WindowAnchor::prefix ? "gcf_window_thesis"
+                                                        : "gcf_window";
+    r.sources = 1;
     r.seconds = internal::seconds_since(t0);
+    r.query_seconds = r.seconds - r.prepare_seconds;
     return r;
 }
 

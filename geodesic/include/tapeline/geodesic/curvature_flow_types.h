@@ -147,6 +147,10 @@ enum class WindowAnchor {
     field,
 };
 
+inline const char* to_string(WindowAnchor a) {
+    return a == WindowAnchor::prefix ? "prefix" : "field";
+}
+
 /// Single-source distances by curvature flow (gcf_distances, curvature_flow.h): ring-by-ring
 /// propagation from a source vertex, each new vertex started from the straightest continuation of
 /// a visited neighbour's geodesic and flowed (the thesis' Algorithms 1 and 2).
@@ -251,12 +255,12 @@ struct CurvatureFlowDistanceOptions {
     }();
 };
 
-/// What gcf_distances did. Times are wall-clock seconds.
-struct CurvatureFlowDistanceReport {
-    std::size_t vertices = 0;
-    std::size_t faces = 0;
+/// What gcf_distances did, beyond DistanceReport (prepare_seconds: mesh arrays and checks;
+/// query_seconds: propagation and repair; unreachable: vertices outside the source's component;
+/// status: "ok" when every flow converged or stalled, "max_iterations" when some flow hit the
+/// limit, "solver_failure" when some linear solve failed). Times are wall-clock seconds.
+struct CurvatureFlowDistanceReport : DistanceReport {
     std::size_t reached = 0;          ///< vertices with a finite distance (source included)
-    std::size_t unreachable = 0;      ///< vertices outside the source's component (+infinity)
     std::size_t flows = 0;            ///< vertices whose path was flowed (past the 1-ring)
     std::size_t iterations = 0;       ///< flow steps, all vertices together
     std::size_t converged = 0;        ///< flows ending "converged"
@@ -283,11 +287,6 @@ struct CurvatureFlowDistanceReport {
     double repair_graph_seconds = 0;  ///< the Steiner graph's share of repair_seconds
     double repair_seconds = 0;        ///< the repair's share of `seconds`
     double sample_spacing = 0;        ///< the spacing used
-    double init_seconds = 0;          ///< mesh arrays and checks
-    double seconds = 0;               ///< total
-    /// "ok" (every flow converged or stalled), "max_iterations" (some flow hit the limit),
-    /// "solver_failure" (some linear solve failed).
-    std::string status = "ok";
 };
 
 }  // namespace tapeline::geodesic

@@ -113,6 +113,7 @@ DistanceReport dijkstra_distances(const TriangleMesh& tm, const SourceSet<Triang
     report.components = components.count;
     report.unreachable = internal::write_distances(d, index, distances, w);
     report.query_seconds = internal::seconds_since(t0);
+    report.seconds = report.query_seconds;
     return report;
 }
 

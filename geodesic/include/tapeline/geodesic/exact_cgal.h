@@ -103,7 +103,7 @@ public:
         const auto t0 = internal::Clock::now();
         smsp_ = std::make_unique<Smsp>(tm, index_.vertex_index_map(), P::halfedge_index_map(tm, np),
                                        index_.face_index_map(), vpm_, Traits(P::geom_traits(np)));
-        report_.pre_seconds = internal::seconds_since(t0);
+        report_.prepare_seconds = internal::seconds_since(t0);
 
         const auto t1 = internal::Clock::now();
         has_smsp_sources_ = !smsp_vertices.empty() || !fsrc.empty();
@@ -115,6 +115,7 @@ public:
             smsp_->build_sequence_tree();
         build_seconds_ = internal::seconds_since(t1);
         report_.query_seconds = build_seconds_;
+        report_.seconds = report_.prepare_seconds + report_.query_seconds;
     }
 
     ExactCgalSolver(const TriangleMesh& tm, vertex_descriptor source,
@@ -132,6 +133,7 @@ public:
             d[i] = vertex_distance(i);
         report_.unreachable = internal::write_distances(d, index_, distances, "exact_cgal");
         report_.query_seconds = build_seconds_ + internal::seconds_since(t0);
+        report_.seconds = report_.prepare_seconds + report_.query_seconds;
         return report_;
     }
 

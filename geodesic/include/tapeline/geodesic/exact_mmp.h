@@ -223,6 +223,7 @@ public:
         ExactMmpReport r = report_;
         r.unreachable = internal::write_distances(d, index, distances, "exact_mmp");
         r.query_seconds += internal::seconds_since(t0);
+        r.seconds = r.prepare_seconds + r.query_seconds;
         return r;
     }
 
@@ -277,8 +278,9 @@ private:
         report_.faces = prep_->index().face_count();
         report_.sources = sources.size();
         report_.components = prep_->components().count;
-        report_.pre_seconds = prep_->seconds();
+        report_.prepare_seconds = prep_->seconds();
         report_.query_seconds = internal::seconds_since(t0);
+        report_.seconds = report_.prepare_seconds + report_.query_seconds;
         const auto& st = engine_->stats();
         report_.windows_created = st.created;
         report_.windows_propagated = st.propagated;

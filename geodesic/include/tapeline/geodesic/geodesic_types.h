@@ -11,18 +11,24 @@
 
 namespace tapeline::geodesic {
 
-/// What one distance computation did. Times are wall-clock seconds.
+/// What one distance computation did: the part every distance method reports the same way (the
+/// exact methods, heat, Dijkstra and the curvature flows on meshes and point sets derive their
+/// reports from it), so that a caller can time, size and check any method generically. Times are
+/// wall-clock seconds.
 struct DistanceReport {
-    std::string method;           ///< "exact_cgal", "heat", "heat_idt", "dijkstra"
-    std::size_t vertices = 0;     ///< vertices of the input mesh
-    std::size_t faces = 0;        ///< faces of the input mesh
+    std::string method;           ///< "exact_mmp", "exact_cgal", "heat", "gcf_window", ...
+    std::size_t vertices = 0;     ///< vertices of the input mesh (points of a point set)
+    std::size_t faces = 0;        ///< faces of the input mesh (0 for a point set)
     std::size_t sources = 0;      ///< source points (vertices + face locations) as given
     std::size_t unreachable = 0;  ///< vertices given +infinity (other component, isolated vertex)
     std::size_t components = 0;   ///< connected components of the mesh (isolated vertices count)
-    /// Source-independent work: SMSP object construction, heat factorisation (0 for Dijkstra).
-    double pre_seconds = 0;
-    /// Source-dependent work: SMSP sources + sequence tree + reading, heat solves, Dijkstra run.
+    /// Source-independent work: SMSP object construction, heat factorisation, MMP mesh arrays,
+    /// curvature-flow set-up, point-set kNN and grid (0 for Dijkstra).
+    double prepare_seconds = 0;
+    /// Source-dependent work: SMSP sources + sequence tree + reading, heat solves, Dijkstra run,
+    /// window propagation, curvature-flow propagation and repair.
     double query_seconds = 0;
+    double seconds = 0;         ///< prepare_seconds + query_seconds: the whole call
     std::string status = "ok";  ///< "ok" or a short reason when a non-fatal guard fired
     std::string message;        ///< human-readable detail for status
 };

@@ -109,7 +109,7 @@ void HeatComponent<Kernel>::solve(const std::vector<std::size_t>& local_sources,
 }  // namespace internal
 
 /// Prefactored heat method: the constructor does the source-independent work (copy and Cholesky
-/// factorisations, report().pre_seconds); each distances() call does the solves.
+/// factorisations, report().prepare_seconds); each distances() call does the solves.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class HeatDistanceSolver {
     using P = internal::MeshParameters<TriangleMesh, NamedParameters>;
@@ -181,7 +181,7 @@ public:
             throw SolverFailure(std::string(where(options)) +
                                 ": CGAL Heat_method_3 failed during factorisation: " + e.what());
         }
-        report_.pre_seconds = internal::seconds_since(t0);
+        report_.prepare_seconds = internal::seconds_since(t0);
     }
 
     /// Heat distances from vertex sources into `distances` (+infinity on components without a
@@ -243,6 +243,7 @@ public:
         report.sources = sources.size();
         report.unreachable = internal::write_distances(d, index_, distances, w);
         report.query_seconds = internal::seconds_since(t0);
+        report.seconds = report.prepare_seconds + report.query_seconds;
         return report;
     }
 

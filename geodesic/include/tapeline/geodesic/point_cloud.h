@@ -147,7 +147,11 @@ public:
                 ++r.reached;
         }
         r.unreachable = pr_->n - r.reached;
-        r.seconds = internal::gcf::points::since(t0);
+        r.method = "gcf_points";
+        r.vertices = pr_->n;
+        r.sources = 1;
+        r.query_seconds = internal::gcf::points::since(t0);
+        r.seconds = r.prepare_seconds + r.query_seconds;
         return r;
     }
 

@@ -98,8 +98,12 @@ struct PointCloudDistanceOptions {
     }();
 };
 
-/// What the preparation and a query did. Times are wall-clock seconds.
-struct PointCloudDistanceReport {
+/// What the preparation and a query did, beyond DistanceReport (vertices and points: the input
+/// points; prepare_seconds: checks, kNN, grid, dimension estimate, all of set-up; query_seconds:
+/// one query; seconds: the whole call, set-up included for one-shot calls; unreachable: input
+/// points left at +infinity (other components); status: "ok" when every flow converged or
+/// stalled, "max_iterations", "solver_failure"). Times are wall-clock seconds.
+struct PointCloudDistanceReport : DistanceReport {
     std::size_t points = 0;
     std::size_t dimension = 0;           ///< D, of the ambient space
     std::size_t manifold_dimension = 0;  ///< k used (given or estimated)
@@ -114,7 +118,6 @@ struct PointCloudDistanceReport {
     std::string knn;                  ///< the backend used: "cgal" or "nanoflann"
     std::size_t reached_nodes = 0;    ///< nodes with a finite distance
     std::size_t reached = 0;          ///< input points with a finite distance (source included)
-    std::size_t unreachable = 0;      ///< input points left at +infinity (other components)
     std::size_t flows = 0;            ///< flows run (several per node with the cut-locus guard)
     std::size_t iterations = 0;       ///< flow steps, all flows together
     std::size_t converged = 0;        ///< flows ending "converged"
@@ -124,12 +127,8 @@ struct PointCloudDistanceReport {
     std::size_t charts = 0;           ///< local surfaces fitted (lazily, per input point)
     double knn_seconds = 0;           ///< k-nearest-neighbour graph (index build and queries)
     double grid_seconds = 0;          ///< grid, nodes and their adjacency
-    double prepare_seconds = 0;       ///< checks, kNN, grid, dimension estimate: all of set-up
     double propagate_seconds = 0;     ///< the propagation over the nodes
     double interpolate_seconds = 0;   ///< node distances to every input point
-    double seconds = 0;               ///< total of the call (set-up included for one-shot calls)
-    /// "ok" (every flow converged or stalled), "max_iterations", "solver_failure".
-    std::string status = "ok";
 };
 
 /// A geodesic path between two input points: the flowed samples (endpoints are the two points as
