@@ -1,8 +1,13 @@
 // Registration of the tool's subcommand families (each defined in its own translation unit).
 #pragma once
 
+#include <string>
+
 namespace CLI {
 class App;
+}
+namespace tapeline::geodesic {
+struct PointCloudDistanceOptions;
 }
 
 namespace tapeline::app {
@@ -12,4 +17,8 @@ void register_bench_commands(CLI::App& app);
 void register_pattern_commands(CLI::App& app);
 void register_grade_commands(CLI::App& app);
 void register_measure_commands(CLI::App& app);
+
+/// --projection (mls or plane) of gcf-points into `options`, its default shown from `options`.
+void add_projection_option(CLI::App* cmd, geodesic::PointCloudDistanceOptions& options,
+                           const std::string& help);
 }  // namespace tapeline::app

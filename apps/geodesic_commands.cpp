@@ -107,10 +107,9 @@ struct DistancesArgs {
     std::vector<long> sources;
     std::vector<std::string> source_points;
     std::string method = "exact-mmp";
-    std::size_t window = 8;
     std::string out;
     bool point_cloud = false;
-    PointsMethodOptions points;
+    MethodSettings settings;  // --window, --cell, --neighbours, --projection
 };
 
 // --point-cloud: the positional input is a point set (.xyz, .csv, .ply); gcf-points from one
@@ -119,7 +118,8 @@ void run_point_cloud_distances(const DistancesArgs& args, bool method_given) {
     if (args.mesh.mesh.empty()) {
         throw InvalidInput("--point-cloud needs a points file (.xyz, .csv or .ply)");
     }
-    if (method_given && parse_method_name(args.method, args.window).base != "gcf-points") {
+    if (method_given &&
+        parse_method_name(args.method, args.settings.window).base != "gcf-points") {
         throw InvalidInput("--point-cloud: method '" + args.method +
                            "' needs a mesh; point clouds take gcf-points");
     }
@@ -135,10 +135,10 @@ void run_point_cloud_distances(const DistancesArgs& args, bool method_given) {
                            ": a point cloud's distances are written as .txt (one per "
                            "point per line)");
     }
-    const std::size_t window = parse_method_name(args.method, args.window).window;
-    const PointCloudRun run =
-        run_point_cloud_file(args.mesh.mesh, static_cast<std::size_t>(args.sources.front()),
-                             method_given ? window : args.window, args.points);
+    geodesic::PointCloudDistanceOptions options = args.settings.points;
+    options.window = parse_method_name(args.method, args.settings.window).window;
+    const bench::PointCloudRun run = bench::run_point_cloud_file(
+        args.mesh.mesh, static_cast<std::size_t>(args.sources.front()), options);
     write_file_atomically(args.out, [&](std::ostream& out) {
         out.precision(17);
         for (double d : run.distances) {
@@ -174,7 +174,8 @@ void run_distances(const DistancesArgs& args) {
     if (sources.vertices.empty() && sources.locations.empty()) {
         throw InvalidInput("give at least one --source V or --source-point F:B0,B1,B2");
     }
-    MethodResult result = run_distance_method(args.method, input.loaded.mesh, sources, args.window);
+    MethodResult result =
+        run_distance_method(args.method, input.loaded.mesh, sources, args.settings);
     const std::vector<double> in_order = input.loaded.to_input_order(result.distances);
     write_distances(args.out, input.loaded.mesh, result.distances, in_order);
     double max_d = 0;
@@ -184,7 +185,7 @@ void run_distances(const DistancesArgs& args) {
         }
     }
     std::cout << "wrote " << args.out << ": " << args.method << " on " << input.name << " ("
-              << num_vertices(input.loaded.mesh) << " vertices), pre " << result.report.pre_seconds
+              << num_vertices(input.loaded.mesh) << " vertices), pre " << result.report.prepare_seconds
               << " s, query " << result.report.query_seconds << " s, max distance " << max_d
               << ", unreachable " << result.report.unreachable << '\n';
 }
@@ -247,6 +248,18 @@ void run_path(const PathArgs& args) {
 
 }  // namespace
 
+void add_projection_option(CLI::App* cmd, geodesic::PointCloudDistanceOptions& options,
+                           const std::string& help) {
+    cmd->add_option_function<std::string>(
+           "--projection",
+           [&options](const std::string& text) {
+               options.projection = bench::parse_projection(text, "--projection");
+           },
+           help)
+        ->check(CLI::IsMember({"mls", "plane"}))
+        ->default_str(geodesic::to_string(options.projection));
+}
+
 void register_geodesic_commands(CLI::App& app) {
     CLI::App* geo = app.add_subcommand("geodesic", "Geodesic distances and paths on a mesh");
     geo->require_subcommand(1);
@@ -266,14 +279,14 @@ void register_geodesic_commands(CLI::App& app) {
                      "without that repair)")
         ->check(CLI::Validator(
             [](std::string& m) {
-                const std::string base = parse_method_name(m, 8).base;
+                const std::string base = parse_method_name(m).base;
                 const auto& known = distance_methods();
                 return std::find(known.begin(), known.end(), base) == known.end()
                            ? "unknown method '" + m + "'"
                            : std::string();
             },
             "METHOD"));
-    dist->add_option("--window", d->window, "Samples flowed per vertex by gcf-window")
+    dist->add_option("--window", d->settings.window, "Samples flowed per vertex by gcf-window")
         ->capture_default_str();
     dist->add_option("--out,-o", d->out,
                      "Output: .txt (one distance per input vertex per line, inf if unreachable) "
@@ -282,16 +295,14 @@ void register_geodesic_commands(CLI::App& app) {
     dist->add_flag("--point-cloud", d->point_cloud,
                    "The input is a point set (.xyz, .csv: any dimension; .ply): distances by "
                    "gcf-points (curvature flow over a grid of cells, the thesis' Algorithm 3)");
-    dist->add_option("--cell", d->points.cell,
+    dist->add_option("--cell", d->settings.points.cell_size,
                      "gcf-points: grid cell size (0: the median distance to the d-th neighbour)")
         ->capture_default_str();
-    dist->add_option("--neighbours", d->points.neighbours,
+    dist->add_option("--neighbours", d->settings.points.neighbours,
                      "gcf-points: neighbours d of the local surfaces (PCA, MLS)")
         ->capture_default_str();
-    dist->add_option("--projection", d->points.projection,
-                     "gcf-points: local surface, mls (quadric) or plane")
-        ->check(CLI::IsMember({"mls", "plane"}))
-        ->capture_default_str();
+    add_projection_option(dist, d->settings.points,
+                          "gcf-points: local surface, mls (quadric) or plane");
     auto* method_option = dist->get_option("--method");
     dist->callback([d, method_option] {
         if (d->point_cloud) {

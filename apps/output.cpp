@@ -13,16 +13,6 @@
 
 namespace tapeline::app {
 
-std::vector<std::array<double, 3>> mesh_points(const Mesh& mesh) {
-    std::vector<std::array<double, 3>> points;
-    points.reserve(num_vertices(mesh));
-    for (Vertex v : vertices(mesh)) {
-        const Point& p = mesh.point(v);
-        points.push_back({p.x(), p.y(), p.z()});
-    }
-    return points;
-}
-
 std::string extension_of(const std::string& path) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),

@@ -10,8 +10,6 @@
 
 namespace tapeline::app {
 
-std::vector<std::array<double, 3>> mesh_points(const Mesh& mesh);
-
 /// `per_mesh_vertex` is indexed by mesh vertex, `per_input_vertex` by input-file vertex.
 void write_distances(const std::string& path, const Mesh& mesh,
                      const std::vector<double>& per_mesh_vertex,

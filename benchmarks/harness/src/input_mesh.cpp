@@ -1,4 +1,4 @@
-#include "app_types.h"
+#include <tapeline/bench/methods.h>
 
 #include <tapeline/core/errors.h>
 
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-namespace tapeline::app {
+namespace tapeline::bench {
 
 InputMesh load_input_mesh_file(const std::string& path, bool strict) {
     MeshLoadOptions options;
@@ -39,6 +39,16 @@ InputMesh make_input_surface(const std::string& spec_text, std::uint64_t seed) {
     return input;
 }
 
+std::vector<std::array<double, 3>> mesh_points(const Mesh& mesh) {
+    std::vector<std::array<double, 3>> points;
+    points.reserve(num_vertices(mesh));
+    for (Vertex v : vertices(mesh)) {
+        const Point& p = mesh.point(v);
+        points.push_back({p.x(), p.y(), p.z()});
+    }
+    return points;
+}
+
 std::size_t current_rss_bytes() {
     std::ifstream status("/proc/self/status");
     std::string key;
@@ -53,4 +63,4 @@ std::size_t current_rss_bytes() {
     return 0;
 }
 
-}  // namespace tapeline::app
+}  // namespace tapeline::bench

@@ -1,8 +1,8 @@
-#include "app_types.h"
+#include <tapeline/bench/methods.h>
 
 #include <tapeline/geodesic/exact_cgal.h>
 
-namespace tapeline::app {
+namespace tapeline::bench::internal {
 
 MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources) {
     MethodResult result;
@@ -12,4 +12,4 @@ MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources) {
     return result;
 }
 
-}  // namespace tapeline::app
+}  // namespace tapeline::bench::internal

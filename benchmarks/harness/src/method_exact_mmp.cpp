@@ -1,11 +1,8 @@
-#include "app_types.h"
-#include "path_json.h"
+#include <tapeline/bench/methods.h>
 
 #include <tapeline/geodesic/exact_mmp.h>
 
-#include <nlohmann/json.hpp>
-
-namespace tapeline::app {
+namespace tapeline::bench::internal {
 
 MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources) {
     MethodResult result;
@@ -15,9 +12,4 @@ MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources) {
     return result;
 }
 
-nlohmann::json exact_mmp_path_json(const Mesh& mesh, Vertex from, Vertex to) {
-    using SP = geodesic::SurfacePoint<Mesh>;
-    return path_json(geodesic::exact_mmp_path(mesh, SP(from), SP(to)));
-}
-
-}  // namespace tapeline::app
+}  // namespace tapeline::bench::internal

@@ -1,7 +1,7 @@
 // `gcf-points`: geodesic distances on point sets by curvature flow (geodesic/point_cloud.h, the
 // thesis' Algorithm 3), on a mesh's vertices (the benchmark method, optionally with seeded
 // Gaussian noise) or on a point-set file (.xyz, .csv, .ply).
-#include "app_types.h"
+#include <tapeline/bench/methods.h>
 
 #include <tapeline/core/errors.h>
 #include <tapeline/core/point_io.h>
@@ -13,32 +13,17 @@
 #include <string>
 #include <vector>
 
-namespace tapeline::app {
+namespace tapeline::bench {
 
-namespace {
+namespace internal {
 
-geodesic::PointCloudDistanceOptions cloud_options(std::size_t window,
-                                                  const PointsMethodOptions& points) {
-    geodesic::PointCloudDistanceOptions o;
-    o.window = window;
-    o.cell_size = points.cell;
-    o.neighbours = points.neighbours;
-    if (points.projection == "plane") {
-        o.projection = geodesic::PointCloudProjection::plane;
-    } else if (points.projection != "mls") {
-        throw InvalidInput("--projection '" + points.projection + "': expected mls or plane");
-    }
-    return o;
-}
-
-}  // namespace
-
-MethodResult run_gcf_points(const Mesh& mesh, const Sources& sources, std::size_t window,
-                            const PointsMethodOptions& points) {
+MethodResult run_gcf_points(const Mesh& mesh, const Sources& sources,
+                            const geodesic::PointCloudDistanceOptions& options, double noise,
+                            std::uint64_t seed) {
     if (sources.vertices.size() != 1 || !sources.locations.empty()) {
         throw InvalidInput("gcf-points takes exactly one vertex source (a point of the cloud)");
     }
-    if (!(points.noise >= 0) || !std::isfinite(points.noise)) {
+    if (!(noise >= 0) || !std::isfinite(noise)) {
         throw InvalidInput(
             "--noise must be finite and >= 0 (a fraction of the bounding-box "
             "diagonal)");
@@ -54,11 +39,11 @@ MethodResult run_gcf_points(const Mesh& mesh, const Sources& sources, std::size_
             hi[j] = std::max(hi[j], xyz.back()[j]);
         }
     }
-    if (points.noise > 0) {
-        const double sigma = points.noise * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
-                                                      (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                                                      (hi[2] - lo[2]) * (hi[2] - lo[2]));
-        std::mt19937_64 rng(points.seed);
+    if (noise > 0) {
+        const double sigma = noise * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) +
+                                               (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                               (hi[2] - lo[2]) * (hi[2] - lo[2]));
+        std::mt19937_64 rng(seed);
         std::normal_distribution<double> gauss(0.0, sigma);
         for (auto& p : xyz) {
             for (double& c : p) {
@@ -68,22 +53,18 @@ MethodResult run_gcf_points(const Mesh& mesh, const Sources& sources, std::size_
     }
     MethodResult result;
     result.distances.assign(xyz.size(), 0.0);
-    const geodesic::PointCloudDistanceReport r = geodesic::gcf_point_cloud_distances(
-        xyz, static_cast<std::size_t>(sources.vertices.front()),
-        CGAL::make_property_map(result.distances), cloud_options(window, points));
-    result.report.method = "gcf_points";
-    result.report.vertices = xyz.size();
+    const geodesic::PointCloudDistanceReport r =
+        geodesic::gcf_point_cloud_distances(xyz, static_cast<std::size_t>(sources.vertices.front()),
+                                            CGAL::make_property_map(result.distances), options);
+    result.report = r;
     result.report.faces = num_faces(mesh);
-    result.report.sources = 1;
-    result.report.unreachable = r.unreachable;
-    result.report.pre_seconds = r.prepare_seconds;
-    result.report.query_seconds = r.seconds - r.prepare_seconds;
-    result.report.status = r.status;
     return result;
 }
 
-PointCloudRun run_point_cloud_file(const std::string& path, std::size_t source, std::size_t window,
-                                   const PointsMethodOptions& points) {
+}  // namespace internal
+
+PointCloudRun run_point_cloud_file(const std::string& path, std::size_t source,
+                                   const geodesic::PointCloudDistanceOptions& options) {
     const PointSet set = read_point_set(path);
     if (source >= set.size()) {
         throw InvalidInput("--source " + std::to_string(source) + ": point " +
@@ -99,8 +80,8 @@ PointCloudRun run_point_cloud_file(const std::string& path, std::size_t source, 
     PointCloudRun run;
     run.distances.assign(set.size(), 0.0);
     run.report = geodesic::gcf_point_cloud_distances(
-        pts, source, CGAL::make_property_map(run.distances), cloud_options(window, points));
+        pts, source, CGAL::make_property_map(run.distances), options);
     return run;
 }
 
-}  // namespace tapeline::app
+}  // namespace tapeline::bench

@@ -1,15 +1,172 @@
-#include "app_types.h"
+// The method table: each named method builds its library Options once, and both the run and the
+// logged options come from that one construction.
+#include <tapeline/bench/methods.h>
 
 #include <tapeline/core/errors.h>
+#include <tapeline/geodesic/curvature_flow_json.h>
+#include <tapeline/geodesic/exact_mmp_json.h>
+#include <tapeline/geodesic/geodesic_json.h>
+#include <tapeline/geodesic/point_cloud_json.h>
 
 #include <cstdlib>
 
-namespace tapeline::app {
+namespace tapeline::bench {
+
+namespace {
+
+geodesic::HeatOptions heat_options(const MethodName& m) {
+    geodesic::HeatOptions o;
+    o.intrinsic_delaunay = m.base == "heat-idt";
+    return o;
+}
+
+geodesic::CurvatureFlowDistanceOptions gcf_options(const MethodName& m) {
+    const bool thesis = m.base == "gcf-window-thesis";
+    geodesic::CurvatureFlowDistanceOptions o;
+    o.window = m.base == "gcf-exact" ? 0 : m.window;
+    o.anchor = thesis ? geodesic::WindowAnchor::prefix : geodesic::WindowAnchor::field;
+    o.cut_locus_guard = !thesis;  // gcf-window-thesis: the thesis' rule as written
+    o.smooth_length = !m.on_faces;
+    if (!m.repair) {
+        o.repair_tolerance = -1;
+    }
+    return o;
+}
+
+geodesic::PointCloudDistanceOptions points_options(const MethodName& m, const MethodSettings& s) {
+    geodesic::PointCloudDistanceOptions o = s.points;
+    o.window = m.window;
+    return o;
+}
+
+/// Keys of the benchmark lines' options from before the options were written whole; kept so that
+/// tables and scripts over older lines read newer ones the same way.
+void add_summary_keys(nlohmann::json& j, const MethodName& m, const MethodSettings& s) {
+    if (m.base == "gcf-points") {
+        j["cell"] = s.points.cell_size;
+        j["noise"] = s.noise;
+    } else {
+        j["length"] = m.on_faces ? "faces" : "smooth";
+    }
+    if (m.on_faces) {
+        j["repair"] = m.repair;
+    }
+}
+
+struct MethodEntry {
+    const char* name;
+    MethodResult (*run)(const Mesh&, const Sources&, const MethodName&, const MethodSettings&);
+    nlohmann::json (*options)(const MethodName&, const MethodSettings&);
+};
+
+nlohmann::json gcf_json(const MethodName& m, const MethodSettings& s) {
+    nlohmann::json j = gcf_options(m);
+    add_summary_keys(j, m, s);
+    return j;
+}
+
+MethodResult run_gcf_entry(const Mesh& mesh, const Sources& sources, const MethodName& m,
+                           const MethodSettings&) {
+    if (m.base != "gcf-exact" && m.window == 0) {
+        throw InvalidInput("--window must be at least 1 for " + m.base + " (gcf-exact flows all)");
+    }
+    return internal::run_gcf(mesh, sources, gcf_options(m));
+}
+
+const std::vector<MethodEntry>& method_table() {
+    using geodesic::DijkstraOptions;
+    using geodesic::ExactCgalOptions;
+    using geodesic::ExactMmpOptions;
+    static const std::vector<MethodEntry> table = {
+        {"exact-mmp",
+         [](const Mesh& mesh, const Sources& src, const MethodName&, const MethodSettings&) {
+             return internal::run_exact_mmp(mesh, src);
+         },
+         [](const MethodName&, const MethodSettings&) {
+             return nlohmann::json(ExactMmpOptions{});
+         }},
+        {"exact-cgal",
+         [](const Mesh& mesh, const Sources& src, const MethodName&, const MethodSettings&) {
+             return internal::run_exact_cgal(mesh, src);
+         },
+         [](const MethodName&, const MethodSettings&) {
+             return nlohmann::json(ExactCgalOptions{});
+         }},
+        {"heat",
+         [](const Mesh& mesh, const Sources& src, const MethodName& m, const MethodSettings&) {
+             return internal::run_heat(mesh, src, heat_options(m));
+         },
+         [](const MethodName& m, const MethodSettings&) {
+             return nlohmann::json(heat_options(m));
+         }},
+        {"heat-idt",
+         [](const Mesh& mesh, const Sources& src, const MethodName& m, const MethodSettings&) {
+             return internal::run_heat(mesh, src, heat_options(m));
+         },
+         [](const MethodName& m, const MethodSettings&) {
+             return nlohmann::json(heat_options(m));
+         }},
+        {"dijkstra",
+         [](const Mesh& mesh, const Sources& src, const MethodName&, const MethodSettings&) {
+             return internal::run_dijkstra(mesh, src);
+         },
+         [](const MethodName&, const MethodSettings&) {
+             return nlohmann::json(DijkstraOptions{});
+         }},
+        {"gcf-exact", run_gcf_entry, gcf_json},
+        {"gcf-window", run_gcf_entry, gcf_json},
+        {"gcf-window-thesis", run_gcf_entry, gcf_json},
+        {"gcf-points",
+         [](const Mesh& mesh, const Sources& src, const MethodName& m, const MethodSettings& s) {
+             return internal::run_gcf_points(mesh, src, points_options(m, s), s.noise, s.seed);
+         },
+         [](const MethodName& m, const MethodSettings& s) {
+             nlohmann::json j = points_options(m, s);
+             add_summary_keys(j, m, s);
+             return j;
+         }},
+    };
+    return table;
+}
+
+std::string known_methods() {
+    std::string known;
+    for (const std::string& m : distance_methods()) {
+        known += (known.empty() ? "" : ", ") + m;
+    }
+    return known;
+}
+
+const MethodEntry& entry_of(const std::string& option, const std::string& given,
+                            const MethodName& parsed) {
+    for (const MethodEntry& e : method_table()) {
+        if (parsed.base == e.name) {
+            return e;
+        }
+    }
+    throw InvalidInput(option + "unknown method '" + given + "' (known: " + known_methods() + ")");
+}
+
+}  // namespace
+
+geodesic::PointCloudProjection parse_projection(const std::string& text,
+                                                const std::string& option) {
+    for (auto p : {geodesic::PointCloudProjection::mls, geodesic::PointCloudProjection::plane}) {
+        if (text == geodesic::to_string(p)) {
+            return p;
+        }
+    }
+    throw InvalidInput(option + " '" + text + "': expected mls or plane");
+}
 
 const std::vector<std::string>& distance_methods() {
-    static const std::vector<std::string> methods = {
-        "exact-mmp",  "exact-cgal",        "heat",      "heat-idt", "dijkstra", "gcf-exact",
-        "gcf-window", "gcf-window-thesis", "gcf-points"};
+    static const std::vector<std::string> methods = [] {
+        std::vector<std::string> names;
+        for (const MethodEntry& e : method_table()) {
+            names.push_back(e.name);
+        }
+        return names;
+    }();
     return methods;
 }
 
@@ -55,45 +212,19 @@ MethodName parse_method_name(const std::string& given, std::size_t window) {
     return out;
 }
 
-MethodResult run_distance_method(const std::string& name, const Mesh& mesh, const Sources& sources,
-                                 std::size_t default_window, const PointsMethodOptions& points) {
-    const MethodName parsed = parse_method_name(name, default_window);
-    const std::string& method = parsed.base;
-    const std::size_t window = parsed.window;
-    if (method == "exact-mmp") {
-        return run_exact_mmp(mesh, sources);
-    }
-    if (method == "exact-cgal") {
-        return run_exact_cgal(mesh, sources);
-    }
-    if (method == "heat") {
-        return run_heat(mesh, sources, false);
-    }
-    if (method == "heat-idt") {
-        return run_heat(mesh, sources, true);
-    }
-    if (method == "dijkstra") {
-        return run_dijkstra(mesh, sources);
-    }
-    if (method == "gcf-exact") {
-        return run_gcf(mesh, sources, 0, false, parsed.on_faces, parsed.repair);
-    }
-    if (method == "gcf-window" || method == "gcf-window-thesis") {
-        if (window == 0) {
-            throw InvalidInput("--window must be at least 1 for " + method +
-                               " (gcf-exact flows all)");
-        }
-        return run_gcf(mesh, sources, window, method == "gcf-window-thesis", parsed.on_faces,
-                       parsed.repair);
-    }
-    if (method == "gcf-points") {
-        return run_gcf_points(mesh, sources, window, points);
-    }
-    std::string known;
-    for (const std::string& m : distance_methods()) {
-        known += (known.empty() ? "" : ", ") + m;
-    }
-    throw InvalidInput("unknown method '" + name + "' (known: " + known + ")");
+void check_method_name(const std::string& option, const std::string& method) {
+    entry_of(option + ": ", method, parse_method_name(method));
 }
 
-}  // namespace tapeline::app
+MethodResult run_distance_method(const std::string& name, const Mesh& mesh, const Sources& sources,
+                                 const MethodSettings& settings) {
+    const MethodName parsed = parse_method_name(name, settings.window);
+    return entry_of("", name, parsed).run(mesh, sources, parsed, settings);
+}
+
+nlohmann::json method_options_json(const std::string& name, const MethodSettings& settings) {
+    const MethodName parsed = parse_method_name(name, settings.window);
+    return entry_of("", name, parsed).options(parsed, settings);
+}
+
+}  // namespace tapeline::bench
