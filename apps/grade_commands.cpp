@@ -45,10 +45,14 @@ namespace tg = tapeline::grading;
 struct GradeArgs {
     std::string pattern, format = "auto", db, from, to, from_set, to_set;
     std::string out, svg, dxf, pareto, rules, rul, report, fit_table, compare;
-    std::string ease = "proportional";
-    bool store = false, replace = false, no_polish = false, no_fs_bindings = false;
-    std::uint32_t seed = 42;
-    std::size_t population = 32, generations = 60, threads = 0;
+    // Defaults read from the library's options.
+    std::string ease = tg::to_string(tg::GradingOptions{}.ease);
+    bool store = false, replace = false, no_polish = !tg::GradingOptions{}.ceres_polish;
+    bool no_fs_bindings = false;
+    std::uint32_t seed = tg::GradingOptions{}.seed;
+    std::size_t population = tg::GradingOptions{}.population;
+    std::size_t generations = tg::GradingOptions{}.generations;
+    std::size_t threads = tg::GradingOptions{}.threads;
 };
 
 std::string extension(const std::string& path) {
@@ -252,11 +256,11 @@ void register_grade_commands(CLI::App& app) {
     cmd->add_option("--fit-table", a->fit_table, "Fit table (text)");
     cmd->add_option("--compare", a->compare,
                     "Reference draft of the target size: outline deviation in the report");
-    cmd->add_option("--seed", a->seed, "Random seed (NSGA-II)");
-    cmd->add_option("--population", a->population, "NSGA-II population");
-    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)");
+    cmd->add_option("--seed", a->seed, "Random seed (NSGA-II)")->capture_default_str();
+    cmd->add_option("--population", a->population, "NSGA-II population")->capture_default_str();
+    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)")->capture_default_str();
     cmd->add_option("--threads", a->threads, "Threads (0: all)");
-    cmd->add_option("--ease", a->ease, "Ease mode: proportional (default) or keep_mm");
+    cmd->add_option("--ease", a->ease, "Ease mode: proportional or keep_mm")->capture_default_str();
     cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");
     cmd->add_flag("--no-freesewing-bindings", a->no_fs_bindings,
                   "Only the importer's bindings (no FreeSewing point-name bindings or seams)");

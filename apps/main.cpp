@@ -3,6 +3,9 @@
 #include "commands.h"
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/progress.h>
+
+#include <tapeline_build_info.h>
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +20,17 @@ int main(int argc, char** argv) {
         "Run `tapeline SUBCOMMAND --help` for the options of each command."};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Show the help of every subcommand");
+    app.set_version_flag("--version", std::string("tapeline ") + TAPELINE_VERSION + " (git " +
+                                          TAPELINE_GIT_REVISION + ")");
+    // Global: accepted before or after the subcommand.
+    app.fallthrough();
+    auto* quiet = app.add_flag_callback(
+        "--quiet", [] { tapeline::set_progress_mode(tapeline::ProgressMode::never); },
+        "No progress lines on stderr");
+    auto* progress = app.add_flag_callback(
+        "--progress", [] { tapeline::set_progress_mode(tapeline::ProgressMode::always); },
+        "Progress lines on stderr even when it is not a terminal (a pipe, a log file)");
+    quiet->excludes(progress);
     // One line per failure, like every other error of the tool.
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
         return "tapeline: error: " + std::string(e.what()) + " (see --help)\n";

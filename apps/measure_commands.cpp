@@ -40,9 +40,9 @@ struct MeasureArgs {
     std::string body;
     std::string units;
     std::string out;
-    std::string up = "+Y";
-    std::string front = "+Z";
-    std::string pose = "A";
+    std::string up = tm::BodyOptions{}.up.to_string();
+    std::string front = tm::BodyOptions{}.front.to_string();
+    std::string pose = tm::to_string(tm::BodyOptions{}.pose);
     std::string landmarks;
     std::string vit;
     std::vector<std::string> pictures;

@@ -4,6 +4,7 @@
 #include "pattern_input.h"
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/progress.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
 #include <tapeline/pattern/io_freesewing.h>
@@ -119,6 +120,7 @@ struct ImportArgs {
 void run_import(const ImportArgs& a) {
     // Every file is read and validated before the database is touched.
     std::vector<tp::Pattern> patterns;
+    Progress progress("pattern import: files read", a.files.size());
     for (const std::string& f : a.files) {
         tp::ImportReport report;
         tp::Pattern p = import_file(f, a.format, &report);
@@ -127,6 +129,7 @@ void run_import(const ImportArgs& a) {
             std::cerr << "tapeline: note: " << f << ": " << n << '\n';
         }
         patterns.push_back(std::move(p));
+        progress.advance();
     }
     tp::PatternDatabase database(db_path(a.db));
     if (!a.replace) {

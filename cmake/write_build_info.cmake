@@ -4,7 +4,7 @@ execute_process(COMMAND git describe --always --dirty --abbrev=12
 if(NOT res EQUAL 0 OR rev STREQUAL "")
   set(rev "unknown")
 endif()
-set(content "#pragma once\n#define TAPELINE_GIT_REVISION \"${rev}\"\n#define TAPELINE_COMPILER_FLAGS \"${FLAGS}\"\n")
+set(content "#pragma once\n#define TAPELINE_VERSION \"${VERSION}\"\n#define TAPELINE_GIT_REVISION \"${rev}\"\n#define TAPELINE_COMPILER_FLAGS \"${FLAGS}\"\n")
 set(file ${OUT_DIR}/tapeline_build_info.h)
 if(EXISTS ${file})
   file(READ ${file} old)

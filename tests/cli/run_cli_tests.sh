@@ -523,5 +523,26 @@ else
   echo "skip - measure on MakeHuman bodies ($bodies absent)"
 fi
 
+# --- version and progress ------------------------------------------------------------------------
+# --version: the CMake project version and the git revision, on stdout, exit 0.
+want_version=$(sed -n 's/^project(tapeline VERSION \([0-9.]*\).*/\1/p' "$root/CMakeLists.txt")
+if "$bin" --version >out.txt 2>err.txt && [ -n "$want_version" ] &&
+   grep -qE "^tapeline $want_version \(git [0-9a-f]{7,}(-dirty)?\)$|^tapeline $want_version \(git unknown\)$" out.txt
+then ok "--version prints version $want_version and the git revision"
+else fail "--version: $(head -c 200 out.txt) $(head -c 200 err.txt)"; fi
+# stderr is a pipe here: progress lines only with --progress, none with --quiet or by default.
+prog_bench() { "$bin" "$@" bench geodesic --surface icosphere:2 --methods dijkstra,heat \
+  --reference none --sources 2 --out prog.jsonl >out.txt 2>err.txt; }
+if prog_bench --progress && grep -qE '^bench geodesic: [0-9]+/4 ' err.txt &&
+   grep -qE '^bench geodesic: 4/4 .* done$' err.txt && [ "$(wc -l <prog.jsonl)" -eq 4 ]
+then ok "--progress writes progress lines to a pipe"
+else fail "--progress: $(head -c 300 err.txt)"; fi
+if prog_bench --quiet && [ ! -s err.txt ] && [ "$(wc -l <prog.jsonl)" -eq 4 ]
+then ok "--quiet writes no progress"; else fail "--quiet: $(head -c 300 err.txt)"; fi
+if prog_bench && ! grep -q 'bench geodesic:' err.txt
+then ok "no progress on a pipe by default"; else fail "default progress: $(head -c 300 err.txt)"; fi
+expect_fail "--quiet and --progress together" "excludes" "$bin" --quiet --progress bench geodesic \
+  --surface icosphere:1 --out prog2.jsonl
+
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/progress.h>
 #include <tapeline/grading/grading_types.h>
 #include <tapeline/grading/internal/model.h>
 #include <tapeline/pattern/measurement_set.h>
@@ -39,8 +40,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -287,11 +291,43 @@ inline Solution decode(const Model& m, const std::vector<double>& g) {
     return s;
 }
 
+/// Progress of the NSGA-II search: pagmo evolves all generations in one call, so generations are
+/// counted from the fitness evaluations (a population's worth each) once the search starts.
+struct GenerationProgress {
+    Progress progress;
+    std::size_t per_generation;
+    std::atomic<bool> started{false};
+    std::atomic<std::size_t> evaluations{0};
+    std::atomic<double> best_fit{std::numeric_limits<double>::infinity()};
+
+    GenerationProgress(std::size_t generations, std::size_t population)
+        : progress("grade: NSGA-II generations", generations), per_generation(population) {}
+
+    void evaluated(double fit) {
+        if (!started.load(std::memory_order_relaxed) || !progress.enabled()) {
+            return;
+        }
+        double best = best_fit.load(std::memory_order_relaxed);
+        while (fit < best && !best_fit.compare_exchange_weak(best, fit)) {
+        }
+        if (fit < best) {
+            char note[64];
+            std::snprintf(note, sizeof note, "best fit %.3g mm", fit);
+            progress.note(note);
+        }
+        progress.set(evaluations.fetch_add(1, std::memory_order_relaxed) / per_generation);
+    }
+};
+
 struct GradingUdp {
     std::shared_ptr<const Model> model;
+    GenerationProgress* progress = nullptr;  // not owned; null: no progress
 
     pagmo::vector_double fitness(const pagmo::vector_double& g) const {
         const Objectives o = objectives(*model, positions(*model, decode(*model, g)));
+        if (progress) {
+            progress->evaluated(o.fit);
+        }
         return {o.fit, o.style};
     }
     std::pair<pagmo::vector_double, pagmo::vector_double> get_bounds() const {
@@ -437,8 +473,9 @@ inline GradeResult grade_pattern(const tp::Pattern& base, const tp::MeasurementS
 
     if (o.generations > 0) {
         auto tn = std::chrono::steady_clock::now();
-        pagmo::problem prob{GradingUdp{model}};
         std::size_t np = std::max<std::size_t>(8, (o.population + 3) / 4 * 4);
+        GenerationProgress progress(o.generations, np);
+        pagmo::problem prob{GradingUdp{model, &progress}};
         pagmo::population pop(prob, 0, o.seed);
         // Seeds: the base pattern and a uniform scale; the rest random in the bounds, drawn
         // from the population's own seeded generator.
@@ -449,7 +486,9 @@ inline GradeResult grade_pattern(const tp::Pattern& base, const tp::MeasurementS
         }
         pagmo::nsga2 algo(static_cast<unsigned>(o.generations), 0.95, 10., 0.01, 50., o.seed);
         algo.set_bfe(pagmo::bfe{pagmo::thread_bfe{}});
+        progress.started = true;
         pop = algo.evolve(pop);
+        progress.progress.finish();
         rep.evaluations = pop.get_problem().get_fevals();
         const std::vector<std::size_t> front = pagmo::non_dominated_front_2d(pop.get_f());
         std::vector<std::size_t> order(front.begin(), front.end());
