@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -19,8 +20,25 @@
 
 namespace tapeline::internal {
 
+/// Largest mesh or point file read: the soup and the mesh built from it take several times the
+/// file in memory, and line numbers are 32-bit.
+inline constexpr std::uintmax_t max_mesh_file_bytes = std::uintmax_t(2) << 30;
+
 /// The whole file as bytes; a missing or unreadable file is InvalidInput naming the path.
 inline std::string load_file(const std::string& path) {
+    std::error_code fs_ec;
+    const auto status = std::filesystem::status(path, fs_ec);
+    if (std::filesystem::is_directory(status)) {
+        throw InvalidInput(path + ": is a directory, not a file");
+    }
+    if (std::filesystem::is_regular_file(status)) {
+        const std::uintmax_t bytes = std::filesystem::file_size(path, fs_ec);
+        if (!fs_ec && bytes > max_mesh_file_bytes) {
+            throw InvalidInput(
+                path + ": " + std::to_string(bytes >> 20) + " MiB is larger than the " +
+                std::to_string(max_mesh_file_bytes >> 20) + " MiB a mesh or point file may have");
+        }
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         const std::error_code ec(errno, std::generic_category());
