@@ -1,5 +1,7 @@
-// Hostile JSON and XML documents: nesting deep enough to exhaust the stack of a recursive walker,
-// a directory given as a file. Each is refused with one line naming the source.
+// Hostile JSON and XML documents (nesting deep enough to exhaust the stack of a recursive walker,
+// a directory given as a file) and hostile output paths (a missing directory, one path twice, a
+// 255-byte name, temporaries of a killed process). Each refusal is one line naming the path.
+#include <tapeline/core/atomic_write.h>
 #include <tapeline/pattern/internal/json_read.h>
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/measurement_set.h>
@@ -9,11 +11,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <string>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 using namespace tapeline::pattern;
@@ -98,4 +102,91 @@ TEST(HostileDocuments, DirectoryAsDocument) {
     std::filesystem::create_directories(dir);
     const std::string m = invalid_message([&] { read_pattern_json(dir); });
     EXPECT_EQ(m, dir + ": is a directory, not a file");
+}
+
+// --- outputs: checked before anything is written, renamed together
+// --------------------------------
+
+namespace {
+
+std::vector<std::string> files_in(const std::string& dir) {
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        out.push_back(e.path().filename().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string fresh_dir(const std::string& name) {
+    const std::string dir = temp_path(name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+}  // namespace
+
+TEST(HostileOutputs, MissingDirectoryRefusedBeforeAnythingIsWritten) {
+    const std::string dir = fresh_dir("outputs_missing");
+    const std::string m = invalid_message([&] {
+        tapeline::OutputFiles outs({dir + "/g.json", dir + "/nodir/x.svg"});
+    });
+    EXPECT_EQ(m, dir + "/nodir/x.svg: directory " + dir + "/nodir does not exist");
+    EXPECT_TRUE(files_in(dir).empty());
+}
+
+TEST(HostileOutputs, FailureLeavesNoFileAndCommitRenamesAll) {
+    const std::string dir = fresh_dir("outputs_commit");
+    {
+        tapeline::OutputFiles outs({dir + "/a.json", dir + "/b.svg"});
+        outs.write(dir + "/a.json", [](std::ostream& o) { o << "{}"; });
+        EXPECT_EQ(files_in(dir).size(), 1u);  // a temporary, not a.json
+        EXPECT_EQ(files_in(dir)[0].rfind(tapeline::temporary_file_prefix, 0), 0u);
+        // b.svg fails: leaving the scope without commit removes the temporary.
+    }
+    EXPECT_TRUE(files_in(dir).empty());
+    tapeline::OutputFiles outs({dir + "/a.json", dir + "/b.svg"});
+    outs.write(dir + "/a.json", [](std::ostream& o) { o << "{}"; });
+    outs.write(dir + "/b.svg", [](std::ostream& o) { o << "<svg/>"; });
+    outs.commit();
+    EXPECT_EQ(files_in(dir), (std::vector<std::string>{"a.json", "b.svg"}));
+}
+
+TEST(HostileOutputs, SamePathTwiceAndDirectoryAsOutput) {
+    const std::string dir = fresh_dir("outputs_twice");
+    EXPECT_NE(invalid_message([&] {
+                  tapeline::OutputFiles outs({dir + "/a.svg", dir + "/./a.svg"});
+              }).find("given as two different outputs"),
+              std::string::npos);
+    EXPECT_EQ(invalid_message([&] { tapeline::check_output_path(dir); }),
+              dir + ": is a directory; give a file name");
+}
+
+TEST(HostileOutputs, LongNameGetsAShortTemporary) {
+    const std::string dir = fresh_dir("outputs_long");
+    const std::string name = std::string(250, 'n') + ".json";  // 255 bytes: NAME_MAX on Linux
+    tapeline::write_file_atomically(dir + "/" + name, [](std::ostream& o) { o << "{}"; });
+    EXPECT_EQ(files_in(dir), std::vector<std::string>{name});
+    const std::string m =
+        invalid_message([&] { tapeline::check_output_path(dir + "/" + std::string(300, 'n')); });
+    EXPECT_NE(m.find("the file name has 300 bytes, more than the 255"), std::string::npos) << m;
+}
+
+TEST(HostileOutputs, StaleTemporariesOfADeadProcessAreRemoved) {
+    const std::string dir = fresh_dir("outputs_stale");
+    // A PID that is not running: a child that has exited and been reaped.
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::_exit(0);
+    }
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    const std::string stale =
+        std::string(tapeline::temporary_file_prefix) + std::to_string(child) + "-0.json";
+    const std::string alive = std::string(tapeline::temporary_file_prefix) + "1-0.json";
+    std::ofstream(dir + "/" + stale) << "half";
+    std::ofstream(dir + "/" + alive) << "init's";  // PID 1 runs: kept
+    tapeline::write_file_atomically(dir + "/a.json", [](std::ostream& o) { o << "{}"; });
+    EXPECT_EQ(files_in(dir), (std::vector<std::string>{alive, "a.json"}));
 }

@@ -41,6 +41,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -640,6 +641,29 @@ private:
         }
     }
 
+    /// SQLite does not call the busy handler for a change of journal mode, which needs the file
+    /// to itself; processes opening a new file at once wait here instead of failing.
+    void set_wal_mode() {
+        using namespace internal;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int attempt = 0;; ++attempt) {
+            char* err = nullptr;
+            const int rc = sqlite3_exec(db_, "PRAGMA journal_mode=WAL", nullptr, nullptr, &err);
+            sqlite3_free(err);
+            const double waited_ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count();
+            if ((rc != SQLITE_BUSY && rc != SQLITE_LOCKED) ||
+                waited_ms > options_.busy_timeout_ms) {
+                if (rc != SQLITE_OK) {
+                    sql_exec(db_, path_, "PRAGMA journal_mode=WAL");  // throws with the message
+                }
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(std::min(1 + attempt, 20)));
+        }
+    }
+
     void check_identity(int version) const {
         using namespace internal;
         const auto app = std::int32_t(sql_integer(db_, path_, "PRAGMA application_id"));
@@ -689,7 +713,7 @@ private:
             open_report_.version_after = version;
             return;
         }
-        sql_exec(db_, path_, "PRAGMA journal_mode=WAL");
+        set_wal_mode();
         sql_exec(
             db_, path_,
             options_.synchronous_full ? "PRAGMA synchronous=FULL" : "PRAGMA synchronous=NORMAL");

@@ -11,6 +11,7 @@
 #include <tapeline/core/errors.h>
 #include <tapeline/pattern/pattern.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -276,24 +277,24 @@ inline ValidationReport validate(const Pattern& pattern, const ValidationOptions
                             fmt_mm(length(edges[i])) + " mm");
             }
         }
-        if (closed) {
-            const double area =
-                std::abs(signed_area(sample(piece.outline, options.sample_tolerance_mm).points));
-            if (area < options.min_piece_area_mm2) {
-                error("zero_area", piece.name, std::nullopt,
-                      where + ": outline encloses " + fmt_mm(area) + " mm2, less than " +
-                          fmt_mm(options.min_piece_area_mm2) + " mm2");
-                continue;
-            }
+        if (!closed) {
+            continue;
         }
-        if (closed && options.check_self_intersection) {
-            const OutlinePolyline poly = sample(piece.outline, options.sample_tolerance_mm);
+        const OutlinePolyline poly = sample(piece.outline, options.sample_tolerance_mm);
+        if (options.check_self_intersection) {
             if (const auto x = internal::first_crossing(poly)) {
                 error("self_intersection", piece.name, x->edge_a,
                       where + ": outline crosses itself: edge " + std::to_string(x->edge_a) +
                           " meets edge " + std::to_string(x->edge_b) + " near " +
                           fmt_point(x->where) + " mm");
+                continue;  // the lobes' signed areas cancel: the area says nothing more
             }
+        }
+        const double area = std::abs(signed_area(poly.points));
+        if (area < options.min_piece_area_mm2) {
+            error("zero_area", piece.name, std::nullopt,
+                  where + ": outline encloses " + fmt_mm(area) + " mm2, less than " +
+                      fmt_mm(options.min_piece_area_mm2) + " mm2");
         }
     }
 

@@ -24,21 +24,27 @@ namespace tapeline::internal {
 /// file in memory, and line numbers are 32-bit.
 inline constexpr std::uintmax_t max_mesh_file_bytes = std::uintmax_t(2) << 30;
 
-/// The whole file as bytes; a missing or unreadable file is InvalidInput naming the path.
-inline std::string load_file(const std::string& path) {
-    std::error_code fs_ec;
-    const auto status = std::filesystem::status(path, fs_ec);
+/// Refuses a directory, and a regular file larger than `max_bytes` (`what`: "a mesh file", ...),
+/// before anything is read.
+inline void check_input_file(const std::string& path, std::uintmax_t max_bytes, const char* what) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
     if (std::filesystem::is_directory(status)) {
         throw InvalidInput(path + ": is a directory, not a file");
     }
     if (std::filesystem::is_regular_file(status)) {
-        const std::uintmax_t bytes = std::filesystem::file_size(path, fs_ec);
-        if (!fs_ec && bytes > max_mesh_file_bytes) {
-            throw InvalidInput(
-                path + ": " + std::to_string(bytes >> 20) + " MiB is larger than the " +
-                std::to_string(max_mesh_file_bytes >> 20) + " MiB a mesh or point file may have");
+        const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+        if (!ec && bytes > max_bytes) {
+            throw InvalidInput(path + ": " + std::to_string(bytes >> 20) +
+                               " MiB is larger than the " + std::to_string(max_bytes >> 20) +
+                               " MiB " + what + " may have");
         }
     }
+}
+
+/// The whole file as bytes; a missing or unreadable file is InvalidInput naming the path.
+inline std::string load_file(const std::string& path) {
+    check_input_file(path, max_mesh_file_bytes, "a mesh or point file");
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         const std::error_code ec(errno, std::generic_category());

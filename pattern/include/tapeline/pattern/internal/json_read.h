@@ -3,17 +3,16 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/internal/text_scan.h>
 #include <tapeline/pattern/geometry.h>
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <system_error>
 
 namespace tapeline::pattern::internal {
 
@@ -26,19 +25,7 @@ inline constexpr std::size_t max_json_depth = 256;
 inline constexpr std::uintmax_t max_document_bytes = std::uintmax_t(256) << 20;
 
 inline std::string read_text_file(const std::string& path) {
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (std::filesystem::is_directory(status)) {
-        throw InvalidInput(path + ": is a directory, not a file");
-    }
-    if (std::filesystem::is_regular_file(status)) {
-        const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
-        if (!ec && bytes > max_document_bytes) {
-            throw InvalidInput(
-                path + ": " + std::to_string(bytes >> 20) + " MiB is larger than the " +
-                std::to_string(max_document_bytes >> 20) + " MiB a JSON or XML document may have");
-        }
-    }
+    tapeline::internal::check_input_file(path, max_document_bytes, "a JSON or XML document");
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         throw InvalidInput(path + ": cannot open for reading");
