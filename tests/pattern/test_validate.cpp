@@ -209,10 +209,10 @@ TEST(PatternValidate, NoPiecesZeroAreaAndFarCoordinatesAreRefused) {
     flat.name = "flat";
     Piece line;
     line.name = "line";
-    line.outline = polygon({{0, 0}, {100, 0}, {50, 0}});  // closed, but encloses nothing
+    line.outline = polygon({{0, 0}, {100, 0}, {100, 0.001}});  // a sliver of 0.05 mm2
     flat.pieces.push_back(line);
     ASSERT_TRUE(find_issue(validate(flat).errors, "zero_area"));
-    expect_rejected(flat, {"piece 'line'", "encloses 0.000 mm2, less than 1.000 mm2"});
+    expect_rejected(flat, {"piece 'line'", "encloses 0.050 mm2, less than 1.000 mm2"});
 
     Pattern point;
     point.name = "point";
