@@ -89,6 +89,7 @@ void run_grade(const GradeArgs& a) {
     if (a.ease != "proportional" && a.ease != "keep_mm") {
         throw InvalidInput("--ease: unknown mode '" + a.ease + "' (proportional or keep_mm)");
     }
+    OutputFiles outputs({a.out, a.svg, a.dxf, a.pareto, a.rules, a.rul, a.report, a.fit_table});
     tp::Pattern base = load(a);
     tp::require_valid(base);
     const tp::MeasurementSet from = tg::read_measurement_input(a.from, a.from_set);
@@ -201,10 +202,11 @@ void run_grade(const GradeArgs& a) {
         files.push_back({a.fit_table, tg::fit_table(g.report)});
     }
     for (const auto& [path, text] : files) {
-        write_file_atomically(
+        outputs.write(
             path, [&](std::ostream& s) { s.write(text.data(), std::streamsize(text.size())); },
             true);
     }
+    outputs.commit();
     if (a.store) {
         const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
         tp::PatternDatabase database(path, {});

@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "pattern_input.h"
 
+#include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
@@ -21,11 +22,14 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace tapeline::app {
 
 // Defined in pattern_mesh.cpp (CGAL 2D meshing compiles in its own translation unit).
-void export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm);
+/// Returns the line that says what was written (as `shown_as`).
+std::string export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm,
+                                const std::string& shown_as);
 
 namespace tp = tapeline::pattern;
 
@@ -36,13 +40,11 @@ bool is_file(const std::string& path) {
 
 /// Which importer a file needs: by --format, or recognised from its JSON keys.
 std::string detect_format(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) {
-        throw InvalidInput(path + ": cannot open file");
-    }
+    const std::string text = tp::internal::read_text_file(path);
+    tp::internal::check_json_depth(text, path);
     nlohmann::json j;
     try {
-        in >> j;
+        j = nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {
         throw InvalidInput(path + ": not valid JSON (" + std::string(e.what()) +
                            "); give --format for other files");
@@ -85,6 +87,15 @@ std::string db_path(const std::string& given) {
     return given.empty() ? tp::default_pattern_database_path() : given;
 }
 
+/// Says when a read-only open had to fall back to SQLite's `immutable` mode.
+void note_read_only_open(const tp::PatternDatabase& database) {
+    if (database.open_report().immutable) {
+        std::cerr << "tapeline: note: " << database.path()
+                  << ": opened immutable (its WAL index cannot be created beside it), so changes "
+                     "other processes make meanwhile are not seen\n";
+    }
+}
+
 /// NAME in the database, or a pattern file when NAME is an existing file.
 tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
                          const std::string& format) {
@@ -100,6 +111,7 @@ tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
                            path + " (import one with `tapeline pattern import`)");
     }
     tp::PatternDatabase database(path, options);
+    note_read_only_open(database);
     return database.load(name_or_file);
 }
 
@@ -139,10 +151,11 @@ void run_import(const ImportArgs& a) {
             }
         }
     }
+    tp::StoreOptions options;
+    options.replace = a.replace;
+    const std::vector<tp::StoreReport> reports = database.store_all(patterns, options);
     for (std::size_t i = 0; i < patterns.size(); ++i) {
-        tp::StoreOptions options;
-        options.replace = a.replace;
-        const tp::StoreReport r = database.store(patterns[i], options);
+        const tp::StoreReport& r = reports[i];
         std::cout << (r.replaced ? "replaced " : "stored ") << patterns[i].name << " ("
                   << patterns[i].pieces.size() << " pieces, " << patterns[i].seams.size()
                   << " seams; geometry " << r.compression.stored_bytes << " bytes, "
@@ -167,6 +180,7 @@ void run_list(const ListArgs& a) {
     options.read_only = true;
     options.create = false;
     tp::PatternDatabase database(path, options);
+    note_read_only_open(database);
     tp::PatternQuery q = a.query;
     std::stringstream ss(a.tags);
     for (std::string t; std::getline(ss, t, ',');) {
@@ -236,29 +250,34 @@ void run_export(const ExportArgs& a) {
     if (a.svg.empty() && a.png.empty() && a.dxf.empty() && a.json.empty() && a.mesh.empty()) {
         throw InvalidInput("give at least one of --svg, --png, --dxf, --json, --mesh");
     }
+    // Every output is checked before any is written, and all are renamed into place together.
+    OutputFiles outputs({a.svg, a.png, a.dxf, a.json, a.mesh});
     const tp::Pattern p = load_pattern(a.name, a.db, a.format);
     tp::require_valid(p, {}, a.name);
+    std::ostringstream said;
     if (!a.svg.empty()) {
-        tp::write_svg(p, a.svg);
-        std::cout << "wrote " << a.svg << '\n';
+        tp::write_svg(p, outputs.temporary(a.svg));
+        said << "wrote " << a.svg << '\n';
     }
     if (!a.png.empty()) {
         tp::PngOptions options;
         options.pixels_per_mm = a.pixels_per_mm;
-        const tp::PngReport r = tp::write_png(p, a.png, options);
-        std::cout << "wrote " << a.png << " (" << r.width_px << " x " << r.height_px << " px)\n";
+        const tp::PngReport r = tp::write_png(p, outputs.temporary(a.png), options);
+        said << "wrote " << a.png << " (" << r.width_px << " x " << r.height_px << " px)\n";
     }
     if (!a.dxf.empty()) {
-        const tp::DxfReport r = tp::write_dxf(p, a.dxf);
-        std::cout << "wrote " << a.dxf << " (DXF-AAMA, " << r.blocks << " piece blocks)\n";
+        const tp::DxfReport r = tp::write_dxf(p, outputs.temporary(a.dxf));
+        said << "wrote " << a.dxf << " (DXF-AAMA, " << r.blocks << " piece blocks)\n";
     }
     if (!a.json.empty()) {
-        tp::write_pattern_json(p, a.json);
-        std::cout << "wrote " << a.json << '\n';
+        tp::write_pattern_json(p, outputs.temporary(a.json));
+        said << "wrote " << a.json << '\n';
     }
     if (!a.mesh.empty()) {
-        export_pattern_mesh(p, a.mesh, a.edge_mm);
+        said << export_pattern_mesh(p, outputs.temporary(a.mesh), a.edge_mm, a.mesh);
     }
+    outputs.commit();
+    std::cout << said.str();
 }
 
 }  // namespace

@@ -101,6 +101,9 @@ struct PointCloudDistanceReport {
     double sample_spacing = 0;
     std::size_t nodes = 0;       ///< non-empty cells
     std::size_t node_edges = 0;  ///< pairs of neighbouring non-empty cells
+    /// Grid components joined through their closest k-nearest-neighbour pair (sampling sparser
+    /// than the cell somewhere); 0 when the grid of non-empty cells was connected.
+    std::size_t bridged_components = 0;
     std::size_t window = 0;
     std::string projection;
     std::string knn;                  ///< the backend used: "cgal" or "nanoflann"

@@ -43,6 +43,10 @@ struct Element {
     }
 };
 
+/// Deepest element nesting accepted: measurement files and our SVG stay under 10 levels, and both
+/// the parser and the tree's destructor recurse once per level.
+inline constexpr std::size_t max_depth = 256;
+
 namespace internal {
 
 class Parser {
@@ -71,6 +75,7 @@ private:
     std::size_t pos_ = 0;
     std::size_t line_ = 1;
     std::size_t line_start_ = 0;
+    std::size_t depth_ = 0;
 
     [[noreturn]] void fail(const std::string& what) const {
         throw InvalidInput(source_ + ":" + std::to_string(line_) + ":" +
@@ -269,7 +274,11 @@ private:
             } else if (starts("<!")) {
                 fail("unexpected markup declaration");
             } else if (s_[pos_] == '<') {
+                if (++depth_ >= max_depth) {
+                    fail("elements nested deeper than " + std::to_string(max_depth) + " levels");
+                }
                 el.children.push_back(parse_element());
+                --depth_;
             } else if (s_[pos_] == '&') {
                 parse_reference(el.text);
             } else {

@@ -35,6 +35,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <queue>
 #include <string>
 #include <unordered_map>
@@ -234,6 +235,17 @@ inline void prepare(Prepared& pr, const PointCloudDistanceOptions& o, const char
             pr.origin[c] = std::min(pr.origin[c], pr.xyz[D * i + c]);
             hi[c] = std::max(hi[c], pr.xyz[D * i + c]);
         }
+    if (o.cell_size > 0) {
+        double diagonal2 = 0;
+        for (std::size_t c = 0; c < D; ++c)
+            diagonal2 += (hi[c] - pr.origin[c]) * (hi[c] - pr.origin[c]);
+        // Fewer than ~10 cells across leaves paths no room to bend: the distances would be
+        // straight chords through the shape.
+        if (pr.cell > 0.1 * std::sqrt(diagonal2))
+            bad("cell size " + std::to_string(pr.cell) + " is more than a tenth of the extent of " +
+                "the points (bounding-box diagonal " + std::to_string(std::sqrt(diagonal2)) +
+                "): distances would be straight chords; give a smaller cell or 0 (automatic)");
+    }
     // Mixed-radix key of the integer cell coordinates: exact (no collisions) while the grid has
     // fewer than 2^62 cells.
     std::vector<std::uint64_t> radix(D), stride(D);
@@ -306,6 +318,68 @@ inline void prepare(Prepared& pr, const PointCloudDistanceOptions& o, const char
         }
         std::sort(adj[v].begin(), adj[v].end());
     }
+    // Components of the node graph.
+    std::vector<std::uint32_t> component(nodes, kNone);
+    auto label_components = [&] {
+        component.assign(nodes, kNone);
+        std::uint32_t label = 0;
+        std::vector<std::uint32_t> stack;
+        for (std::size_t s = 0; s < nodes; ++s) {
+            if (component[s] != kNone)
+                continue;
+            stack.assign(1, static_cast<std::uint32_t>(s));
+            component[s] = label;
+            while (!stack.empty()) {
+                const std::uint32_t v = stack.back();
+                stack.pop_back();
+                for (const std::uint32_t w : adj[v])
+                    if (component[w] == kNone) {
+                        component[w] = label;
+                        stack.push_back(w);
+                    }
+            }
+            ++label;
+        }
+        return label;
+    };
+    // Where sampling is sparser than the cell size (the cell is a median spacing), a connected
+    // surface can leave cells with no non-empty cell around them. The k-nearest-neighbour graph
+    // still joins them: its shortest pairs between different grid components become node edges
+    // (Kruskal over the components, so a grid graph that is already connected is unchanged and
+    // only truly separate pieces stay separate).
+    if (label_components() > 1) {
+        struct Pair {
+            double d2;
+            std::uint32_t a, b;
+        };
+        std::vector<Pair> pairs;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 1; j < pr.d; ++j) {
+                const std::uint32_t q = pr.knn[i * pr.d + j];
+                const std::uint32_t a = pr.point_node[i], b = pr.point_node[q];
+                if (component[a] != component[b])
+                    pairs.push_back({d2[i * pr.d + j], a, b});
+            }
+        std::sort(pairs.begin(), pairs.end(),
+                  [](const Pair& x, const Pair& y) { return x.d2 < y.d2; });
+        std::vector<std::uint32_t> parent(nodes);
+        std::iota(parent.begin(), parent.end(), 0u);
+        auto find = [&](std::uint32_t c) {
+            while (parent[c] != c)
+                c = parent[c] = parent[parent[c]];
+            return c;
+        };
+        for (const Pair& e : pairs) {
+            const std::uint32_t ca = find(component[e.a]), cb = find(component[e.b]);
+            if (ca == cb)
+                continue;
+            parent[ca] = cb;
+            adj[e.a].insert(std::lower_bound(adj[e.a].begin(), adj[e.a].end(), e.b), e.b);
+            adj[e.b].insert(std::lower_bound(adj[e.b].begin(), adj[e.b].end(), e.a), e.a);
+            ++r.bridged_components;
+        }
+        label_components();
+    }
     pr.adj_start.assign(nodes + 1, 0);
     for (std::size_t v = 0; v < nodes; ++v)
         pr.adj_start[v + 1] = pr.adj_start[v] + static_cast<std::uint32_t>(adj[v].size());
@@ -313,26 +387,7 @@ inline void prepare(Prepared& pr, const PointCloudDistanceOptions& o, const char
     pr.adj.reserve(pr.adj_start[nodes]);
     for (auto& a : adj)
         pr.adj.insert(pr.adj.end(), a.begin(), a.end());
-    // Components of the node graph.
-    pr.component.assign(nodes, kNone);
-    std::uint32_t label = 0;
-    std::vector<std::uint32_t> stack;
-    for (std::size_t s = 0; s < nodes; ++s) {
-        if (pr.component[s] != kNone)
-            continue;
-        stack.assign(1, static_cast<std::uint32_t>(s));
-        pr.component[s] = label;
-        while (!stack.empty()) {
-            const std::uint32_t v = stack.back();
-            stack.pop_back();
-            for (std::uint32_t j = pr.adj_start[v]; j < pr.adj_start[v + 1]; ++j)
-                if (pr.component[pr.adj[j]] == kNone) {
-                    pr.component[pr.adj[j]] = label;
-                    stack.push_back(pr.adj[j]);
-                }
-        }
-        ++label;
-    }
+    pr.component = std::move(component);
     r.nodes = nodes;
     r.node_edges = pr.adj.size() / 2;
     r.grid_seconds = since(tg);

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/internal/text_scan.h>
 #include <tapeline/pattern/geometry.h>
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -16,7 +18,14 @@ namespace tapeline::pattern::internal {
 
 using Json = nlohmann::json;
 
+/// Deepest nesting of arrays and objects accepted: real pattern and measurement files stay under
+/// 20 levels, and code that walks a parsed document (dump, conversions) recurses once per level.
+inline constexpr std::size_t max_json_depth = 256;
+/// Largest JSON or XML document read: the parsed tree takes several times the text in memory.
+inline constexpr std::uintmax_t max_document_bytes = std::uintmax_t(256) << 20;
+
 inline std::string read_text_file(const std::string& path) {
+    tapeline::internal::check_input_file(path, max_document_bytes, "a JSON or XML document");
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         throw InvalidInput(path + ": cannot open for reading");
@@ -29,8 +38,35 @@ inline std::string read_text_file(const std::string& path) {
     return ss.str();
 }
 
+/// Refuses text whose arrays and objects nest deeper than max_json_depth, before parsing it.
+inline void check_json_depth(const std::string& text, const std::string& source) {
+    std::size_t depth = 0;
+    bool in_string = false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (in_string) {
+            if (c == '\\') {
+                ++i;
+            } else if (c == '"') {
+                in_string = false;
+            }
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > max_json_depth) {
+                throw InvalidInput(source + ": JSON nested deeper than " +
+                                   std::to_string(max_json_depth) + " levels at byte " +
+                                   std::to_string(i));
+            }
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+}
+
 /// Parses JSON text; a syntax error (truncated file, NaN literal, ...) names the source and byte.
 inline Json parse_json(const std::string& text, const std::string& source) {
+    check_json_depth(text, source);
     try {
         return Json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
