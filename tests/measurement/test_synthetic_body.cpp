@@ -90,20 +90,27 @@ TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
         EXPECT_NEAR(body.arm_parameter(sign, e), SyntheticBody::kElbowT, 6.0) << s;
         EXPECT_NEAR(body.arm_parameter(sign, w), SyntheticBody::kWristT, 6.0) << s;
         // Acromion: the corner of the flat shoulder (the torso's top cap, y = 1400, half-width
-        // torso_a(1400)) where the outline drops to the arm; found on sagittal planes a scan
-        // step apart, in the middle of the cap's flat top (z = 0 by symmetry).
+        // torso_a(1400)) where the outline drops to the arm, in the middle of the cap's flat top
+        // (z = 0 by symmetry). The finder samples the outline on sagittal planes a scan step
+        // apart and moves the farthest sample to the vertex of a parabola fitted over 3 samples
+        // each side, which suits a round shoulder; on this sharp 90-degree rim it lands up to
+        // those 3 samples inside the corner (measured 14.4 mm at both resolutions), so 4 steps.
         const Vec3 ac = *r.landmarks.point("acromion_" + s);
-        EXPECT_NEAR(sign * ac[0], body.torso_half_width(SyntheticBody::kShoulder), step) << s;
+        EXPECT_NEAR(sign * ac[0], body.torso_half_width(SyntheticBody::kShoulder), 4 * step) << s;
+        EXPECT_LE(sign * ac[0], body.torso_half_width(SyntheticBody::kShoulder)) << s;
         EXPECT_NEAR(ac[1], SyntheticBody::kShoulder, 0.5) << s;
         EXPECT_NEAR(ac[2], 0, 0.5) << s;
         // Bust point: the most forward point of the torso outside the central tenth of its
         // width, at the bust maximum (1180): on the section's ellipse, at most one vertex step
-        // (2 pi / n around) from x = 0.1 a, so z within b (1 - cos(2 pi / n)) of 0.995 b.
+        // (2 pi / n around) from x = 0.1 a, so z within b (1 - cos(2 pi / n)) of 0.995 b. The
+        // maximum is flat in height (zero slope), and between two rings of the mesh the section
+        // crosses the diagonal edges nearer the central tenth: the level is resolved to a ring
+        // step plus a scan step (measured 13.3 mm coarse, 4.7 mm fine).
         const Vec3 bp = *r.landmarks.point("bust_" + s);
         const double a = body.torso_half_width(SyntheticBody::kBust);
         const double b = body.torso_depth(SyntheticBody::kBust);
         const double angle = 2 * M_PI / GetParam().options.around;
-        EXPECT_NEAR(bp[1], SyntheticBody::kBust, step) << s;
+        EXPECT_NEAR(bp[1], SyntheticBody::kBust, GetParam().options.ring_step + step) << s;
         EXPECT_GT(sign * bp[0], 0.1 * a - 0.5) << s;
         EXPECT_LT(sign * bp[0], 0.1 * a + a * std::sin(angle) + 0.5) << s;
         EXPECT_NEAR(bp[2], 0.995 * b, b * (1 - std::cos(angle)) + 0.5) << s;

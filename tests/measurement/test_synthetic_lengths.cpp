@@ -45,10 +45,14 @@ const Resolution kResolutions[] = {{"coarse", {40, 10, 40}}, {"fine", {96, 4, 40
 constexpr int kExactCheckedAround = 40;
 const std::vector<std::string> kNoClosedForm = {"hps_to_bust", "hps_to_waist_back",
                                                 "shoulder_to_elbow"};
-// The curvature-flow length against the truth: exact MMP matches the truth to 0.05 mm, and the
-// flow's path exceeds exact MMP by at most kFlowExcess (measured: see the printout).
-constexpr double kFlowExcess = 1.0;
-constexpr double kLengthTolerance = 0.05 + kFlowExcess;
+// The measured lengths against the closed-form truth: measured within 0.148 mm (coarse) and
+// 0.116 mm (fine); the truth is resolved to 0.05 mm (exact MMP between the same end points): 0.3.
+constexpr double kLengthTolerance = 0.3;
+// The curvature-flow segment against exact MMP between the same points: equal to 1e-3 mm on every
+// segment but one; on the coarse mesh the outseam's flow settles on a locally shortest path over
+// the leg's top cap 0.84 mm longer (measured), so 1 mm there and 0.01 mm elsewhere.
+constexpr double kFlowExcess = 0.01;
+constexpr double kOutseamExcess = 1.0;
 
 const SyntheticLengths& measured(const SyntheticBodyOptions& o) {
     static std::map<std::pair<int, double>, SyntheticLengths> cache;
@@ -246,11 +250,12 @@ TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
         EXPECT_NEAR(std::max(y0, y1), e.top, step) << e.name;
         EXPECT_NEAR(std::min(y0, y1), e.bottom, step) << e.name;
     }
-    // The shoulder widths end at the acromions: the corners of the flat cap, x = +-torso_a(1400).
+    // The shoulder widths end at the acromions: the corners of the flat cap, x = +-torso_a(1400),
+    // found up to 3 outline samples inside the sharp corner (test_synthetic_body.cpp): 4 steps.
     for (const char* name : {"shoulder_width_back", "across_back_shoulder_width"}) {
         for (const auto* s : segments(r, name)) {
             const double x = std::max(std::abs(s->from[0]), std::abs(s->to[0]));
-            EXPECT_NEAR(x, body.torso_half_width(SyntheticBody::kShoulder), step) << name;
+            EXPECT_NEAR(x, body.torso_half_width(SyntheticBody::kShoulder), 4 * step) << name;
         }
     }
     // The end points lie in the symmetry plane the truth assumes.
@@ -301,26 +306,31 @@ TEST_P(SyntheticLengthsTest, InvariantsAndLeftRightSymmetry) {
 // Every segment against the exact polyhedral distance between the same points (exact MMP): all
 // of them on the coarse mesh, those of the lengths without a closed form (the arm over the
 // shoulder, HPS to bust and to waist) on the fine one. The on-mesh path is never shorter than
-// exact (it is a path on the faces) and exceeds it by at most kFlowExcess.
+// exact (it is a path on the faces) and exceeds it by at most kFlowExcess (kOutseamExcess).
 TEST_P(SyntheticLengthsTest, EverySegmentAgreesWithExactMmp) {
     const SyntheticLengths& r = measured(GetParam().options);
     ASSERT_FALSE(r.segments.empty());
     double worst = 0;
-    std::size_t checked = 0;
+    std::size_t checked = 0, segments_with_length = 0;
     for (const auto& s : r.segments) {
+        segments_with_length += s.euclidean >= 1e-9;
         if (s.euclidean < 1e-9 || s.exact < 0) {
             continue;  // a zero-length segment, or one left to the coarse mesh
         }
         ++checked;
         ASSERT_GT(s.exact, 0) << s.measurement;
         EXPECT_GE(s.gcf, s.exact * (1 - 1e-9)) << s.measurement;
-        EXPECT_LE(s.gcf - s.exact, kFlowExcess) << s.measurement;
+        EXPECT_LE(s.gcf - s.exact, s.measurement == "outseam" ? kOutseamExcess : kFlowExcess)
+            << s.measurement;
         worst = std::max(worst, s.gcf - s.exact);
         std::printf("%s %-27s segment gcf %8.3f exact %8.3f  %+7.3f mm\n", GetParam().name,
                     s.measurement.c_str(), s.gcf, s.exact, s.gcf - s.exact);
     }
     std::printf("%s worst segment excess over exact MMP %.3f mm\n", GetParam().name, worst);
-    EXPECT_GE(checked, GetParam().options.around == kExactCheckedAround ? 20u : 3u);
+    if (GetParam().options.around == kExactCheckedAround)
+        EXPECT_EQ(checked, segments_with_length);
+    else
+        EXPECT_GE(checked, kNoClosedForm.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(Resolutions, SyntheticLengthsTest, ::testing::ValuesIn(kResolutions),
