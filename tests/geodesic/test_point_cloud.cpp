@@ -139,9 +139,9 @@ TEST(PointCloud, SphereAgainstGreatCircleCleanAndNoisy) {
                 // Against the clean truth the noise floor (0.26 %, 1.3 %) dominates: measured
                 // 3.5e-3 and 1.6e-2, bounded at 1.5x (3x the margin above the floor). Against
                 // the noisy points' own great circles, what is left is the method's: measured
-                // NOISY_OWN.
+                // 1.1e-3 / 1.2e-3 (0.1 %, mls / plane) and 3.8e-3 / 2.1e-3 (0.5 %), about 3x.
                 EXPECT_LE(e.mean, noise < 0.002 ? 5e-3 : 2.4e-2) << what;
-                EXPECT_LE(en.mean, noise < 0.002 ? 5e-3 : 2.4e-2) << what;
+                EXPECT_LE(en.mean, noise < 0.002 ? 3.5e-3 : 1.2e-2) << what;
             }
         }
     }
@@ -189,10 +189,11 @@ TEST(PointCloud, SphereInR5AgainstGreatCircle) {
     const Errors e35 = relative_errors(f5.d, f3.d, 3 * f3.report.cell_size);
     std::printf("[ gcf-pts  ] R^5 against R^3, point by point: mean %.2e max %.2e\n", e35.mean,
                 e35.max);
-    // Both are within the method's error of the same truth, and of each other point by point
-    // (measured R5_VS_R3): the embedding changes the grid, not the surface.
-    EXPECT_LE(e3.mean, 1e-2);
-    EXPECT_LE(e35.mean, 1e-2);
+    // Both are within the method's error of the same truth (R^3 measured 2.4e-4 mean, as R^5),
+    // and of each other point by point (measured 1.2e-4 mean): the embedding changes the grid,
+    // not the surface. About 3x each.
+    EXPECT_LE(e3.mean, 7e-4);
+    EXPECT_LE(e35.mean, 4e-4);
 }
 
 TEST(PointCloud, SwissRollAgainstUnrolledPlane) {
