@@ -301,9 +301,10 @@ TEST(CurvatureFlow, UnreachableIsAValue) {
 // A reused GeodesicPathSolver answers each query as the one-shot function does, and the three
 // Eigen solvers of the flow step reach the same path. Their times are the benchmark's
 // (benchmarks/run_gcf.sh), not a unit test's (DESIGN.md §7). Tolerances: the same deterministic
-// flow gives the same path, 1e-12 relative (rounding only); the three solvers solve the same
-// least-squares step exactly (LDLT, QR) or to LSCG's tolerance, and the flow stops at 1e-7 of
-// its own tolerance: measured agreement kReuseAndSolvers below.
+// flow gives the same path, 1e-12 relative (rounding only); sparse QR solves the same
+// least-squares step as LDLT (measured: the same length to the last digit, 1e-9); LSCG solves it
+// iteratively, takes other steps and stops elsewhere inside the flow's own tolerance (measured
+// 26 iterations against 18, length +8.8e-8 relative): 3e-7.
 TEST(CurvatureFlow, ReusedSolverAndTheEigenSolversAgreeWithTheOneShotPath) {
     const tg::Soup soup = tg::surface("icosphere:5");
     const std::size_t a = 0;
@@ -337,7 +338,8 @@ TEST(CurvatureFlow, ReusedSolverAndTheEigenSolversAgreeWithTheOneShotPath) {
         std::printf("[ gcf      ] icosphere:5 150 deg solver %-18s %zu it, on-mesh %.12f (%+.1e)\n",
                     r.report.solver.c_str(), r.report.iterations, r.on_mesh.length,
                     rel(r.on_mesh.length, ref.on_mesh.length));
-        EXPECT_NEAR(r.on_mesh.length, ref.on_mesh.length, 1e-9 * ref.on_mesh.length)
+        const double rel_tol = s == tg::CurvatureFlowSolver::eigen_lscg ? 3e-7 : 1e-9;
+        EXPECT_NEAR(r.on_mesh.length, ref.on_mesh.length, rel_tol * ref.on_mesh.length)
             << r.report.solver;
     }
 }
@@ -588,7 +590,8 @@ TEST(CurvatureFlow, ParallelPathsEqualSequential) {
 // on a farther locally shortest path: it is then still a polyhedral geodesic, straight in its own
 // unfolding where it passes no vertex (1e-9 relative), and never shorter than the exact path.
 TEST(CurvatureFlow, StraightenedPathIsTheExactDistanceInItsClass) {
-    // A farther locally shortest path from the Dijkstra start: measured worst gap DIJKSTRA_GAP.
+    // From the Dijkstra start the flow may settle on a farther locally shortest path: bounded by
+    // the 3 % this file allows any converged on-mesh path above the exact distance.
     constexpr double kDijkstraGap = 3e-2;
     struct Case {
         const char* name;
