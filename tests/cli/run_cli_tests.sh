@@ -709,7 +709,7 @@ expect_ok "grade --store --db" "$bin" grade "$fs" "${quick[@]}" --out st.json --
 name=$($py -c 'import json; print(json.load(open("st.json"))["name"])')
 expect_ok "stored graded pattern listed" "$bin" pattern list --db g.sqlite
 grep -q "^$name" out.txt && ok "database lists the graded pattern '$name'" || fail "not stored: $(cat out.txt)"
-expect_fail "grade --store twice" "--replace" "$bin" grade "$fs" "${quick[@]}" --out st2.json --store --db g.sqlite
+expect_fail "grade --store twice" "is already stored" "$bin" grade "$fs" "${quick[@]}" --out st2.json --store --db g.sqlite
 expect_ok "grade --store --replace" "$bin" grade "$fs" "${quick[@]}" --out st3.json --store --replace --db g.sqlite
 expect_ok "export the stored pattern" "$bin" pattern export "$name" --db g.sqlite --json st_db.json
 $py - <<'PY' && ok "stored pattern = written pattern" || fail "stored pattern differs"
