@@ -590,9 +590,9 @@ TEST(CurvatureFlow, ParallelPathsEqualSequential) {
 // on a farther locally shortest path: it is then still a polyhedral geodesic, straight in its own
 // unfolding where it passes no vertex (1e-9 relative), and never shorter than the exact path.
 TEST(CurvatureFlow, StraightenedPathIsTheExactDistanceInItsClass) {
-    // From the Dijkstra start the flow may settle on a farther locally shortest path: bounded by
-    // the 3 % this file allows any converged on-mesh path above the exact distance.
-    constexpr double kDijkstraGap = 3e-2;
+    // From the Dijkstra start the flow may settle on a farther locally shortest path: measured
+    // worst +2.4e-7 (icosphere:5), +5.7e-6 (icosphere:6), +3.5e-7 (spot); about 3.5x.
+    constexpr double kDijkstraGap = 2e-5;
     struct Case {
         const char* name;
         tg::Soup soup;
