@@ -56,10 +56,13 @@ TEST(MeasurementInput, MeasureJsonKeepsBothNames) {
 }
 
 TEST(MeasurementInput, FreeSewingSetsFileNeedsASetName) {
+    const std::string sets =
+        std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json";
+    if (!std::ifstream(sets))
+        GTEST_SKIP() << sets << " absent";
     const auto m = tapeline_test::freesewing_set("cisFemaleAdult42");
     EXPECT_DOUBLE_EQ(*m.get("chest"), 1143);
-    const std::string path =
-        std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json";
+    const std::string& path = sets;
     EXPECT_THROW(tapeline_test::read_measurement_input(path), tapeline::InvalidInput);
     EXPECT_THROW(tapeline_test::read_measurement_input(path, "nope"), tapeline::InvalidInput);
 }
@@ -67,7 +70,15 @@ TEST(MeasurementInput, FreeSewingSetsFileNeedsASetName) {
 TEST(MeasurementInput, SeamlyIndividualFile) {
     const auto m = tapeline_test::read_measurement_input(std::string(TAPELINE_DATA_DIR) +
                                                          "/patterns/example_individual.vit");
-    EXPECT_FALSE(m.values.empty());
+    // The file is in cm: every value scaled to mm, Seamly2D names with their FreeSewing aliases,
+    // the angle left as it is.
+    EXPECT_DOUBLE_EQ(*m.get("height"), 1659);
+    EXPECT_DOUBLE_EQ(*m.get("bust_circ"), 979);
+    EXPECT_DOUBLE_EQ(*m.get("chest"), 979);
+    EXPECT_DOUBLE_EQ(*m.get("waist_circ"), 788);
+    EXPECT_DOUBLE_EQ(*m.get("waist"), 788);
+    EXPECT_DOUBLE_EQ(*m.get("hip_circ"), 953);
+    EXPECT_DOUBLE_EQ(*m.get("seat"), 953);
 }
 
 // A .vit as `tapeline measure --vit` writes it: Seamly2D known names, and "@" + our name where

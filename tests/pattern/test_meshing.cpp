@@ -198,7 +198,7 @@ TEST(PatternMeshing, EverySharedPattern) {
     const std::vector<std::string> fs = shared_pattern_files("freesewing");
     files.insert(files.end(), fs.begin(), fs.end());
     if (files.empty()) {
-        GTEST_SKIP() << "shared pattern data absent";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     MeshingOptions o;
     o.target_edge_mm = 10;

@@ -190,7 +190,7 @@ TEST(PatternPng, EverySharedPattern) {
         }
     }
     if (files.empty()) {
-        GTEST_SKIP() << "shared pattern data absent";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     tapeline_test::TempDir dir;
     for (const std::string& f : files) {
