@@ -14,7 +14,7 @@
 namespace {
 
 using namespace tapeline::sizes;
-using tapeline_test::sizes::TempDir;
+using tapeline_test::TempDir;
 
 MeasurementSet read_back(const nlohmann::ordered_json& doc, const std::string& path) {
     return parse_measurement_json(tapeline::json::parse_json(doc.dump(1), path), path);

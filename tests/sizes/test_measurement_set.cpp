@@ -12,7 +12,7 @@
 
 using namespace tapeline::sizes;
 namespace xml = tapeline::xml;
-using tapeline_test::sizes::TempDir;
+using tapeline_test::TempDir;
 
 namespace {
 

@@ -95,21 +95,10 @@ struct LandmarkSet {
     }
 };
 
-enum class MeasurementKind { girth, length, height, angle };
-
-inline const char* to_string(MeasurementKind k) {
-    switch (k) {
-        case MeasurementKind::girth:
-            return "girth";
-        case MeasurementKind::length:
-            return "length";
-        case MeasurementKind::height:
-            return "height";
-        case MeasurementKind::angle:
-            break;
-    }
-    return "angle";
-}
+/// The catalogue's kinds; a measurement is taken as a girth, a length (also for the catalogue's
+/// widths), a height or an angle.
+using sizes::MeasurementKind;
+using sizes::to_string;
 
 /// One measurement with where it was taken.
 struct Measurement {
