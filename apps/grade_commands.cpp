@@ -13,7 +13,6 @@
 #include <tapeline/grading/compare.h>
 #include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
-#include <tapeline/grading/measurement_input.h>
 #include <tapeline/grading/output.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
@@ -22,6 +21,7 @@
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/svg.h>
 #include <tapeline/pattern/validate.h>
+#include <tapeline/sizes/read_input.h>
 
 #include <nlohmann/json.hpp>
 
@@ -92,8 +92,8 @@ void run_grade(const GradeArgs& a) {
     OutputFiles outputs({a.out, a.svg, a.dxf, a.pareto, a.rules, a.rul, a.report, a.fit_table});
     tp::Pattern base = load(a);
     tp::require_valid(base);
-    const tp::MeasurementSet from = tg::read_measurement_input(a.from, a.from_set);
-    const tp::MeasurementSet to = tg::read_measurement_input(a.to, a.to_set);
+    const sizes::MeasurementSet from = sizes::read_measurement_input(a.from, a.from_set);
+    const sizes::MeasurementSet to = sizes::read_measurement_input(a.to, a.to_set);
     std::vector<tg::SeamSpec> seams;
     std::vector<std::string> skipped_seams;
     if (!a.no_fs_bindings && base.designer == "FreeSewing") {

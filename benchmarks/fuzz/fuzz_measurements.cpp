@@ -2,7 +2,7 @@
 // readers; the first byte picks the format.
 #include "fuzz_target.h"
 
-#include <tapeline/pattern/measurement_set.h>
+#include <tapeline/sizes/seamly.h>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size == 0) {
@@ -10,9 +10,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return tapeline_fuzz::run(data + 1, size - 1, [&](const std::string& text) {
         if (data[0] % 2 == 0) {
-            tapeline::pattern::parse_seamly_individual(text, "fuzz.vit");
+            tapeline::sizes::parse_seamly_individual(text, "fuzz.vit");
         } else {
-            tapeline::pattern::parse_seamly_multisize(text, "fuzz.vst");
+            tapeline::sizes::parse_seamly_multisize(text, "fuzz.vst");
         }
     });
 }

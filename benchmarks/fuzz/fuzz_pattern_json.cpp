@@ -2,7 +2,7 @@
 // GarmentCode pattern importers with validation; the first byte picks the importer.
 #include "fuzz_target.h"
 
-#include <tapeline/pattern/internal/json_read.h>
+#include <tapeline/core/json_read.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return tapeline_fuzz::run(data + 1, size - 1, [&](const std::string& text) {
         namespace tp = tapeline::pattern;
-        const tp::internal::Json j = tp::internal::parse_json(text, "fuzz.json");
+        const tapeline::json::Json j = tapeline::json::parse_json(text, "fuzz.json");
         tp::Pattern p;
         switch (data[0] % 3) {
             case 0:

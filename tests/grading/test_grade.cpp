@@ -13,6 +13,7 @@
 
 namespace tg = tapeline::grading;
 namespace tp = tapeline::pattern;
+namespace ts = tapeline::sizes;
 
 namespace {
 
@@ -28,8 +29,8 @@ tp::Piece rectangle(const std::string& name, double w, double h) {
     return p;
 }
 
-tp::MeasurementSet set(const std::string& name, std::map<std::string, double> v) {
-    tp::MeasurementSet m;
+ts::MeasurementSet set(const std::string& name, std::map<std::string, double> v) {
+    ts::MeasurementSet m;
     m.name = name;
     m.values = std::move(v);
     return m;

@@ -2,10 +2,11 @@
 // a directory given as a file) and hostile output paths (a missing directory, one path twice, a
 // 255-byte name, temporaries of a killed process). Each refusal is one line naming the path.
 #include <tapeline/core/atomic_write.h>
-#include <tapeline/pattern/internal/json_read.h>
+#include <tapeline/core/json_read.h>
+#include <tapeline/core/xml.h>
 #include <tapeline/pattern/io_json.h>
-#include <tapeline/pattern/measurement_set.h>
-#include <tapeline/pattern/xml.h>
+#include <tapeline/sizes/json_formats.h>
+#include <tapeline/sizes/seamly.h>
 
 #include <tapeline_test/pattern.h>
 
@@ -21,6 +22,9 @@
 #include <unistd.h>
 
 using namespace tapeline::pattern;
+namespace xml = tapeline::xml;
+using tapeline::sizes::read_measurement_json;
+using tapeline::sizes::read_seamly_individual;
 
 namespace {
 
@@ -62,9 +66,9 @@ std::string temp_path(const std::string& name) {
 
 TEST(HostileDocuments, JsonDepthLimitIsExact) {
     // The top-level object is one level: 255 arrays inside it reach the limit, 256 exceed it.
-    EXPECT_NO_THROW(internal::parse_json(nested_json(internal::max_json_depth - 1), "ok.json"));
+    EXPECT_NO_THROW(tapeline::json::parse_json(nested_json(tapeline::json::max_json_depth - 1), "ok.json"));
     const std::string m = invalid_message(
-        [] { internal::parse_json(nested_json(internal::max_json_depth), "deep.json"); });
+        [] { tapeline::json::parse_json(nested_json(tapeline::json::max_json_depth), "deep.json"); });
     EXPECT_NE(m.find("deep.json: JSON nested deeper than 256 levels at byte 265"),
               std::string::npos)
         << m;
@@ -72,7 +76,7 @@ TEST(HostileDocuments, JsonDepthLimitIsExact) {
 
 TEST(HostileDocuments, JsonDepthIgnoresBracketsInStrings) {
     const std::string text = "{\"name\": \"" + std::string(1000, '[') + "\\\"{\"}";
-    EXPECT_NO_THROW(internal::parse_json(text, "strings.json"));
+    EXPECT_NO_THROW(tapeline::json::parse_json(text, "strings.json"));
 }
 
 TEST(HostileDocuments, MeasurementFileWithThreeHundredThousandLevels) {

@@ -1,11 +1,11 @@
 // The model's JSON round trip (bit-exact) and the SVG drawing (well-formed, one group per piece,
 // a 100 mm scale bar at 1 user unit per mm).
+#include <tapeline/core/xml.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/svg.h>
 #include <tapeline/pattern/validate.h>
-#include <tapeline/pattern/xml.h>
 
 #include <tapeline_test/pattern.h>
 
@@ -17,6 +17,7 @@
 #include <sstream>
 
 using namespace tapeline::pattern;
+namespace xml = tapeline::xml;
 using tapeline_test::two_piece_pattern;
 
 namespace {

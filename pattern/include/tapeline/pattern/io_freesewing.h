@@ -17,7 +17,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
-#include <tapeline/pattern/internal/json_read.h>
+#include <tapeline/pattern/internal/json_helpers.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <cctype>

@@ -6,8 +6,8 @@
 #include <tapeline/core/errors.h>
 #include <tapeline/grading/grading_types.h>
 #include <tapeline/grading/internal/terms.h>
-#include <tapeline/pattern/measurement_set.h>
 #include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <algorithm>
 #include <array>
@@ -240,8 +240,8 @@ public:
         t.items.push_back(item);
     }
 
-    void build_bindings(const tp::MeasurementSet& from, const tp::MeasurementSet& to, EaseMode ease,
-                        double weight, bool split_girths) {
+    void build_bindings(const sizes::MeasurementSet& from, const sizes::MeasurementSet& to,
+                        EaseMode ease, double weight, bool split_girths) {
         for (const tp::MeasurementBinding& b : p_.bindings) {
             LengthTerm t;
             t.weight = weight;
@@ -517,8 +517,8 @@ private:
 };
 
 /// Builds the whole problem. Bindings must name measurements of `to` (InvalidInput otherwise).
-inline Model build_model(const tp::Pattern& p, const tp::MeasurementSet& from,
-                         const tp::MeasurementSet& to, const GradingOptions& o,
+inline Model build_model(const tp::Pattern& p, const sizes::MeasurementSet& from,
+                         const sizes::MeasurementSet& to, const GradingOptions& o,
                          const std::vector<SeamSpec>& seams = {}) {
     Model m;
     ModelBuilder b(p, m);

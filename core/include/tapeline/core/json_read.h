@@ -1,10 +1,10 @@
 // Checked access to JSON input: every failure is an InvalidInput naming the file and the JSON
-// path of the offending value (DESIGN.md §4).
+// path of the offending value (DESIGN.md §4). Readers of every module (patterns, measurement
+// sets, landmark files) share it.
 #pragma once
 
 #include <tapeline/core/errors.h>
 #include <tapeline/core/internal/text_scan.h>
-#include <tapeline/pattern/geometry.h>
 
 #include <nlohmann/json.hpp>
 
@@ -14,7 +14,7 @@
 #include <sstream>
 #include <string>
 
-namespace tapeline::pattern::internal {
+namespace tapeline::json {
 
 using Json = nlohmann::json;
 
@@ -158,12 +158,4 @@ inline std::size_t index_value(const Json& j, const Where& w) {
     return j.get<std::size_t>();
 }
 
-/// [x, y] as a point.
-inline Point2 point(const Json& j, const Where& w) {
-    if (!j.is_array() || j.size() != 2) {
-        throw InvalidInput(w.str() + ": expected a point [x, y], got " + j.dump());
-    }
-    return {number(j[0], w.index(0)), number(j[1], w.index(1))};
-}
-
-}  // namespace tapeline::pattern::internal
+}  // namespace tapeline::json

@@ -1,6 +1,7 @@
-// Reading base and target measurement sets for grading; every rejection names what and where.
+// Reading a measurement set whatever file it comes in (the base and target sets of grading);
+// every rejection names what and where.
 #include <tapeline/core/errors.h>
-#include <tapeline_test/grading.h>
+#include <tapeline/sizes/read_input.h>
 
 #include <gtest/gtest.h>
 
@@ -11,16 +12,17 @@
 
 namespace {
 
+using tapeline::sizes::read_measurement_input;
+
 std::string write_temp(const std::string& name, const std::string& text) {
-    const std::string path =
-        "/tmp/tapeline_grading_test_" + std::to_string(::getpid()) + "_" + name;
+    const std::string path = "/tmp/tapeline_sizes_test_" + std::to_string(::getpid()) + "_" + name;
     std::ofstream(path) << text;
     return path;
 }
 
 void expect_refused(const std::string& path, const std::string& needle) {
     try {
-        tapeline_test::read_measurement_input(path);
+        read_measurement_input(path);
         ADD_FAILURE() << path << ": no exception";
     } catch (const tapeline::InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
@@ -33,11 +35,11 @@ void expect_refused(const std::string& path, const std::string& needle) {
 
 TEST(MeasurementInput, FlatJsonInMillimetresAndCentimetres) {
     const std::string a = write_temp("flat.json", R"({"chest": 979, "waist": 788})");
-    const auto m = tapeline_test::read_measurement_input(a);
+    const auto m = read_measurement_input(a);
     EXPECT_DOUBLE_EQ(*m.get("chest"), 979);
     std::remove(a.c_str());
     const std::string b = write_temp("cm.json", R"({"units": "cm", "chest": 97.9})");
-    EXPECT_DOUBLE_EQ(*tapeline_test::read_measurement_input(b).get("chest"), 979);
+    EXPECT_DOUBLE_EQ(*read_measurement_input(b).get("chest"), 979);
     std::remove(b.c_str());
 }
 
@@ -47,7 +49,7 @@ TEST(MeasurementInput, MeasureJsonKeepsBothNames) {
         R"({"measurements": [{"name": "bust_girth", "freesewing_name": "chest", "value_mm": 1001},
                              {"freesewing_name": "waist", "value_mm": 812},
                              {"name": "hip_girth", "value_mm": null}]})");
-    const auto m = tapeline_test::read_measurement_input(a);
+    const auto m = read_measurement_input(a);
     EXPECT_DOUBLE_EQ(*m.get("chest"), 1001);
     EXPECT_DOUBLE_EQ(*m.get("bust_girth"), 1001);
     EXPECT_DOUBLE_EQ(*m.get("waist"), 812);
@@ -56,20 +58,19 @@ TEST(MeasurementInput, MeasureJsonKeepsBothNames) {
 }
 
 TEST(MeasurementInput, FreeSewingSetsFileNeedsASetName) {
-    const std::string sets =
+    const std::string path =
         std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json";
-    if (!std::ifstream(sets))
-        GTEST_SKIP() << sets << " absent";
-    const auto m = tapeline_test::freesewing_set("cisFemaleAdult42");
+    if (!std::ifstream(path))
+        GTEST_SKIP() << path << " absent";
+    const auto m = read_measurement_input(path, "cisFemaleAdult42");
     EXPECT_DOUBLE_EQ(*m.get("chest"), 1143);
-    const std::string& path = sets;
-    EXPECT_THROW(tapeline_test::read_measurement_input(path), tapeline::InvalidInput);
-    EXPECT_THROW(tapeline_test::read_measurement_input(path, "nope"), tapeline::InvalidInput);
+    EXPECT_THROW(read_measurement_input(path), tapeline::InvalidInput);
+    EXPECT_THROW(read_measurement_input(path, "nope"), tapeline::InvalidInput);
 }
 
 TEST(MeasurementInput, SeamlyIndividualFile) {
-    const auto m = tapeline_test::read_measurement_input(std::string(TAPELINE_DATA_DIR) +
-                                                         "/patterns/example_individual.vit");
+    const auto m =
+        read_measurement_input(std::string(TAPELINE_DATA_DIR) + "/patterns/example_individual.vit");
     // The file is in cm: every value scaled to mm, Seamly2D names with their FreeSewing aliases,
     // the angle left as it is.
     EXPECT_DOUBLE_EQ(*m.get("height"), 1659);
@@ -109,7 +110,7 @@ TEST(MeasurementInput, SeamlyNamesGetTheirFreeSewingNames) {
   </body-measurements>
 </vit>
 )");
-    const auto m = tapeline_test::read_measurement_input(a);
+    const auto m = read_measurement_input(a);
     EXPECT_DOUBLE_EQ(*m.get("chest"), 1001.5);
     EXPECT_DOUBLE_EQ(*m.get("bust_circ"), 1001.5);
     EXPECT_DOUBLE_EQ(*m.get("hpsToWaistBack"), 420);

@@ -1,18 +1,23 @@
 // Measurement sets: FreeSewing JSON, flat JSON with a declared unit, Seamly2D .vit/.vst (XML),
 // and the strict XML reader's rejections.
-#include <tapeline/pattern/measurement_set.h>
-#include <tapeline/pattern/xml.h>
+#include <tapeline/core/xml.h>
+#include <tapeline/sizes/json_formats.h>
+#include <tapeline/sizes/seamly.h>
 
-#include <tapeline_test/pattern.h>
+#include <tapeline_test/sizes.h>
 
 #include <gtest/gtest.h>
 
-using namespace tapeline::pattern;
+#include <functional>
+
+using namespace tapeline::sizes;
+namespace xml = tapeline::xml;
+using tapeline_test::TempDir;
 
 namespace {
 
 std::string data(const std::string& name) {
-    return std::string(TAPELINE_DATA_DIR) + "/patterns/" + name;
+    return tapeline_test::sizes::data_patterns(name);
 }
 
 void expect_invalid(const std::function<void()>& f, std::initializer_list<std::string> parts) {
@@ -32,10 +37,10 @@ const std::string vit_head =
 
 }  // namespace
 
-TEST(PatternMeasurements, FreeSewingSets) {
+TEST(MeasurementSets, FreeSewingSets) {
     const std::string path =
-        tapeline_test::shared_patterns_dir() + "/freesewing/measurement_sets.json";
-    if (!tapeline_test::exists(path)) {
+        tapeline_test::sizes::shared_patterns("freesewing/measurement_sets.json");
+    if (!std::ifstream(path)) {
         GTEST_SKIP() << path << " absent";
     }
     const auto sets = read_freesewing_measurement_sets(path);
@@ -47,21 +52,21 @@ TEST(PatternMeasurements, FreeSewingSets) {
     EXPECT_EQ(sets[0].values.size(), 38u);
 }
 
-TEST(PatternMeasurements, FlatJsonWithDeclaredUnit) {
-    tapeline_test::TempDir dir;
-    tapeline_test::write_text(dir.file("me.json"), R"({"chest": 97.9, "shoulderSlope": 13})");
+TEST(MeasurementSets, FlatJsonWithDeclaredUnit) {
+    TempDir dir;
+    dir.write("me.json", R"({"chest": 97.9, "shoulderSlope": 13})");
     const MeasurementSet m = read_measurement_json(dir.file("me.json"), "cm");
     EXPECT_EQ(m.name, "me");
     EXPECT_DOUBLE_EQ(*m.get("chest"), 979);
     EXPECT_DOUBLE_EQ(*m.get("shoulderSlope"), 13);
     expect_invalid([&] { read_measurement_json(dir.file("me.json"), "cubit"); },
                    {dir.file("me.json"), "unknown unit 'cubit'"});
-    tapeline_test::write_text(dir.file("bad.json"), R"({"chest": "97.9"})");
+    dir.write("bad.json", R"({"chest": "97.9"})");
     expect_invalid([&] { read_measurement_json(dir.file("bad.json"), "cm"); },
                    {dir.file("bad.json"), "chest", "expected a number"});
 }
 
-TEST(PatternMeasurements, SeamlyIndividualFile) {
+TEST(MeasurementSets, SeamlyIndividualFile) {
     const MeasurementSet m = read_seamly_individual(data("example_individual.vit"));
     EXPECT_EQ(m.name, "example_individual");
     EXPECT_DOUBLE_EQ(*m.get("bust_circ"), 979);
@@ -70,7 +75,7 @@ TEST(PatternMeasurements, SeamlyIndividualFile) {
     EXPECT_EQ(m.values.size(), 5u);
 }
 
-TEST(PatternMeasurements, SeamlyMultisizeFileIsLinearInSizeAndHeight) {
+TEST(MeasurementSets, SeamlyMultisizeFileIsLinearInSizeAndHeight) {
     const MultisizeTable t = read_seamly_multisize(data("example_multisize.vst"));
     EXPECT_EQ(t.base_size, 48);
     EXPECT_EQ(t.base_height, 170);
@@ -84,7 +89,7 @@ TEST(PatternMeasurements, SeamlyMultisizeFileIsLinearInSizeAndHeight) {
     EXPECT_DOUBLE_EQ(*m.get("height"), 1760);
 }
 
-TEST(PatternMeasurements, SeamlyErrorsNameFileAndLine) {
+TEST(MeasurementSets, SeamlyErrorsNameFileAndLine) {
     expect_invalid(
         [] {
             parse_seamly_individual(vit_head +
@@ -116,7 +121,7 @@ TEST(PatternMeasurements, SeamlyErrorsNameFileAndLine) {
         {"f.vit:5", "not finite"});
 }
 
-TEST(PatternXml, ParsesWhatSeamlyAndSvgUse) {
+TEST(Xml, ParsesWhatSeamlyAndSvgUse) {
     const xml::Element e = xml::parse(
         "<?xml version=\"1.0\"?>\n<!-- c -->\n<a x='1' "
         "y=\"&lt;&amp;&#65;&#x42;\">t<![CDATA[<raw>]]>"
@@ -131,7 +136,7 @@ TEST(PatternXml, ParsesWhatSeamlyAndSvgUse) {
     EXPECT_EQ(e.child("c")->line, 3u);
 }
 
-TEST(PatternXml, RejectsMalformedDocumentsWithLineAndColumn) {
+TEST(Xml, RejectsMalformedDocumentsWithLineAndColumn) {
     expect_invalid([] { xml::parse("<a>\n<b></a>", "x.xml"); }, {"x.xml:2:", "</a> closes <b>"});
     expect_invalid([] { xml::parse("<a>\n<b>", "x.xml"); }, {"x.xml:2", "not closed"});
     expect_invalid([] { xml::parse("<a x=1/>", "x.xml"); }, {"x.xml:1:", "not quoted"});

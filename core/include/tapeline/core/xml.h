@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace tapeline::pattern::xml {
+namespace tapeline::xml {
 
 struct Element {
     std::string name;
@@ -296,4 +296,4 @@ inline Element parse(const std::string& text, const std::string& source) {
     return internal::Parser(text, source).parse_document();
 }
 
-}  // namespace tapeline::pattern::xml
+}  // namespace tapeline::xml

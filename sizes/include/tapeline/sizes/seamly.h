@@ -1,109 +1,84 @@
-// Body-measurement sets (name → millimetres) and their readers: FreeSewing's measurement_sets.json,
-// a flat JSON object with a declared unit, and Seamly2D/Valentina individual (.vit) and multisize
-// (.vst) measurement files (XML, read with tapeline/pattern/xml.h).
+// Seamly2D / Valentina measurement files: the individual file (.vit; root <vit> or <smis>),
+// written and read, and the multisize table (.vst; root <vst> or <smms>), read. XML through
+// tapeline/core/xml.h.
 //
-// Names are kept as the source spells them (FreeSewing "chest", Seamly2D "bust_arc_f"); mapping
-// them to ISO 8559-1 items is the measurement module's job. Angles (names containing "slope",
-// "angle" or "incl", e.g. FreeSewing's shoulderSlope) stay in degrees and are not unit-scaled.
-//
-// Seamly2D multisize tables are linear in size and height: value(size, height) = base
-// + (size − base_size)/size_step · size_increase + (height − base_height)/height_step ·
-// height_increase, with the steps from the file's <size step=…>/<height step=…> when present and
-// Seamly2D's fixed grid otherwise (size step 2 cm, height step 6 cm, in the file's unit).
+// Written: unit mm, one <m name=... value=.../> per measurement; a measurement with a Seamly2D
+// known name (catalogue.h) under that name, the others as custom measurements, "@" + our name
+// (Seamly2D's rule for user-defined names); its ISO 8559-1 title as full name and, when the
+// catalogue has a clause number, in the description. Read: names as the file spells them, values
+// in mm (angles — see is_angle_measurement — stay in degrees). Values must be plain numbers:
+// Seamly2D formulas are not evaluated. A multisize table without <size step=…>/<height step=…>
+// uses Seamly2D's fixed grid (size step 2 cm, height step 6 cm, in the file's unit).
 #pragma once
 
 #include <tapeline/core/errors.h>
-#include <tapeline/pattern/internal/json_read.h>
-#include <tapeline/pattern/xml.h>
+#include <tapeline/core/json_read.h>
+#include <tapeline/core/units.h>
+#include <tapeline/core/xml.h>
+#include <tapeline/core/xml_escape.h>
+#include <tapeline/sizes/catalogue.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <map>
-#include <optional>
+#include <ostream>
 #include <string>
-#include <vector>
 
-namespace tapeline::pattern {
+namespace tapeline::sizes {
 
-struct MeasurementSet {
-    std::string name;
-    std::string source;                    // file it came from
-    std::map<std::string, double> values;  // mm (angles: degrees)
-
-    std::optional<double> get(const std::string& key) const {
-        const auto it = values.find(key);
-        return it == values.end() ? std::nullopt : std::optional<double>(it->second);
+/// Writes measurements as a Seamly2D individual measurement file (unit mm; angles in degrees,
+/// which Seamly2D keeps unscaled); non-finite values are left out. `notes` goes into <notes>
+/// (the body file, say).
+inline void write_seamly_individual(std::ostream& out, const NamedValues& values,
+                                    const std::string& notes = "") {
+    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+        << "<vit>\n"
+        << "    <!--Measured by tapeline measure (tape girths and skin lengths).-->\n"
+        << "    <version>0.3.3</version>\n"
+        << "    <read-only>false</read-only>\n";
+    if (notes.empty()) {
+        out << "    <notes/>\n";
+    } else {
+        out << "    <notes>" << xml_escape(notes) << "</notes>\n";
     }
-};
-
-/// One row of a multisize table, in mm.
-struct MultisizeEntry {
-    double base = 0;
-    double size_increase = 0;
-    double height_increase = 0;
-};
-
-/// A Seamly2D multisize table (.vst), in mm; sizes and heights in the file's numbers.
-struct MultisizeTable {
-    std::string name;
-    std::string source;
-    double base_size = 0, base_height = 0;
-    double size_step = 0, height_step = 0;
-    std::map<std::string, MultisizeEntry> entries;
-
-    /// The individual set for one size and height.
-    MeasurementSet at(double size, double height) const {
-        MeasurementSet m;
-        m.source = source;
-        m.name = name + " size " + std::to_string(size) + " height " + std::to_string(height);
-        for (const auto& [k, e] : entries) {
-            m.values[k] = e.base + (size - base_size) / size_step * e.size_increase +
-                          (height - base_height) / height_step * e.height_increase;
+    out << "    <unit>mm</unit>\n"
+        << "    <pm_system>998</pm_system>\n"
+        << "    <personal>\n"
+        << "        <family-name/>\n"
+        << "        <given-name/>\n"
+        << "        <gender>unknown</gender>\n"
+        << "    </personal>\n"
+        << "    <body-measurements>\n";
+    for (const auto& [ours, v] : values) {
+        if (!std::isfinite(v)) {
+            continue;
         }
-        return m;
+        const std::string known = seamly_name(ours);
+        const std::string name = known.empty() ? "@" + ours : known;
+        char value[64];
+        std::snprintf(value, sizeof value, "%.3f", v);
+        const std::string title = iso_title(ours), number = iso_number(ours);
+        const std::string full = title.empty() ? ours : title;
+        out << "        <m name=\"" << xml_escape(name) << "\" value=\"" << value
+            << "\" full_name=\"" << xml_escape(full) << "\"";
+        if (!number.empty()) {
+            out << " description=\"" << xml_escape("ISO 8559-1:2017 " + number + " " + full)
+                << "\"";
+        }
+        out << "/>\n";
     }
-};
-
-/// Whether a measurement name denotes an angle (kept in degrees, never unit-scaled).
-inline bool is_angle_measurement(const std::string& name) {
-    std::string n;
-    for (char c : name) {
-        n += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    }
-    return n.find("slope") != std::string::npos || n.find("angle") != std::string::npos ||
-           n.find("incl") != std::string::npos;
+    out << "    </body-measurements>\n"
+        << "</vit>\n";
 }
 
-/// Millimetres per unit for "mm", "cm", "m", "in"/"inch"; throws InvalidInput naming `where`
-/// for anything else.
-inline double millimetres_per_unit(const std::string& unit, const std::string& where) {
-    if (unit == "mm") {
-        return 1;
-    }
-    if (unit == "cm") {
-        return 10;
-    }
-    if (unit == "m") {
-        return 1000;
-    }
-    if (unit == "in" || unit == "inch") {
-        return 25.4;
-    }
-    throw InvalidInput(where + ": unknown unit '" + unit + "' (expected mm, cm, m or inch)");
+inline void write_seamly_individual(std::ostream& out, const MeasurementSet& set,
+                                    const std::string& notes = "") {
+    write_seamly_individual(out, named_values(set), notes);
 }
 
 namespace internal {
-
-inline MeasurementSet measurement_object(const Json& obj, const Where& w, double scale) {
-    require_object(obj, w);
-    MeasurementSet m;
-    for (const auto& [k, v] : obj.items()) {
-        const double x = number(v, w.key(k));
-        m.values[k] = is_angle_measurement(k) ? x : scale * x;
-    }
-    return m;
-}
 
 /// A measurement value from a Seamly2D attribute: a plain number (formulas are not evaluated).
 inline double seamly_number(const std::string& text, const std::string& where) {
@@ -134,39 +109,7 @@ inline std::string seamly_unit(const xml::Element& root, const std::string& sour
     return t;
 }
 
-inline std::string file_stem(const std::string& path) {
-    std::string stem = path.substr(path.find_last_of('/') + 1);
-    return stem.substr(0, stem.find_last_of('.'));
-}
-
 }  // namespace internal
-
-/// FreeSewing's measurement_sets.json: {"set name": {"measurement": mm, ...}, ...}.
-inline std::vector<MeasurementSet> read_freesewing_measurement_sets(const std::string& path) {
-    using namespace internal;
-    const Json doc = parse_json_file(path);
-    const Where top{path, ""};
-    require_object(doc, top);
-    std::vector<MeasurementSet> out;
-    for (const auto& [name, obj] : doc.items()) {
-        MeasurementSet m = measurement_object(obj, top.key(name), 1.0);
-        m.name = name;
-        m.source = path;
-        out.push_back(std::move(m));
-    }
-    return out;
-}
-
-/// A flat JSON object {"measurement": value, ...} whose values are in `unit` (declared by the
-/// caller: the file does not say; DESIGN.md §8).
-inline MeasurementSet read_measurement_json(const std::string& path, const std::string& unit) {
-    using namespace internal;
-    const double scale = millimetres_per_unit(unit, path);
-    MeasurementSet m = measurement_object(parse_json_file(path), Where{path, ""}, scale);
-    m.name = file_stem(path);
-    m.source = path;
-    return m;
-}
 
 /// A Seamly2D/Valentina individual measurement file (.vit; root <vit> or <smis>).
 inline MeasurementSet parse_seamly_individual(const std::string& text, const std::string& source) {
@@ -263,11 +206,11 @@ inline MultisizeTable parse_seamly_multisize(const std::string& text, const std:
 }
 
 inline MeasurementSet read_seamly_individual(const std::string& path) {
-    return parse_seamly_individual(internal::read_text_file(path), path);
+    return parse_seamly_individual(json::read_text_file(path), path);
 }
 
 inline MultisizeTable read_seamly_multisize(const std::string& path) {
-    return parse_seamly_multisize(internal::read_text_file(path), path);
+    return parse_seamly_multisize(json::read_text_file(path), path);
 }
 
-}  // namespace tapeline::pattern
+}  // namespace tapeline::sizes
