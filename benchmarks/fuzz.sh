@@ -17,7 +17,7 @@ command -v "$cxx" >/dev/null || { echo "fuzz.sh: $cxx not found (apt-get install
 out=build/fuzz
 mkdir -p "$out"
 flags=(-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
-       -Icore/include -Ipattern/include -I/usr/include/eigen3)
+       -Icore/include -Isizes/include -Ipattern/include -I/usr/include/eigen3)
 
 seeds() {  # seeds of target $1 into directory $2 (first byte: the format selector)
   local t=$1 dir=$2 i=0
