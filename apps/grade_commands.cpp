@@ -2,7 +2,6 @@
 // measurement set (grading/grade.h). Everything is computed in memory first; each output is then
 // written to a temporary name and renamed, so a failure leaves no half-written file.
 #include "commands.h"
-#include "pattern_input.h"
 
 #include <tapeline/core/errors.h>
 
@@ -17,6 +16,7 @@
 #include <tapeline/grading/output.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
+#include <tapeline/pattern/io_detect.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
@@ -66,7 +66,7 @@ std::string extension(const std::string& path) {
 
 tp::Pattern load(const GradeArgs& a) {
     if (is_file(a.pattern)) {
-        return import_file(a.pattern, a.format, nullptr);
+        return tp::read_pattern_file(a.pattern, a.format, nullptr);
     }
     const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
     if (!is_file(path)) {
