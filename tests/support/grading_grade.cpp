@@ -4,6 +4,7 @@
 #include <tapeline/grading/grade.h>
 #include <tapeline/grading/measurement_input.h>
 #include <tapeline/grading/output.h>
+#include <tapeline/pattern/freesewing_designs.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline_test/grading.h>
 
@@ -20,7 +21,7 @@ tg::GradeResult grade(const tp::Pattern& base, const tp::MeasurementSet& from,
 
 std::vector<tg::SeamSpec> freesewing_seams(const tp::Pattern& p,
                                            std::vector<std::string>* skipped) {
-    return tg::freesewing_seams(p, skipped);
+    return tp::freesewing_seams(p, skipped);
 }
 
 tp::Pattern freesewing_draft(const std::string& design, const std::string& size) {
