@@ -80,7 +80,7 @@ public:
             for (int k = 0; k < 3; ++k, h = next(h, tm)) {
                 mesh_.corner[3 * fi + k] = static_cast<std::uint32_t>(index_.index(source(h, tm)));
                 const auto o = opposite(h, tm);
-                if (is_border(o, tm))
+                if (CGAL::is_border(o, tm))
                     continue;
                 const auto g = face(o, tm);
                 auto c = halfedge(g, tm);
