@@ -1,12 +1,12 @@
 // `tapeline pattern import|list|show|validate|export`: sewing patterns in one model and one
 // database (SQLite file, `--db`, default under the user's data directory).
 #include "commands.h"
-#include "pattern_input.h"
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
+#include <tapeline/pattern/io_detect.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
@@ -38,49 +38,6 @@ bool is_file(const std::string& path) {
     return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
-/// Which importer a file needs: by --format, or recognised from its JSON keys.
-std::string detect_format(const std::string& path) {
-    const std::string text = tp::internal::read_text_file(path);
-    tp::internal::check_json_depth(text, path);
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        throw InvalidInput(path + ": not valid JSON (" + std::string(e.what()) +
-                           "); give --format for other files");
-    }
-    if (j.is_object() && j.value("format", "") == "tapeline-pattern") {
-        return "json";
-    }
-    if (j.is_object() && j.contains("pattern") && j["pattern"].is_object() &&
-        j["pattern"].contains("panels")) {
-        return "garmentcode";
-    }
-    if (j.is_object() && j.contains("pieces") && j.contains("design")) {
-        return "freesewing";
-    }
-    throw InvalidInput(path +
-                       ": cannot tell the pattern format (not FreeSewing, GarmentCode or "
-                       "tapeline JSON); give --format");
-}
-
-tp::Pattern import_file(const std::string& path, std::string format, tp::ImportReport* report) {
-    if (format.empty() || format == "auto") {
-        format = detect_format(path);
-    }
-    if (format == "freesewing") {
-        return tp::read_freesewing(path, report);
-    }
-    if (format == "garmentcode") {
-        return tp::read_garmentcode(path, report);
-    }
-    if (format == "json") {
-        return tp::read_pattern_json(path);
-    }
-    throw InvalidInput("--format: unknown pattern format '" + format +
-                       "' (known: auto, freesewing, garmentcode, json)");
-}
-
 namespace {
 
 std::string db_path(const std::string& given) {
@@ -100,7 +57,7 @@ void note_read_only_open(const tp::PatternDatabase& database) {
 tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
                          const std::string& format) {
     if (is_file(name_or_file)) {
-        return import_file(name_or_file, format, nullptr);
+        return tp::read_pattern_file(name_or_file, format, nullptr);
     }
     tp::DatabaseOptions options;
     options.read_only = true;
@@ -133,7 +90,7 @@ void run_import(const ImportArgs& a) {
     std::vector<tp::Pattern> patterns;
     for (const std::string& f : a.files) {
         tp::ImportReport report;
-        tp::Pattern p = import_file(f, a.format, &report);
+        tp::Pattern p = tp::read_pattern_file(f, a.format, &report);
         print_validation(tp::require_valid(p, {}, f), f);
         for (const std::string& n : report.notes) {
             std::cerr << "tapeline: note: " << f << ": " << n << '\n';
@@ -230,7 +187,7 @@ void run_show(const std::string& name, const std::string& db, const std::string&
 
 void run_validate(const std::string& file, const std::string& format) {
     tp::ImportReport report;
-    const tp::Pattern p = import_file(file, format, &report);
+    const tp::Pattern p = tp::read_pattern_file(file, format, &report);
     const tp::ValidationReport r = tp::require_valid(p, {}, file);
     print_validation(r, file);
     std::cout << file << ": valid (" << p.pieces.size() << " pieces, " << p.seams.size()

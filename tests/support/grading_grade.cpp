@@ -3,6 +3,7 @@
 #include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
 #include <tapeline/grading/output.h>
+#include <tapeline/pattern/freesewing_designs.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/sizes/read_input.h>
 #include <tapeline_test/grading.h>
@@ -21,7 +22,7 @@ tg::GradeResult grade(const tp::Pattern& base, const ts::MeasurementSet& from,
 
 std::vector<tg::SeamSpec> freesewing_seams(const tp::Pattern& p,
                                            std::vector<std::string>* skipped) {
-    return tg::freesewing_seams(p, skipped);
+    return tp::freesewing_seams(p, skipped);
 }
 
 tp::Pattern freesewing_draft(const std::string& design, const std::string& size) {

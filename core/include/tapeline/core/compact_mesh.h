@@ -80,7 +80,7 @@ CompactMesh make_compact_mesh(const FaceListGraph& g, VertexPointMap vpm, Vertex
         for (int k = 0; k < 3; ++k, h = next(h, g)) {
             m.corner[3 * fi + k] = static_cast<std::uint32_t>(get(vim, source(h, g)));
             const auto o = opposite(h, g);
-            if (is_border(o, g))
+            if (CGAL::is_border(o, g))
                 continue;
             const auto nb = face(o, g);
             auto c = halfedge(nb, g);
@@ -131,7 +131,7 @@ CompactMesh make_compact_mesh(const FaceListGraph& g,
     using CGAL::parameters::get_parameter;
     return make_compact_mesh(g,
                              choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                              get_const_property_map(CGAL::vertex_point, g)),
+                                              CGAL::get_const_property_map(CGAL::vertex_point, g)),
                              CGAL::get_initialized_vertex_index_map(g, np),
                              CGAL::get_initialized_face_index_map(g, np));
 }

@@ -121,7 +121,7 @@ std::pair<std::vector<Vec3>, std::vector<std::array<std::uint32_t, 3>>> triangle
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
     const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tm));
+                                      CGAL::get_const_property_map(CGAL::vertex_point, tm));
     // Enumeration order whatever index maps the mesh carries (a Surface_mesh with removed
     // elements included), so that points[i] is the i-th vertex of vertices(tm).
     auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);

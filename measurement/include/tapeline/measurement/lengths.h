@@ -105,7 +105,7 @@ public:
         }
         const auto vpm = CGAL::parameters::choose_parameter(
             CGAL::parameters::get_parameter(np_, CGAL::internal_np::vertex_point),
-            get_const_property_map(CGAL::vertex_point, tm_));
+            CGAL::get_const_property_map(CGAL::vertex_point, tm_));
         // The corners in the order of the barycentric coordinates (PMP::construct_point).
         const auto h = halfedge(l.first, tm_);
         const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> corners{

@@ -329,15 +329,22 @@ public:
         }
     }
 
-    /// Seams: the pattern's own and `extra`. Sides equal in the base draft (within `tolerance`)
-    /// are held equal; otherwise the base ratio a/b is kept (a deliberate difference such as
-    /// sleeve-cap ease). Residual w (len(a) − ratio · len(b)).
+    /// Seams: the pattern's own and those of `extra` the pattern does not hold (by name: an
+    /// imported FreeSewing pattern holds some of its design's seams already). Sides equal in the
+    /// base draft (within `tolerance`) are held equal; otherwise the base ratio a/b is kept (a
+    /// deliberate difference such as sleeve-cap ease). Residual w (len(a) − ratio · len(b)).
     void build_seams(double weight, double tolerance, const std::vector<SeamSpec>& extra) {
         std::vector<SeamSpec> all;
         for (const tp::Seam& s : p_.seams) {
             all.push_back({s.name.empty() ? s.a.piece + "/" + s.b.piece : s.name, {s.a}, {s.b}});
         }
-        all.insert(all.end(), extra.begin(), extra.end());
+        const std::size_t own = all.size();
+        for (const SeamSpec& s : extra) {
+            if (std::none_of(all.begin(), all.begin() + own,
+                             [&](const SeamSpec& q) { return q.name == s.name; })) {
+                all.push_back(s);
+            }
+        }
         for (const SeamSpec& s : all) {
             LengthTerm side[2];
             for (int k = 0; k < 2; ++k) {

@@ -1,8 +1,9 @@
 // Analytic test surfaces as polygon soups, and their spec strings (no CGAL, no GeographicLib).
 //
-// This header is the light half of <tapeline/core/analytic_surfaces.h>: test facades, loggers and
-// <tapeline/core/analytic_geodesics.h> include it without paying for CGAL (DESIGN.md §5). Users
-// include <tapeline/core/analytic_surfaces.h> for meshes, or this header for specs and soups.
+// This header is the light half of <tapeline/surfaces/analytic_surfaces.h>: test facades,
+// loggers and <tapeline/surfaces/analytic_geodesics.h> include it without paying for CGAL
+// (DESIGN.md §5). Users include <tapeline/surfaces/analytic_surfaces.h> for meshes, or this
+// header for specs and soups.
 //
 // Surfaces: icosphere (Loop-style midpoint subdivision of the icosahedron, midpoints projected to
 // the unit sphere), UV sphere, ellipsoid (icosphere mapped by (x,y,z) -> (Ax,By,Cz)), torus and

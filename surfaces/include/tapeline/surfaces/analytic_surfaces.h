@@ -1,14 +1,14 @@
 // Analytic test surfaces (sphere, ellipsoid, torus, open cylinder) as CGAL triangle meshes.
 //
-// Ground truth for geodesic tests and benchmarks: each surface has a spec string
-// (see SurfaceSpec in analytic_surface_types.h), a polygon soup generator and, in
-// <tapeline/core/analytic_geodesics.h>, the exact smooth geodesic distance where one is known.
+// Ground truth for geodesic tests and benchmarks: each surface has a spec string (see SurfaceSpec
+// in <tapeline/surfaces/analytic_surface_types.h>), a polygon soup generator and, in
+// <tapeline/surfaces/analytic_geodesics.h>, the exact smooth geodesic distance where one is known.
 // The icosphere is the classical midpoint subdivision of the icosahedron with vertices pushed to
 // the sphere; nothing here implements a paper.
 #pragma once
 
-#include <tapeline/core/analytic_surface_types.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/surfaces/analytic_surface_types.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/Euler_operations.h>

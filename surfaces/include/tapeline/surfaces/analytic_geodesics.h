@@ -14,8 +14,8 @@
 // No CGAL here: include this from anything that needs the truth only.
 #pragma once
 
-#include <tapeline/core/analytic_surface_types.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/surfaces/analytic_surface_types.h>
 
 #include <GeographicLib/GeodesicExact.hpp>
 

@@ -1,7 +1,7 @@
 // Exact smooth geodesic distances on the analytic surfaces, checked against independent
 // computations (quadrature of meridian arcs, great circles, a separate cylinder parametrisation)
 // and metric invariants.
-#include <tapeline/core/analytic_geodesics.h>
+#include <tapeline/surfaces/analytic_geodesics.h>
 #include <tapeline_test/surfaces.h>
 
 #include <gtest/gtest.h>
