@@ -1,6 +1,6 @@
 // A 5 × 8 pixel bitmap font for printable ASCII (32–126), drawn by the raster canvas
-// (core/raster.h: pattern PNGs, body measurement pictures, grading plots) where an SVG would have
-// text; no font library is a dependency. Designed for Tapeline, not taken from any existing font.
+// (draw/canvas.h: pattern PNGs, body measurement pictures, plots) where an SVG would have text; no
+// font library is a dependency. Designed for Tapeline, not taken from any existing font.
 //
 // Cell: 5 columns × 8 rows, rows 0–6 above the baseline (capitals and digits are 7 rows tall),
 // row 7 below it (descenders of g j p q y, the comma, the underscore), advance 6 columns. One
@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace tapeline::internal {
+namespace tapeline::draw::internal {
 
 inline constexpr int kGlyphColumns = 5;
 inline constexpr int kGlyphRows = 8;
@@ -154,4 +154,4 @@ inline std::vector<const Glyph*> text_glyphs(const std::string& utf8) {
     return out;
 }
 
-}  // namespace tapeline::internal
+}  // namespace tapeline::draw::internal

@@ -1,21 +1,22 @@
-// PNG encoding of an RGBA image (core/raster.h) with libpng: 8-bit RGBA, a pHYs chunk giving the
-// resolution so that viewers and printers can reproduce a 1:1 scale. A target that includes this
-// header links PNG::PNG (tapeline::pattern and tapeline::measurement do); the rest of core does not
-// need libpng.
+// PNG encoding of an RGBA image (canvas.h) with libpng: 8-bit RGBA, a pHYs chunk giving the
+// resolution so that viewers and printers can reproduce a 1:1 scale; and the same bytes written to
+// a stream or, atomically, to a file. tapeline::draw links PNG::PNG.
 #pragma once
 
+#include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/core/raster.h>
+#include <tapeline/draw/canvas.h>
 
 #include <png.h>
 
 #include <cmath>
 #include <cstdint>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace tapeline::raster {
+namespace tapeline::draw {
 
 namespace internal {
 
@@ -79,4 +80,19 @@ inline std::vector<std::uint8_t> encode_png(const RgbaImage& img, double pixels_
     return out;
 }
 
-}  // namespace tapeline::raster
+/// Writes the PNG of `img` to `out`; returns the number of bytes written.
+inline std::size_t write_png(std::ostream& out, const RgbaImage& img, double pixels_per_mm) {
+    const std::vector<std::uint8_t> bytes = encode_png(img, pixels_per_mm);
+    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    return bytes.size();
+}
+
+/// Writes the PNG of `img` to `path` atomically (no half-written file on failure).
+inline std::size_t write_png(const std::string& path, const RgbaImage& img, double pixels_per_mm) {
+    std::size_t n = 0;
+    write_file_atomically(
+        path, [&](std::ostream& out) { n = write_png(out, img, pixels_per_mm); }, true);
+    return n;
+}
+
+}  // namespace tapeline::draw

@@ -1,21 +1,24 @@
-// A small anti-aliased RGBA canvas for the drawings Tapeline writes as PNG (pattern pieces, body
-// measurement pictures, plots): strokes, dashed polylines, rectangles, discs, and text in the
-// built-in 5 × 8 bitmap font (internal/bitmap_font.h; no font library). No dependency beyond the
-// standard library; PNG encoding is in png_encode.h (libpng).
+// The raster canvas of every Tapeline picture (pattern PNGs, body measurement pictures, plots):
+// anti-aliased strokes, dashed polylines, filled polygons, rectangles, discs and rings, and text
+// in the built-in 5 × 8 bitmap font (internal/bitmap_font.h; no font library), on an 8-bit RGBA
+// image. No dependency beyond the standard library and core/vec2.h; PNG encoding is png.h.
 //
 // Coordinates are page millimetres, y down, as in SVG; a canvas of r pixels per mm draws the page
 // point (x, y) at pixel position (r x, r y), so pixel (i, j) covers [i, i+1)/r × [j, j+1)/r mm.
+// A canvas of 1 pixel per mm draws in pixels.
 //
 // Anti-aliasing: each stroke segment covers a pixel by clamp(w/2 + 1/2 − d, 0, 1), d the distance
 // from the pixel centre to the segment (a box filter of one pixel across the edge), blended "over"
 // the page. Strokes are at least one pixel wide so that low resolutions still show every line.
-// Text glyphs are scaled to the font-size (one font pixel = a tenth of the em, capitals 0.7 em)
-// and box-filtered: a pixel's coverage is the area of it that font pixels cover. Characters
-// outside printable ASCII are drawn as a hollow box, one per code point. (Shaded meshes are drawn
-// with a z-buffer by their users, e.g. measurement/picture.h, then composited onto the image.)
+// Filled polygons (non-zero winding) take the fraction of a 4 × 4 grid of sample points per pixel
+// that lies inside. Text glyphs are scaled to the font-size (one font pixel = a tenth of the em,
+// capitals 0.7 em) and box-filtered: a pixel's coverage is the area of it that font pixels cover.
+// Characters outside printable ASCII are drawn as a hollow box, one per code point. Shaded meshes
+// are z-buffered by mesh_render.h into an image of their own and pasted onto the canvas.
 #pragma once
 
-#include <tapeline/core/internal/bitmap_font.h>
+#include <tapeline/core/vec2.h>
+#include <tapeline/draw/internal/bitmap_font.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,42 +27,17 @@
 #include <string>
 #include <vector>
 
-namespace tapeline::raster {
-
-struct Point {
-    double x = 0;
-    double y = 0;
-};
-
-inline Point operator+(const Point& a, const Point& b) {
-    return {a.x + b.x, a.y + b.y};
-}
-inline Point operator-(const Point& a, const Point& b) {
-    return {a.x - b.x, a.y - b.y};
-}
-inline Point operator*(double s, const Point& a) {
-    return {s * a.x, s * a.y};
-}
-inline double dot(const Point& a, const Point& b) {
-    return a.x * b.x + a.y * b.y;
-}
-inline double distance(const Point& a, const Point& b) {
-    return std::hypot(b.x - a.x, b.y - a.y);
-}
-inline double distance_to_segment(const Point& p, const Point& a, const Point& b) {
-    const Point d = b - a;
-    const double len2 = dot(d, d);
-    if (len2 == 0) {
-        return distance(p, a);
-    }
-    const double t = std::clamp(dot(p - a, d) / len2, 0.0, 1.0);
-    return distance(p, a + t * d);
-}
+namespace tapeline::draw {
 
 /// A colour, each channel in [0, 1].
 struct Rgb {
     double r, g, b;
 };
+
+/// Linear interpolation from a (t = 0) to b (t = 1), per channel.
+inline Rgb mix(Rgb a, Rgb b, double t) {
+    return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
+}
 
 /// SVG's text-anchor: x is the left end of the text, its middle, or its right end.
 enum class TextAnchor { start, middle, end };
@@ -67,6 +45,19 @@ enum class TextAnchor { start, middle, end };
 struct RgbaImage {
     std::size_t width = 0, height = 0;
     std::vector<std::uint8_t> rgba;  // row-major, top row first, 8 bits per channel
+
+    /// A width × height image whose every byte (all four channels) is `value`: 255 opaque white,
+    /// 0 transparent.
+    static RgbaImage filled(std::size_t width, std::size_t height, std::uint8_t value) {
+        RgbaImage img;
+        img.width = width;
+        img.height = height;
+        img.rgba.assign(4 * width * height, value);
+        return img;
+    }
+    const std::uint8_t* pixel(std::size_t x, std::size_t y) const {
+        return &rgba[4 * (y * width + x)];
+    }
 };
 
 class Canvas {
@@ -74,9 +65,10 @@ public:
     Canvas(RgbaImage& img, double ppmm) : img_(img), s_(ppmm) {}
 
     double pixels_per_mm() const { return s_; }
+    RgbaImage& image() { return img_; }
 
     /// A stroke from a to b in page millimetres (y down), width in mm.
-    void segment(Point a, Point b, double width_mm, Rgb c) {
+    void segment(Vec2 a, Vec2 b, double width_mm, Rgb c) {
         a = s_ * a;
         b = s_ * b;
         const double hw = 0.5 * std::max(width_mm * s_, 1.0);
@@ -98,7 +90,7 @@ public:
     }
 
     /// An open polyline; dashes (dash_mm > 0) continue across vertices.
-    void polyline(const std::vector<Point>& pts, double width_mm, Rgb c, double dash_mm = 0,
+    void polyline(const std::vector<Vec2>& pts, double width_mm, Rgb c, double dash_mm = 0,
                   double gap_mm = 0) {
         if (dash_mm <= 0) {
             for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
@@ -109,12 +101,12 @@ public:
         bool on = true;
         double left = dash_mm;
         for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-            Point a = pts[i];
-            const Point b = pts[i + 1];
+            Vec2 a = pts[i];
+            const Vec2 b = pts[i + 1];
             double len = distance(a, b);
             while (len > 0) {
                 const double step = std::min(left, len);
-                const Point e = a + (step / len) * (b - a);
+                const Vec2 e = a + (step / len) * (b - a);
                 if (on) {
                     segment(a, e, width_mm, c);
                 }
@@ -129,7 +121,58 @@ public:
         }
     }
 
-    void fill_rect(Point a, Point b, Rgb c) {
+    /// A filled polygon (closed implicitly; non-zero winding, so self-overlaps fill once).
+    void fill_polygon(const std::vector<Vec2>& pts, Rgb c) {
+        if (pts.size() < 3) {
+            return;
+        }
+        std::vector<Vec2> q;
+        q.reserve(pts.size());
+        double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
+        for (const Vec2& p : pts) {
+            q.push_back(s_ * p);
+            xmin = std::min(xmin, q.back().x);
+            xmax = std::max(xmax, q.back().x);
+            ymin = std::min(ymin, q.back().y);
+            ymax = std::max(ymax, q.back().y);
+        }
+        if (!(xmin <= xmax && ymin <= ymax)) {
+            return;
+        }
+        const long x0 = std::max(0L, long(std::floor(xmin)));
+        const long x1 = std::min(long(img_.width), long(std::ceil(xmax)));
+        const long y0 = std::max(0L, long(std::floor(ymin)));
+        const long y1 = std::min(long(img_.height), long(std::ceil(ymax)));
+        const auto winding = [&q](Vec2 p) {
+            int w = 0;
+            for (std::size_t i = 0; i < q.size(); ++i) {
+                const Vec2 a = q[i], b = q[(i + 1) % q.size()];
+                const double side = cross(b - a, p - a);
+                if (a.y <= p.y) {
+                    w += b.y > p.y && side > 0;
+                } else {
+                    w -= b.y <= p.y && side < 0;
+                }
+            }
+            return w;
+        };
+        constexpr int n = 4;  // samples per pixel and axis
+        for (long y = y0; y < y1; ++y) {
+            for (long x = x0; x < x1; ++x) {
+                int inside = 0;
+                for (int sy = 0; sy < n; ++sy) {
+                    for (int sx = 0; sx < n; ++sx) {
+                        inside += winding({x + (sx + 0.5) / n, y + (sy + 0.5) / n}) != 0;
+                    }
+                }
+                if (inside > 0) {
+                    blend(std::size_t(x), std::size_t(y), c, double(inside) / (n * n));
+                }
+            }
+        }
+    }
+
+    void fill_rect(Vec2 a, Vec2 b, Rgb c) {
         a = s_ * a;
         b = s_ * b;
         for (long y = std::max(0L, long(a.y));
@@ -147,34 +190,46 @@ public:
     }
 
     /// A filled, anti-aliased disc; radius in mm (at least half a pixel).
-    void disc(Point centre, double radius_mm, Rgb c) {
-        const Point p = s_ * centre;
-        const double r = std::max(radius_mm * s_, 0.5);
-        const long x0 = std::max(0L, long(std::floor(p.x - r - 1)));
-        const long x1 = std::min(long(img_.width) - 1, long(std::ceil(p.x + r + 1)));
-        const long y0 = std::max(0L, long(std::floor(p.y - r - 1)));
-        const long y1 = std::min(long(img_.height) - 1, long(std::ceil(p.y + r + 1)));
-        for (long y = y0; y <= y1; ++y) {
-            for (long x = x0; x <= x1; ++x) {
-                const double cov = std::clamp(r + 0.5 - distance({x + 0.5, y + 0.5}, p), 0.0, 1.0);
-                if (cov > 0) {
-                    blend(std::size_t(x), std::size_t(y), c, cov);
+    void disc(Vec2 centre, double radius_mm, Rgb c) {
+        round_shape(
+            centre, radius_mm, [](double r, double d) { return r + 0.5 - d; }, c);
+    }
+
+    /// An anti-aliased circle of stroke width `width_mm` centred on radius `radius_mm`.
+    void ring(Vec2 centre, double radius_mm, double width_mm, Rgb c) {
+        const double hw = 0.5 * std::max(width_mm * s_, 1.0);
+        round_shape(
+            centre, radius_mm + hw / s_,
+            [r = radius_mm * s_, hw](double, double d) { return hw + 0.5 - std::abs(d - r); }, c);
+    }
+
+    /// Copies every pixel of `src` whose alpha is not zero onto the image, `src`'s top left
+    /// corner at pixel (x_px, y_px); what falls outside is dropped.
+    void paste(const RgbaImage& src, long x_px, long y_px) {
+        for (std::size_t y = 0; y < src.height; ++y) {
+            for (std::size_t x = 0; x < src.width; ++x) {
+                const std::uint8_t* p = src.pixel(x, y);
+                const long X = x_px + long(x), Y = y_px + long(y);
+                if (p[3] == 0 || X < 0 || Y < 0 || X >= long(img_.width) ||
+                    Y >= long(img_.height)) {
+                    continue;
                 }
+                std::copy(p, p + 4, &img_.rgba[4 * (std::size_t(Y) * img_.width + std::size_t(X))]);
             }
         }
     }
 
     /// Width of a text's ink in mm at a font-size, as text() draws it.
     static double text_width_mm(const std::string& s, double font_size_mm) {
-        const std::size_t n = tapeline::internal::text_glyphs(s).size();
+        const std::size_t n = internal::text_glyphs(s).size();
         return n == 0 ? 0.0
-                      : double(n * tapeline::internal::kGlyphAdvance - 1) * font_size_mm /
-                            tapeline::internal::kFontPixelsPerEm;
+                      : double(n * internal::kGlyphAdvance - 1) * font_size_mm /
+                            internal::kFontPixelsPerEm;
     }
 
     /// Text with its baseline at `at` (page mm), as an SVG <text> of that font-size and anchor.
-    void text(const std::string& s, Point at, double font_size_mm, TextAnchor anchor, Rgb c) {
-        using namespace tapeline::internal;
+    void text(const std::string& s, Vec2 at, double font_size_mm, TextAnchor anchor, Rgb c) {
+        using namespace internal;
         const std::vector<const Glyph*> glyphs = text_glyphs(s);
         if (glyphs.empty() || !(font_size_mm > 0)) {
             return;
@@ -245,8 +300,29 @@ public:
     }
 
 private:
+    /// Blends c over the pixels around `centre` by coverage(r_px, d): r_px the radius in pixels
+    /// (at least half a pixel), d the pixel centre's distance from the centre in pixels.
+    template <typename Coverage>
+    void round_shape(Vec2 centre, double radius_mm, Coverage coverage, Rgb c) {
+        const Vec2 p = s_ * centre;
+        const double r = std::max(radius_mm * s_, 0.5);
+        const long x0 = std::max(0L, long(std::floor(p.x - r - 1)));
+        const long x1 = std::min(long(img_.width) - 1, long(std::ceil(p.x + r + 1)));
+        const long y0 = std::max(0L, long(std::floor(p.y - r - 1)));
+        const long y1 = std::min(long(img_.height) - 1, long(std::ceil(p.y + r + 1)));
+        for (long y = y0; y <= y1; ++y) {
+            for (long x = x0; x <= x1; ++x) {
+                const double cov =
+                    std::clamp(coverage(r, distance({x + 0.5, y + 0.5}, p)), 0.0, 1.0);
+                if (cov > 0) {
+                    blend(std::size_t(x), std::size_t(y), c, cov);
+                }
+            }
+        }
+    }
+
     RgbaImage& img_;
     double s_;
 };
 
-}  // namespace tapeline::raster
+}  // namespace tapeline::draw
