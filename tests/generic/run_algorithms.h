@@ -18,7 +18,6 @@ struct Results {
 /// Everything from vertex `source` (and paths to vertex `target`) on the mesh of `spec`.
 Results on_surface_mesh(const tapeline::SurfaceSpec& spec, std::size_t source, std::size_t target);
 Results on_polyhedron(const tapeline::SurfaceSpec& spec, std::size_t source, std::size_t target);
-Results on_minimal_mesh(const tapeline::SurfaceSpec& spec, std::size_t source, std::size_t target);
 
 }  // namespace tapeline_test::generic
 
