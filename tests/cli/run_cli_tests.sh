@@ -688,13 +688,15 @@ n = json.load(open("np_report.json"))
 assert "nsga2+ceres" in a, a
 assert "nsga2+ceres" not in [p["origin"] for p in n["front"]] and n["timings_s"]["polish"] == 0, n["front"]
 PY
-# Without the FreeSewing point-name bindings and seams only the importer's bindings are graded.
+# Without the FreeSewing point-name bindings only the importer's bindings and seams are graded.
 expect_ok "grade --no-freesewing-bindings" "$bin" grade "$fs" "${quick[@]}" --out nb.json \
   --report nb_report.json --no-freesewing-bindings
-$py - <<'PY' && ok "--no-freesewing-bindings: no seams, fewer bindings" || fail "--no-freesewing-bindings"
+$py - <<'PY' && ok "--no-freesewing-bindings: fewer seams, fewer bindings" || fail "--no-freesewing-bindings"
 import json
 a, n = json.load(open("a_report.json")), json.load(open("nb_report.json"))
-assert a["seams"] and not n["seams"], (a["seams"], n["seams"])
+# The importer's own seams (pattern data) stay; the point-name table's multi-piece seams go.
+sa, sn = {s["name"] for s in a["seams"]}, {s["name"] for s in n["seams"]}
+assert sn < sa, (sa, sn)
 fa, fn = {f["measurement"] for f in a["fit"]}, {f["measurement"] for f in n["fit"]}
 assert fn < fa, (fa, fn)
 PY
@@ -720,7 +722,8 @@ def numbers(o):
     if isinstance(o, list): return [x for v in o for x in numbers(v)]
     return [o] if isinstance(o, (int, float)) and not isinstance(o, bool) else []
 na, nb = numbers([p["outline"] for p in a["pieces"]]), numbers([p["outline"] for p in b["pieces"]])
-assert len(na) == len(nb) > 0 and all(abs(x - y) <= 1e-9 * (1 + abs(x)) for x, y in zip(na, nb))
+# The database keeps coordinates on a 0.001 mm grid: stored = written within half a step.
+assert len(na) == len(nb) > 0 and all(abs(x - y) <= 0.0005 + 1e-9 * (1 + abs(x)) for x, y in zip(na, nb))
 PY
 expect_ok "grade a pattern by its name in the database" "$bin" grade "$name" --db g.sqlite \
   --from target42.json --to target42.json --threads 2 --generations 0 --out same.json --report same_report.json
