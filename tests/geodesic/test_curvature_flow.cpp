@@ -489,12 +489,15 @@ TEST(CurvatureFlow, CeresSolverMatchesEigen) {
                 std::printf("[ gcf      ] %s: %zu it (eigen %zu), %s, on-mesh %+.1e vs eigen\n",
                             what.c_str(), r.report.iterations, ref.report.iterations,
                             r.report.status.c_str(), rel(r.on_mesh.length, ref.on_mesh.length));
-                EXPECT_EQ(r.report.status, ref.report.status) << what;
                 if (run.linear == L::cgnr) {
+                    // An iterative inner solve converges in more outer steps (it may stop at the
+                    // iteration limit where the direct solve converged): its path length is what
+                    // must agree.
                     EXPECT_NEAR(r.on_mesh.length, ref.on_mesh.length, kCgnrRel * ref.on_mesh.length)
                         << what;
                     continue;
                 }
+                EXPECT_EQ(r.report.status, ref.report.status) << what;
                 ASSERT_EQ(r.smooth.points.size(), ref.smooth.points.size());
                 double max_dev = 0;
                 for (std::size_t i = 0; i < r.smooth.points.size(); ++i)
