@@ -75,8 +75,7 @@ TEST(CompactMesh, ClosedOctahedronMatchesCgalOnBothMeshTypes) {
     for (MeshKind kind : {MeshKind::surface_mesh, MeshKind::polyhedron}) {
         const auto view = compact_mesh_of(kOctahedron, kOctahedronFaces, kind);
         expect_consistent(view, kOctahedron, 8);
-        EXPECT_EQ(std::count(view.mesh.twin.begin(), view.mesh.twin.end(), CompactMesh::kNone),
-                  0);
+        EXPECT_EQ(std::count(view.mesh.twin.begin(), view.mesh.twin.end(), CompactMesh::kNone), 0);
         for (std::uint32_t v = 0; v < 6; ++v)
             EXPECT_EQ(view.mesh.nstart[v + 1] - view.mesh.nstart[v], 4u);
     }
@@ -87,8 +86,7 @@ TEST(CompactMeshWithBorder, OpenOctahedronHasFourBorderHalfedges) {
     for (MeshKind kind : {MeshKind::surface_mesh, MeshKind::polyhedron}) {
         const auto view = compact_mesh_of(kOctahedron, open, kind);
         expect_consistent(view, kOctahedron, 6);
-        EXPECT_EQ(std::count(view.mesh.twin.begin(), view.mesh.twin.end(), CompactMesh::kNone),
-                  4);
+        EXPECT_EQ(std::count(view.mesh.twin.begin(), view.mesh.twin.end(), CompactMesh::kNone), 4);
     }
 }
 

@@ -43,8 +43,8 @@ void check(const char* mesh, const char* what, const std::vector<double>& a,
     }
     std::printf("%-13s %-9s max relative difference %.3g\n", mesh, what, worst);
     if (!(worst <= 1e-12)) {
-        std::printf("FAIL %s %s at vertex %zu: %.17g, Surface_mesh %.17g\n", mesh, what, at,
-                    a[at], b[at]);
+        std::printf("FAIL %s %s at vertex %zu: %.17g, Surface_mesh %.17g\n", mesh, what, at, a[at],
+                    b[at]);
         ++failures;
     }
 }

@@ -49,7 +49,8 @@ Results run_algorithms(const Mesh& tm, std::size_t source, std::size_t target) {
         return boost::make_iterator_property_map(out.begin(), index);
     };
     tg::exact_mmp_distances(tm, s, field(r.mmp));
-    r.mmp_path = tg::exact_mmp_path(tm, tg::SurfacePoint<Mesh>(s), tg::SurfacePoint<Mesh>(t)).length;
+    r.mmp_path =
+        tg::exact_mmp_path(tm, tg::SurfacePoint<Mesh>(s), tg::SurfacePoint<Mesh>(t)).length;
     tg::heat_distances(tm, s, field(r.heat));
     tg::dijkstra_distances(tm, s, field(r.dijkstra));
     tg::CurvatureFlowDistanceOptions gcf;

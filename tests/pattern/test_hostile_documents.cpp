@@ -66,9 +66,11 @@ std::string temp_path(const std::string& name) {
 
 TEST(HostileDocuments, JsonDepthLimitIsExact) {
     // The top-level object is one level: 255 arrays inside it reach the limit, 256 exceed it.
-    EXPECT_NO_THROW(tapeline::json::parse_json(nested_json(tapeline::json::max_json_depth - 1), "ok.json"));
-    const std::string m = invalid_message(
-        [] { tapeline::json::parse_json(nested_json(tapeline::json::max_json_depth), "deep.json"); });
+    EXPECT_NO_THROW(
+        tapeline::json::parse_json(nested_json(tapeline::json::max_json_depth - 1), "ok.json"));
+    const std::string m = invalid_message([] {
+        tapeline::json::parse_json(nested_json(tapeline::json::max_json_depth), "deep.json");
+    });
     EXPECT_NE(m.find("deep.json: JSON nested deeper than 256 levels at byte 265"),
               std::string::npos)
         << m;

@@ -52,8 +52,8 @@ TEST(PatternDetect, RejectsWhatItCannotReadWithMessage) {
     using tapeline_test::expect_error;
     tapeline_test::TempDir dir;
     const std::string missing = dir.file("missing.json");
-    expect_error<InvalidInput>([&] { read_pattern_file(missing); },
-                               {missing, "cannot open"}, "missing file");
+    expect_error<InvalidInput>([&] { read_pattern_file(missing); }, {missing, "cannot open"},
+                               "missing file");
     const std::string text = dir.file("pattern.txt");
     tapeline_test::write_text(text, "not json at all");
     expect_error<InvalidInput>([&] { detect_pattern_format(text); }, {text, "not valid JSON"},

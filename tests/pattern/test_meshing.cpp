@@ -152,8 +152,8 @@ void check_seams(const Pattern& pat, const PatternMesh& mesh) {
         for (std::size_t k = 0; k < fa.size(); ++k) {
             // A side of several edges is sampled edge by edge (simon's FreeSewing seams), so a
             // pair may sit up to one segment apart; on one-edge sides it is within half.
-            EXPECT_NEAR(fa[k], fb[k], (seam.a.count > 1 || seam.b.count > 1 ? 1.0 : 0.5) /
-                                          double(fa.size()));
+            EXPECT_NEAR(fa[k], fb[k],
+                        (seam.a.count > 1 || seam.b.count > 1 ? 1.0 : 0.5) / double(fa.size()));
         }
     }
 }

@@ -1,6 +1,6 @@
 // A downstream program that knows Tapeline only through `find_package(tapeline)`; it follows the
-// README's example (read a mesh, heat distances) plus Dijkstra, and the analytic surfaces with their
-// exact geodesics (tapeline::surfaces, which brings GeographicLib).
+// README's example (read a mesh, heat distances) plus Dijkstra, and the analytic surfaces with
+// their exact geodesics (tapeline::surfaces, which brings GeographicLib).
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/core/mesh_writers.h>
 #include <tapeline/geodesic/dijkstra.h>
@@ -49,8 +49,8 @@ int main() {
     }
     if (truth.size() != heat.size() || worst > 0.1 || oblate_truth.size() != 42 ||
         !(oblate_truth[1] > 0)) {
-        std::cout << "consumer failed: heat differs from the great circle by " << worst
-                  << ", " << oblate_truth.size() << " ellipsoid distances\n";
+        std::cout << "consumer failed: heat differs from the great circle by " << worst << ", "
+                  << oblate_truth.size() << " ellipsoid distances\n";
         return 1;
     }
     if (num_vertices(loaded.mesh) != 642 || std::abs(far_heat - M_PI) > 0.1 * M_PI ||

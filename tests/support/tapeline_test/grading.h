@@ -17,8 +17,8 @@ tapeline::grading::GradeResult grade(const tapeline::pattern::Pattern& base,
                                      const tapeline::grading::GradingOptions& options,
                                      const std::vector<tapeline::grading::SeamSpec>& seams = {});
 
-/// The seams of a FreeSewing draft's design (pattern/freesewing_designs.h); `skipped` gets the rules that
-/// did not apply.
+/// The seams of a FreeSewing draft's design (pattern/freesewing_designs.h); `skipped` gets the
+/// rules that did not apply.
 std::vector<tapeline::grading::SeamSpec> freesewing_seams(const tapeline::pattern::Pattern& p,
                                                           std::vector<std::string>* skipped);
 

@@ -123,8 +123,7 @@ CompactMesh make_compact_mesh(const FaceListGraph& g, VertexPointMap vpm, Vertex
 
 /// make_compact_mesh with the maps given as CGAL named parameters (`vertex_point_map`,
 /// `vertex_index_map`, `face_index_map`; the mesh's own maps by default).
-template <class FaceListGraph,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
+template <class FaceListGraph, class NamedParameters = CGAL::parameters::Default_named_parameters>
 CompactMesh make_compact_mesh(const FaceListGraph& g,
                               const NamedParameters& np = CGAL::parameters::default_values()) {
     using CGAL::parameters::choose_parameter;

@@ -473,7 +473,9 @@ public:
         return setup_.mesh().vertex_count();
     }
     /// The checked index maps and the compact mesh arrays the queries run on.
-    const Setup& setup() const { return setup_; }
+    const Setup& setup() const {
+        return setup_;
+    }
     double mean_edge_length() const {
         return setup_.mesh().mean_edge;
     }

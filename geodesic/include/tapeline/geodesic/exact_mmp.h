@@ -249,8 +249,8 @@ private:
         const auto targets = prep_->checked_targets(options_);
         const auto t0 = internal::Clock::now();
         Progress progress("exact-mmp windows");
-        engine_ = internal::run_mmp(*prep_, pts, targets, options_, options_.keep_windows,
-                                    &progress);
+        engine_ =
+            internal::run_mmp(*prep_, pts, targets, options_, options_.keep_windows, &progress);
         sources_ = std::move(pts);
         report_.method = "exact_mmp";
         report_.vertices = prep_->index().vertex_count();

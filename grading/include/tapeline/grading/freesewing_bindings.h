@@ -15,7 +15,8 @@
 //              (or `count` when given), because a girth goes round the body;
 //   per_piece: one binding per piece (a length each piece realises on its own).
 //
-// The seams of the FreeSewing designs come with the pattern: <tapeline/pattern/freesewing_designs.h>.
+// The seams of the FreeSewing designs come with the pattern:
+// <tapeline/pattern/freesewing_designs.h>.
 #pragma once
 
 #include <tapeline/grading/internal/model.h>

@@ -394,8 +394,9 @@ inline StyleMetrics style_metrics(const Model& m, const Solution& s, double styl
 }  // namespace internal
 
 /// Grades `base` (drafted for `from`) to the measurements `to`, keeping the pattern's own seams and
-/// those of `seams` it does not hold by name (e.g. pattern::freesewing_seams(base)). Throws InvalidInput when a binding names a measurement
-/// `to` lacks or a seam names a missing piece or edge, SolverFailure when Ceres fails.
+/// those of `seams` it does not hold by name (e.g. pattern::freesewing_seams(base)). Throws
+/// InvalidInput when a binding names a measurement `to` lacks or a seam names a missing piece or
+/// edge, SolverFailure when Ceres fails.
 inline GradeResult grade_pattern(const tp::Pattern& base, const sizes::MeasurementSet& from,
                                  const sizes::MeasurementSet& to, const GradingOptions& o = {},
                                  const std::vector<SeamSpec>& seams = {}) {

@@ -255,12 +255,11 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
             s.waypoints.push_back(at.nearest(P("crotch")));
             return ankle_point(s, -out);
         });
-        add({"outseam", {}, {}, 0}, {"waist_front", "waist_back", ankle},
-            [&](auto& s) {
-                const std::string f =
-                    hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
-                return f.empty() ? ankle_point(s, out) : f;
-            });
+        add({"outseam", {}, {}, 0}, {"waist_front", "waist_back", ankle}, [&](auto& s) {
+            const std::string f =
+                hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+            return f.empty() ? ankle_point(s, out) : f;
+        });
     }
     // Along the side of the torso: waist to hip level, and armpit down to the waist (the side
     // points are where a ray from the torso's centre at that level leaves the skin sideways).

@@ -85,8 +85,7 @@ struct NamedSeamRule {
 
 /// The seams of `rules` for pattern `p` (rules whose design starts p.name, every chain found).
 /// A rule whose chains are not all found is skipped and named in `skipped` when given.
-inline std::vector<SeamSpec> named_seams(const Pattern& p,
-                                         const std::vector<NamedSeamRule>& rules,
+inline std::vector<SeamSpec> named_seams(const Pattern& p, const std::vector<NamedSeamRule>& rules,
                                          std::vector<std::string>* skipped = nullptr) {
     std::vector<SeamSpec> out;
     auto find = [&](const std::string& name) -> const Piece* {
@@ -124,9 +123,8 @@ inline std::vector<SeamSpec> named_seams(const Pattern& p,
                 }
                 // The chain is contiguous: first edge and count (wrapping past the last edge).
                 (side == 0 ? s.a : s.b).push_back({piece->name, edges.front(), edges.size()});
-                starts_at_from[side] =
-                    distance(start_point(piece->outline.edges[edges.front()]),
-                                 piece->points.at(c.from)) <= 0.01;
+                starts_at_from[side] = distance(start_point(piece->outline.edges[edges.front()]),
+                                                piece->points.at(c.from)) <= 0.01;
             }
         }
         if (ok) {

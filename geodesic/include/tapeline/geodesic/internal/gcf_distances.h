@@ -444,9 +444,9 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
                 // 3 mean edges short, 47 %). The parent's path with the edge to w appended lies on
                 // the surface; its straightened length is an upper bound.
                 c.swap(unflowed);
-                const double da = field_anchor && start > 0 ? field_at(m, c[start].face, c[start].p,
-                                                                       d, arrival, visited)
-                                                            : inf;
+                const double da = field_anchor && start > 0
+                                      ? field_at(m, c[start].face, c[start].p, d, arrival, visited)
+                                      : inf;
                 len = std::isfinite(da) ? da + measure(c, start, c.size() - 1)
                                         : prefix[u] + measure(c, 0, c.size() - 1);
                 excess = start > 0 ? kink_excess(c, start) : 0.0;

@@ -933,8 +933,8 @@ QueryResult Engine<D, K>::path(std::uint32_t from, std::uint32_t to) const {
     std::vector<std::uint32_t> pred;
     dijkstra_to(
         pr.adj_start, pr.adj, na, nb,
-        [this](std::uint32_t v, std::uint32_t w) { return (node_[w].p - node_[v].p).norm(); },
-        dist, pred);
+        [this](std::uint32_t v, std::uint32_t w) { return (node_[w].p - node_[v].p).norm(); }, dist,
+        pred);
     std::vector<std::uint32_t> chain;
     for (std::uint32_t v = pred[nb]; v != kNone && v != na; v = pred[v])
         chain.push_back(v);

@@ -60,9 +60,8 @@ struct FlowCounts {
 /// Dijkstra over a CSR graph from a, stopped once b is settled: dist (+inf where not reached) and
 /// pred (kNone at a and where not reached). length(v, w) is the length of edge (v, w).
 template <class Length>
-void dijkstra_to(const std::vector<std::uint32_t>& adj_start,
-                 const std::vector<std::uint32_t>& adj, std::uint32_t a, std::uint32_t b,
-                 const Length& length, std::vector<double>& dist,
+void dijkstra_to(const std::vector<std::uint32_t>& adj_start, const std::vector<std::uint32_t>& adj,
+                 std::uint32_t a, std::uint32_t b, const Length& length, std::vector<double>& dist,
                  std::vector<std::uint32_t>& pred) {
     const std::size_t n = adj_start.size() - 1;
     dist.assign(n, std::numeric_limits<double>::infinity());
@@ -206,12 +205,10 @@ public:
     /// `progress` counts the nodes.
     template <class Solved, class Solve, class Commit>
     void run(const Solve& solve, const Commit& commit, Progress& progress) {
-        const double band =
-            shortest_edge(adj_start_, adj_, [&](std::uint32_t v, std::uint32_t u) {
-                return (position_(u) - position_(v)).norm();
-            });
-        progress.advance(
-            static_cast<std::size_t>(std::count(visited.begin(), visited.end(), 1)));
+        const double band = shortest_edge(adj_start_, adj_, [&](std::uint32_t v, std::uint32_t u) {
+            return (position_(u) - position_(v)).norm();
+        });
+        progress.advance(static_cast<std::size_t>(std::count(visited.begin(), visited.end(), 1)));
         propagate_in_batches<Solved>(queue_, tentative, visited, adj_start_, adj_, band, solve,
                                      commit, &progress);
     }
