@@ -21,4 +21,6 @@ void register_measure_commands(CLI::App& app);
 /// --projection (mls or plane) of gcf-points into `options`, its default shown from `options`.
 void add_projection_option(CLI::App* cmd, geodesic::PointCloudDistanceOptions& options,
                            const std::string& help);
+/// Whether path names a regular file (defined in pattern_commands.cpp).
+bool is_file(const std::string& path);
 }  // namespace tapeline::app

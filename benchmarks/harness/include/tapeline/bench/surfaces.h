@@ -2,5 +2,5 @@
 // the one place the harness includes them.
 #pragma once
 
-#include <tapeline/core/analytic_geodesics.h>
-#include <tapeline/core/analytic_surfaces.h>
+#include <tapeline/surfaces/analytic_geodesics.h>
+#include <tapeline/surfaces/analytic_surfaces.h>
