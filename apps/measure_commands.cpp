@@ -46,6 +46,7 @@ struct MeasureArgs {
     std::string landmarks;
     std::string vit;
     std::vector<std::string> pictures;
+    bool strict = false;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -196,6 +197,12 @@ void run_measure(const MeasureArgs& a) {
         ls.push_back(landmark_json(l, r.frame));
     }
     j["landmarks"] = ls;
+    Json warnings = Json::array();  // self-checks (measurement/self_checks.h)
+    for (const auto& w : r.warnings) {
+        warnings.push_back(
+            {{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
+    }
+    j["warnings"] = warnings;
     j["report"] = {{"vertices", r.report.vertices},
                    {"faces", r.report.faces},
                    {"components", r.report.components},
@@ -212,6 +219,9 @@ void run_measure(const MeasureArgs& a) {
 
     for (const auto& w : r.report.warnings) {
         std::cerr << "tapeline: warning: " << w << '\n';
+    }
+    for (const auto& w : r.warnings) {
+        std::cerr << "tapeline: warning: " << w.rule << ": " << w.message << '\n';
     }
     const std::string text = j.dump(1) + "\n";
     if (!a.pictures.empty()) {
@@ -234,6 +244,11 @@ void run_measure(const MeasureArgs& a) {
               << r.landmarks.landmarks.size() << " landmarks (unit " << tm::to_string(r.frame.unit)
               << (r.frame.unit_inferred ? ", inferred" : "") << ", height " << std::fixed
               << std::setprecision(1) << r.frame.height << " mm)\n";
+    if (a.strict && !r.warnings.empty()) {
+        throw InvalidInput(a.body + ": " + std::to_string(r.warnings.size()) +
+                           " self-check warning(s) with --strict; the first: " +
+                           r.warnings.front().message);
+    }
 }
 
 }  // namespace
@@ -260,6 +275,8 @@ void register_measure_commands(CLI::App& app) {
                     "be given more than once)")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    cmd->add_flag("--strict", args->strict,
+                  "Exit non-zero when a self-check warns (the JSON's \"warnings\")");
     cmd->callback([args] { run_measure(*args); });
 }
 

@@ -79,7 +79,7 @@ def main():
                 "landmarks_found": j["report"]["landmarks_found"],
                 "landmarks_total": len(j["landmarks"]),
                 "missing": [m["name"] for m in j["missing"]],
-                "warnings": j.get("warnings", []),
+                "warnings": ["%s: %s" % (w["rule"], w["message"]) for w in j.get("warnings", [])],
                 "time": j["timings_seconds"]["total"],
                 "diff": {},
             })

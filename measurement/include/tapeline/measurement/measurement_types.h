@@ -180,6 +180,15 @@ private:
     }
 };
 
+/// One broken self-check rule (self_checks.h).
+struct CheckWarning {
+    std::string measurement;  ///< the measurement or landmark it concerns
+    /// left_right, bust_underbust, wrist_elbow, landmark_height, segment_length,
+    /// loop_around_part
+    std::string rule;
+    std::string message;  ///< one line naming both
+};
+
 /// How landmarks are searched and girth levels optimised.
 struct MeasureOptions {
     /// Distance between the horizontal sections of the landmark scan, mm; 0: height / 400.
