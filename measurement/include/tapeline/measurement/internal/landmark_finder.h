@@ -1325,11 +1325,26 @@ private:
             set_found(ankle, as.outer, &as.centre);
             // Calf: the first local maximum above the ankle; knee: the first local minimum above
             // the calf (extrema over a window of 2% of the height each way).
-            const auto c = local_extremum(prof, static_cast<std::size_t>(a), true);
-            const auto k = c ? local_extremum(prof, *c, false) : std::nullopt;
+            auto c = local_extremum(prof, static_cast<std::size_t>(a), true);
+            auto k = c ? local_extremum(prof, *c, false) : std::nullopt;
             if (!k || prof[*k].t > *crotch_y_ - 0.05 * height_) {
-                set_missing(knee, "no narrowing of the leg between the calf and the thigh");
-                continue;
+                // No narrowing of its own (a full calf running into the thigh): the narrowest
+                // section where knees are, 0.24-0.33 of the height (0.285 in Drillis & Contini
+                // 1966, in Winter 2009, Fig. 4.1).
+                k.reset();
+                for (std::size_t i = static_cast<std::size_t>(a); i < prof.size(); ++i) {
+                    if (prof[i].t >= y_of(0.24) && prof[i].t <= y_of(0.33) &&
+                        (!k || prof[i].perimeter < prof[*k].perimeter)) {
+                        k = i;
+                    }
+                }
+                if (!k) {
+                    set_missing(knee, "no narrowing of the leg between the calf and the thigh");
+                    continue;
+                }
+                if (!c || *c > *k) {
+                    c = static_cast<std::size_t>(a);
+                }
             }
             // The smallest girth is a flat minimum: its level moved by 8-9 mm between a body and
             // its retriangulated proxy (and the mid-thigh level, halfway up to the crotch, with
