@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace tapeline_test::measurement {
 
@@ -15,9 +16,9 @@ Soup read_body_soup(const std::string& path) {
     const auto loaded = tapeline::read_triangle_mesh<Mesh>(path);
     const Mesh& m = loaded.mesh;
     Soup s;
-    auto index = m.add_property_map<Mesh::Vertex_index, std::uint32_t>("v:soup_index").first;
+    std::vector<std::uint32_t> index(m.num_vertices());  // by Vertex_index::idx()
     for (auto v : m.vertices()) {
-        index[v] = static_cast<std::uint32_t>(s.points.size());
+        index[v.idx()] = static_cast<std::uint32_t>(s.points.size());
         const auto& p = m.point(v);
         s.points.push_back({p.x(), p.y(), p.z()});
     }
@@ -26,7 +27,7 @@ Soup read_body_soup(const std::string& path) {
         std::size_t k = 0;
         for (auto v : vertices_around_face(m.halfedge(f), m)) {
             if (k < 3) {
-                t[k] = index[v];
+                t[k] = index[v.idx()];
             }
             ++k;
         }
