@@ -1,11 +1,11 @@
 // Types shared by the command-line tool's translation units.
 #pragma once
 
-#include <tapeline/core/analytic_surfaces.h>
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/geodesic/geodesic_types.h>
 #include <tapeline/geodesic/point_cloud_types.h>
 #include <tapeline/geodesic/sources.h>
+#include <tapeline/surfaces/analytic_surfaces.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -5,8 +5,8 @@
 #include "commands.h"
 #include "output.h"
 
-#include <tapeline/core/analytic_geodesics.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/surfaces/analytic_geodesics.h>
 
 #include <tapeline_build_info.h>
 

@@ -1,6 +1,8 @@
 // Registration of the tool's subcommand families (each defined in its own translation unit).
 #pragma once
 
+#include <string>
+
 namespace CLI {
 class App;
 }
@@ -12,4 +14,7 @@ void register_bench_commands(CLI::App& app);
 void register_pattern_commands(CLI::App& app);
 void register_grade_commands(CLI::App& app);
 void register_measure_commands(CLI::App& app);
+
+/// Whether path names a regular file (defined in pattern_commands.cpp).
+bool is_file(const std::string& path);
 }  // namespace tapeline::app

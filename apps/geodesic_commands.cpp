@@ -247,6 +247,11 @@ void run_path(const PathArgs& args) {
 
 }  // namespace
 
+/// CLI11 reads an empty number as 0; `--source ""` must not mean vertex 0.
+const CLI::Validator not_empty(
+    [](std::string& value) { return value.empty() ? std::string("empty value") : std::string(); },
+    "");
+
 void register_geodesic_commands(CLI::App& app) {
     CLI::App* geo = app.add_subcommand("geodesic", "Geodesic distances and paths on a mesh");
     geo->require_subcommand(1);
@@ -255,7 +260,8 @@ void register_geodesic_commands(CLI::App& app) {
     CLI::App* dist = geo->add_subcommand(
         "distances", "Geodesic distance from one or more sources to every vertex");
     add_mesh_args(dist, d->mesh);
-    dist->add_option("--source", d->sources, "Source vertex (index in the input file; repeatable)");
+    dist->add_option("--source", d->sources, "Source vertex (index in the input file; repeatable)")
+        ->check(not_empty);
     dist->add_option(
         "--source-point", d->source_points,
         "Source point FACE:B0,B1,B2 in a face of the loaded triangle mesh (repeatable)");
@@ -284,6 +290,7 @@ void register_geodesic_commands(CLI::App& app) {
                    "gcf-points (curvature flow over a grid of cells, the thesis' Algorithm 3)");
     dist->add_option("--cell", d->points.cell,
                      "gcf-points: grid cell size (0: the median distance to the d-th neighbour)")
+        ->check(not_empty)
         ->capture_default_str();
     dist->add_option("--neighbours", d->points.neighbours,
                      "gcf-points: neighbours d of the local surfaces (PCA, MLS)")
@@ -307,8 +314,12 @@ void register_geodesic_commands(CLI::App& app) {
         "Geodesic path between two vertices: exact polyhedral (exact-mmp, exact-cgal) or by "
         "geodesic curvature flow (gcf: also the smooth polyline and the flow's report)");
     add_mesh_args(path, p->mesh);
-    path->add_option("--from", p->from, "Start vertex (index in the input file)")->required();
-    path->add_option("--to", p->to, "End vertex (index in the input file)")->required();
+    path->add_option("--from", p->from, "Start vertex (index in the input file)")
+        ->required()
+        ->check(not_empty);
+    path->add_option("--to", p->to, "End vertex (index in the input file)")
+        ->required()
+        ->check(not_empty);
     path->add_option("--method", p->method, "Method (default exact-mmp)")
         ->check(CLI::IsMember({"exact-mmp", "exact-cgal", "gcf"}));
     path->add_option("--out,-o", p->out, "Output JSON: points and length")->required();

@@ -2,7 +2,6 @@
 // measurement set (grading/grade.h). Everything is computed in memory first; each output is then
 // written to a temporary name and renamed, so a failure leaves no half-written file.
 #include "commands.h"
-#include "pattern_input.h"
 
 #include <tapeline/core/errors.h>
 
@@ -13,15 +12,17 @@
 #include <tapeline/grading/compare.h>
 #include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
-#include <tapeline/grading/measurement_input.h>
 #include <tapeline/grading/output.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
+#include <tapeline/pattern/freesewing_designs.h>
+#include <tapeline/pattern/io_detect.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/svg.h>
 #include <tapeline/pattern/validate.h>
+#include <tapeline/sizes/read_input.h>
 
 #include <nlohmann/json.hpp>
 
@@ -66,7 +67,7 @@ std::string extension(const std::string& path) {
 
 tp::Pattern load(const GradeArgs& a) {
     if (is_file(a.pattern)) {
-        return import_file(a.pattern, a.format, nullptr);
+        return tp::read_pattern_file(a.pattern, a.format, nullptr);
     }
     const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
     if (!is_file(path)) {
@@ -89,16 +90,17 @@ void run_grade(const GradeArgs& a) {
     if (a.ease != "proportional" && a.ease != "keep_mm") {
         throw InvalidInput("--ease: unknown mode '" + a.ease + "' (proportional or keep_mm)");
     }
+    OutputFiles outputs({a.out, a.svg, a.dxf, a.pareto, a.rules, a.rul, a.report, a.fit_table});
     tp::Pattern base = load(a);
     tp::require_valid(base);
-    const tp::MeasurementSet from = tg::read_measurement_input(a.from, a.from_set);
-    const tp::MeasurementSet to = tg::read_measurement_input(a.to, a.to_set);
-    std::vector<tg::SeamSpec> seams;
+    const sizes::MeasurementSet from = sizes::read_measurement_input(a.from, a.from_set);
+    const sizes::MeasurementSet to = sizes::read_measurement_input(a.to, a.to_set);
+    std::vector<tp::SeamSpec> seams;
     std::vector<std::string> skipped_seams;
     if (!a.no_fs_bindings && base.designer == "FreeSewing") {
         tg::add_freesewing_bindings(base);
-        // A pattern graded before already holds the derived seams it can (pattern_seams below).
-        for (tg::SeamSpec& s : tg::freesewing_seams(base, &skipped_seams)) {
+        // The importer stored the derived seams a pattern can hold; the rest join here.
+        for (tp::SeamSpec& s : tp::freesewing_seams(base, &skipped_seams)) {
             const bool held = std::any_of(base.seams.begin(), base.seams.end(),
                                           [&](const tp::Seam& q) { return q.name == s.name; });
             if (!held) {
@@ -119,7 +121,7 @@ void run_grade(const GradeArgs& a) {
         g.report.notes.push_back("no seam table for FreeSewing design '" + base.name +
                                  "': graded without seams");
     }
-    for (const tp::Seam& s : tg::pattern_seams(seams)) {
+    for (const tp::Seam& s : tp::pattern_seams(seams)) {
         g.pattern.seams.push_back(s);  // the graded pattern keeps the seams it was graded with
     }
     for (const std::string& s : skipped_seams) {
@@ -201,10 +203,11 @@ void run_grade(const GradeArgs& a) {
         files.push_back({a.fit_table, tg::fit_table(g.report)});
     }
     for (const auto& [path, text] : files) {
-        write_file_atomically(
+        outputs.write(
             path, [&](std::ostream& s) { s.write(text.data(), std::streamsize(text.size())); },
             true);
     }
+    outputs.commit();
     if (a.store) {
         const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
         tp::PatternDatabase database(path, {});

@@ -11,6 +11,37 @@
 #include <new>
 #include <string>
 
+namespace {
+
+/// CLI11 answers an unknown command word with "A subcommand is required"; name the word instead.
+void check_command_words(CLI::App& app, int argc, char** argv) {
+    CLI::App* level = &app;
+    std::string path;
+    for (int i = 1; i < argc; ++i) {
+        const std::string word = argv[i];
+        const auto subcommands = level->get_subcommands([](CLI::App*) { return true; });
+        if (word.empty() || word[0] == '-' || subcommands.empty()) {
+            return;
+        }
+        CLI::App* next = nullptr;
+        std::string names;
+        for (CLI::App* s : subcommands) {
+            names += (names.empty() ? "" : ", ") + s->get_name();
+            if (s->check_name(word)) {
+                next = s;
+            }
+        }
+        if (!next) {
+            throw tapeline::InvalidInput("unknown command '" + path + word +
+                                         "' (expected one of: " + names + ")");
+        }
+        level = next;
+        path += word + " ";
+    }
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     CLI::App app{
         "Tapeline: geodesics on triangle meshes and point sets for virtual clothing.\n"
@@ -28,6 +59,7 @@ int main(int argc, char** argv) {
     tapeline::app::register_grade_commands(app);
     tapeline::app::register_measure_commands(app);
     try {
+        check_command_words(app, argc, argv);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);

@@ -9,8 +9,9 @@
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/measurement/lengths.h>
 #include <tapeline/measurement/measure.h>
+#include <tapeline/measurement/measurement_json.h>
 #include <tapeline/measurement/picture.h>
-#include <tapeline/measurement/seamly_vit.h>
+#include <tapeline/sizes/seamly.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -77,77 +78,6 @@ void check_output(const std::string& path, const std::string& ext, const std::st
     }
 }
 
-Json vec(const tm::Vec3& p) {
-    // 0.001 mm is far below any mesh's resolution; rounding keeps the file readable.
-    Json a = Json::array();
-    for (double x : p) {
-        a.push_back(std::round(x * 1000.0) / 1000.0);
-    }
-    return a;
-}
-
-Json frame_json(const tm::BodyFrame& f) {
-    Json j;
-    j["unit"] = tm::to_string(f.unit);
-    j["unit_inferred"] = f.unit_inferred;
-    j["up"] = f.up.to_string();
-    j["front"] = f.front.to_string();
-    j["pose"] = tm::to_string(f.pose);
-    j["millimetres_per_unit"] = f.scale;
-    j["height_mm"] = f.height;
-    j["floor_mm"] = f.floor;
-    j["points"] =
-        "canonical frame: millimetres, x to the body's left, y up, z to the front, floor at y = 0";
-    Json rows = Json::array();
-    for (const auto& r : f.rows) {
-        rows.push_back(vec(r));
-    }
-    j["canonical_axes_in_input"] = rows;
-    return j;
-}
-
-Json landmark_json(const tm::Landmark& l, const tm::BodyFrame& f) {
-    Json j;
-    j["name"] = l.name;
-    j["status"] = tm::to_string(l.status);
-    if (l.available()) {
-        j["point"] = vec(l.point);
-        j["point_input"] = vec(f.to_input(l.point));
-    } else {
-        j["point"] = nullptr;
-        j["reason"] = l.reason;
-    }
-    return j;
-}
-
-Json measurement_json(const tm::Measurement& m) {
-    Json j;
-    j["name"] = m.name;
-    j["kind"] = tm::to_string(m.kind);
-    // `tapeline grade` reads value_mm and both names; an angle has no millimetre value.
-    const bool angle = m.kind == tm::MeasurementKind::angle;
-    j["value_mm"] = angle ? Json(nullptr) : Json(std::round(m.value * 100.0) / 100.0);
-    if (angle) {
-        j["value_degrees"] = std::round(m.value * 100.0) / 100.0;
-    }
-    j["iso_clause"] = m.iso_clause.empty() ? Json(nullptr) : Json(m.iso_clause);
-    j["iso_number"] = m.iso_number.empty() ? Json(nullptr) : Json(m.iso_number);
-    j["freesewing_name"] = m.freesewing.empty() ? Json(nullptr) : Json(m.freesewing);
-    const std::string seamly = tm::seamly_name(m.name);
-    j["seamly2d_name"] = seamly.empty() ? "@" + m.name : seamly;
-    j["landmarks"] = m.landmarks;
-    j["closed"] = m.closed;
-    if (m.kind == tm::MeasurementKind::girth) {
-        j["plane"] = {{"point", vec(m.plane_point)}, {"normal", vec(m.plane_normal)}};
-    }
-    Json pts = Json::array();
-    for (const auto& p : m.points) {
-        pts.push_back(vec(p));
-    }
-    j["points"] = pts;
-    return j;
-}
-
 void run_measure(const MeasureArgs& a) {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
@@ -177,39 +107,8 @@ void run_measure(const MeasureArgs& a) {
         tm::measure_skin_lengths(loaded.mesh, r.frame, r.landmarks, r.measurements);
     const auto t2 = Clock::now();
 
-    Json j;
-    j["format"] = "tapeline-measurements";
-    j["version"] = 1;
-    j["body"] = a.body;
-    j["frame"] = frame_json(r.frame);
-    Json ms = Json::array();
-    for (const auto& m : r.measurements.measurements) {
-        ms.push_back(measurement_json(m));
-    }
-    j["measurements"] = ms;
-    Json missing = Json::array();
-    for (const auto& m : r.measurements.missing) {
-        missing.push_back({{"name", m.name}, {"reason", m.reason}});
-    }
-    j["missing"] = missing;
-    Json ls = Json::array();
-    for (const auto& l : r.landmarks.landmarks) {
-        ls.push_back(landmark_json(l, r.frame));
-    }
-    j["landmarks"] = ls;
-    Json warnings = Json::array();  // self-checks (measurement/self_checks.h)
-    for (const auto& w : r.warnings) {
-        warnings.push_back(
-            {{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
-    }
-    j["warnings"] = warnings;
-    j["report"] = {{"vertices", r.report.vertices},
-                   {"faces", r.report.faces},
-                   {"components", r.report.components},
-                   {"sections", r.report.sections},
-                   {"landmarks_found", r.report.landmarks_found},
-                   {"landmarks_missing", r.report.landmarks_missing},
-                   {"warnings", r.report.warnings}};
+    Json j = tm::body_measurements_json(a.body, r.frame, r.measurements, r.landmarks, r.report,
+                                        r.warnings);
     j["timings_seconds"] = {{"load", std::chrono::duration<double>(t1 - t0).count()},
                             {"frame", r.report.frame_seconds},
                             {"landmarks", r.report.landmark_seconds},
@@ -235,7 +134,7 @@ void run_measure(const MeasureArgs& a) {
     }
     if (!a.vit.empty()) {
         write_file_atomically(a.vit, [&](std::ostream& out) {
-            tm::write_seamly_individual(out, r.measurements, a.body);
+            sizes::write_seamly_individual(out, tm::named_values(r.measurements), a.body);
         });
     }
     write_file_atomically(a.out, [&](std::ostream& out) { out << text; });

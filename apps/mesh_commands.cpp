@@ -3,9 +3,9 @@
 #include "commands.h"
 #include "output.h"
 
-#include <tapeline/core/analytic_geodesics.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/core/mesh_writers.h>
+#include <tapeline/surfaces/analytic_geodesics.h>
 
 #include <CLI/CLI.hpp>
 

@@ -10,6 +10,15 @@ namespace tapeline::app {
 
 MethodResult run_gcf(const Mesh& mesh, const Sources& sources, std::size_t window,
                      bool thesis_anchor, bool on_faces, bool repair) {
+    if (sources.vertices.size() > 1 && sources.locations.empty()) {
+        // One input vertex on a non-manifold edge or vertex has one mesh copy per sheet.
+        throw InvalidInput(
+            "gcf-exact / gcf-window take exactly one vertex source, and the source given stands "
+            "for " +
+            std::to_string(sources.vertices.size()) +
+            " mesh vertices (several sources, or one vertex split where the mesh is not "
+            "manifold); give one source away from the split or use exact-mmp");
+    }
     if (sources.vertices.size() != 1 || !sources.locations.empty()) {
         throw InvalidInput(
             "gcf-exact / gcf-window take exactly one vertex source (ring propagation from one "

@@ -1,11 +1,12 @@
 // `tapeline pattern import|list|show|validate|export`: sewing patterns in one model and one
 // database (SQLite file, `--db`, default under the user's data directory).
 #include "commands.h"
-#include "pattern_input.h"
 
+#include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/pattern/database.h>
 #include <tapeline/pattern/dxf.h>
+#include <tapeline/pattern/io_detect.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
@@ -21,11 +22,14 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace tapeline::app {
 
 // Defined in pattern_mesh.cpp (CGAL 2D meshing compiles in its own translation unit).
-void export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm);
+/// Returns the line that says what was written (as `shown_as`).
+std::string export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm,
+                                const std::string& shown_as);
 
 namespace tp = tapeline::pattern;
 
@@ -34,62 +38,26 @@ bool is_file(const std::string& path) {
     return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
 }
 
-/// Which importer a file needs: by --format, or recognised from its JSON keys.
-std::string detect_format(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) {
-        throw InvalidInput(path + ": cannot open file");
-    }
-    nlohmann::json j;
-    try {
-        in >> j;
-    } catch (const nlohmann::json::exception& e) {
-        throw InvalidInput(path + ": not valid JSON (" + std::string(e.what()) +
-                           "); give --format for other files");
-    }
-    if (j.is_object() && j.value("format", "") == "tapeline-pattern") {
-        return "json";
-    }
-    if (j.is_object() && j.contains("pattern") && j["pattern"].is_object() &&
-        j["pattern"].contains("panels")) {
-        return "garmentcode";
-    }
-    if (j.is_object() && j.contains("pieces") && j.contains("design")) {
-        return "freesewing";
-    }
-    throw InvalidInput(path +
-                       ": cannot tell the pattern format (not FreeSewing, GarmentCode or "
-                       "tapeline JSON); give --format");
-}
-
-tp::Pattern import_file(const std::string& path, std::string format, tp::ImportReport* report) {
-    if (format.empty() || format == "auto") {
-        format = detect_format(path);
-    }
-    if (format == "freesewing") {
-        return tp::read_freesewing(path, report);
-    }
-    if (format == "garmentcode") {
-        return tp::read_garmentcode(path, report);
-    }
-    if (format == "json") {
-        return tp::read_pattern_json(path);
-    }
-    throw InvalidInput("--format: unknown pattern format '" + format +
-                       "' (known: auto, freesewing, garmentcode, json)");
-}
-
 namespace {
 
 std::string db_path(const std::string& given) {
     return given.empty() ? tp::default_pattern_database_path() : given;
 }
 
+/// Says when a read-only open had to fall back to SQLite's `immutable` mode.
+void note_read_only_open(const tp::PatternDatabase& database) {
+    if (database.open_report().immutable) {
+        std::cerr << "tapeline: note: " << database.path()
+                  << ": opened immutable (its WAL index cannot be created beside it), so changes "
+                     "other processes make meanwhile are not seen\n";
+    }
+}
+
 /// NAME in the database, or a pattern file when NAME is an existing file.
 tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
                          const std::string& format) {
     if (is_file(name_or_file)) {
-        return import_file(name_or_file, format, nullptr);
+        return tp::read_pattern_file(name_or_file, format, nullptr);
     }
     tp::DatabaseOptions options;
     options.read_only = true;
@@ -100,6 +68,7 @@ tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
                            path + " (import one with `tapeline pattern import`)");
     }
     tp::PatternDatabase database(path, options);
+    note_read_only_open(database);
     return database.load(name_or_file);
 }
 
@@ -121,7 +90,7 @@ void run_import(const ImportArgs& a) {
     std::vector<tp::Pattern> patterns;
     for (const std::string& f : a.files) {
         tp::ImportReport report;
-        tp::Pattern p = import_file(f, a.format, &report);
+        tp::Pattern p = tp::read_pattern_file(f, a.format, &report);
         print_validation(tp::require_valid(p, {}, f), f);
         for (const std::string& n : report.notes) {
             std::cerr << "tapeline: note: " << f << ": " << n << '\n';
@@ -139,10 +108,11 @@ void run_import(const ImportArgs& a) {
             }
         }
     }
+    tp::StoreOptions options;
+    options.replace = a.replace;
+    const std::vector<tp::StoreReport> reports = database.store_all(patterns, options);
     for (std::size_t i = 0; i < patterns.size(); ++i) {
-        tp::StoreOptions options;
-        options.replace = a.replace;
-        const tp::StoreReport r = database.store(patterns[i], options);
+        const tp::StoreReport& r = reports[i];
         std::cout << (r.replaced ? "replaced " : "stored ") << patterns[i].name << " ("
                   << patterns[i].pieces.size() << " pieces, " << patterns[i].seams.size()
                   << " seams; geometry " << r.compression.stored_bytes << " bytes, "
@@ -167,6 +137,7 @@ void run_list(const ListArgs& a) {
     options.read_only = true;
     options.create = false;
     tp::PatternDatabase database(path, options);
+    note_read_only_open(database);
     tp::PatternQuery q = a.query;
     std::stringstream ss(a.tags);
     for (std::string t; std::getline(ss, t, ',');) {
@@ -216,7 +187,7 @@ void run_show(const std::string& name, const std::string& db, const std::string&
 
 void run_validate(const std::string& file, const std::string& format) {
     tp::ImportReport report;
-    const tp::Pattern p = import_file(file, format, &report);
+    const tp::Pattern p = tp::read_pattern_file(file, format, &report);
     const tp::ValidationReport r = tp::require_valid(p, {}, file);
     print_validation(r, file);
     std::cout << file << ": valid (" << p.pieces.size() << " pieces, " << p.seams.size()
@@ -236,29 +207,34 @@ void run_export(const ExportArgs& a) {
     if (a.svg.empty() && a.png.empty() && a.dxf.empty() && a.json.empty() && a.mesh.empty()) {
         throw InvalidInput("give at least one of --svg, --png, --dxf, --json, --mesh");
     }
+    // Every output is checked before any is written, and all are renamed into place together.
+    OutputFiles outputs({a.svg, a.png, a.dxf, a.json, a.mesh});
     const tp::Pattern p = load_pattern(a.name, a.db, a.format);
     tp::require_valid(p, {}, a.name);
+    std::ostringstream said;
     if (!a.svg.empty()) {
-        tp::write_svg(p, a.svg);
-        std::cout << "wrote " << a.svg << '\n';
+        tp::write_svg(p, outputs.temporary(a.svg));
+        said << "wrote " << a.svg << '\n';
     }
     if (!a.png.empty()) {
         tp::PngOptions options;
         options.pixels_per_mm = a.pixels_per_mm;
-        const tp::PngReport r = tp::write_png(p, a.png, options);
-        std::cout << "wrote " << a.png << " (" << r.width_px << " x " << r.height_px << " px)\n";
+        const tp::PngReport r = tp::write_png(p, outputs.temporary(a.png), options);
+        said << "wrote " << a.png << " (" << r.width_px << " x " << r.height_px << " px)\n";
     }
     if (!a.dxf.empty()) {
-        const tp::DxfReport r = tp::write_dxf(p, a.dxf);
-        std::cout << "wrote " << a.dxf << " (DXF-AAMA, " << r.blocks << " piece blocks)\n";
+        const tp::DxfReport r = tp::write_dxf(p, outputs.temporary(a.dxf));
+        said << "wrote " << a.dxf << " (DXF-AAMA, " << r.blocks << " piece blocks)\n";
     }
     if (!a.json.empty()) {
-        tp::write_pattern_json(p, a.json);
-        std::cout << "wrote " << a.json << '\n';
+        tp::write_pattern_json(p, outputs.temporary(a.json));
+        said << "wrote " << a.json << '\n';
     }
     if (!a.mesh.empty()) {
-        export_pattern_mesh(p, a.mesh, a.edge_mm);
+        said << export_pattern_mesh(p, outputs.temporary(a.mesh), a.edge_mm, a.mesh);
     }
+    outputs.commit();
+    std::cout << said.str();
 }
 
 }  // namespace

@@ -2,11 +2,13 @@
 #include <tapeline/pattern/meshing.h>
 
 #include <cmath>
-#include <iostream>
+#include <sstream>
+#include <string>
 
 namespace tapeline::app {
 
-void export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm) {
+std::string export_pattern_mesh(const pattern::Pattern& p, const std::string& path, double edge_mm,
+                                const std::string& shown_as) {
     if (!(edge_mm > 0) || !std::isfinite(edge_mm)) {
         throw InvalidInput("--edge-length must be a positive number of millimetres");
     }
@@ -15,9 +17,11 @@ void export_pattern_mesh(const pattern::Pattern& p, const std::string& path, dou
     pattern::MeshingReport report;
     const pattern::PatternMesh mesh = pattern::mesh_pattern(p, options, &report);
     pattern::write_mesh(mesh, path);
-    std::cout << "wrote " << path << " (" << report.pieces << " pieces, " << report.vertices
-              << " vertices, " << report.triangles << " triangles, longest edge "
-              << report.max_edge_mm << " mm)\n";
+    std::ostringstream said;
+    said << "wrote " << shown_as << " (" << report.pieces << " pieces, " << report.vertices
+         << " vertices, " << report.triangles << " triangles, longest edge " << report.max_edge_mm
+         << " mm)\n";
+    return said.str();
 }
 
 }  // namespace tapeline::app

@@ -22,15 +22,15 @@ if(NOT TARGET CGAL::Eigen3_support)
   message(FATAL_ERROR "tapeline: Eigen 3 not found (Debian package libeigen3-dev)")
 endif()
 
-# Debian's libgeographiclib-dev ships a find module but no config file; wrap it in a target.
+# Optional: only tapeline::surfaces needs it (Debian package libgeographiclib-dev), which ships a
+# find module but no config file; wrap it in a target.
 if(NOT TARGET tapeline::GeographicLib)
   find_path(TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR GeographicLib/GeodesicExact.hpp)
   find_library(TAPELINE_GEOGRAPHICLIB_LIBRARY GeographicLib)
-  if(NOT TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR OR NOT TAPELINE_GEOGRAPHICLIB_LIBRARY)
-    message(FATAL_ERROR "tapeline: GeographicLib not found (Debian package libgeographiclib-dev)")
+  if(TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR AND TAPELINE_GEOGRAPHICLIB_LIBRARY)
+    add_library(tapeline::GeographicLib UNKNOWN IMPORTED)
+    set_target_properties(tapeline::GeographicLib PROPERTIES
+      IMPORTED_LOCATION "${TAPELINE_GEOGRAPHICLIB_LIBRARY}"
+      INTERFACE_INCLUDE_DIRECTORIES "${TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR}")
   endif()
-  add_library(tapeline::GeographicLib UNKNOWN IMPORTED)
-  set_target_properties(tapeline::GeographicLib PROPERTIES
-    IMPORTED_LOCATION "${TAPELINE_GEOGRAPHICLIB_LIBRARY}"
-    INTERFACE_INCLUDE_DIRECTORIES "${TAPELINE_GEOGRAPHICLIB_INCLUDE_DIR}")
 endif()

@@ -1,14 +1,24 @@
 #!/usr/bin/env bash
 # Drives the `tapeline` tool as a user does: exit codes, one-line messages, output files, and
 # agreement of its outputs with independent truth (analytic distances, the exact path length).
-#   run_cli_tests.sh TAPELINE_BINARY SOURCE_DIR WORK_DIR
+#   run_cli_tests.sh TAPELINE_BINARY SOURCE_DIR WORK_DIR [SECTION]
+# SECTION (default: all) runs one section below; tests/CMakeLists.txt makes one ctest test per
+# section, so a failure names its section, and each check prints "ok" or "FAIL" with its name.
+# A new section: `if in_section NAME; then ... fi` (self-contained: it makes the files it reads,
+# in its own WORK_DIR) and NAME added to CLI_SECTIONS in tests/CMakeLists.txt.
 set -u
-bin=$1; root=$2; work=$3
+bin=$1; root=$2; work=$3; section=${4:-all}
 py=/usr/bin/python3
 rm -rf "$work"; mkdir -p "$work"; cd "$work"
-passed=0; failed=0
+passed=0; failed=0; sections_run=0
 ok()   { passed=$((passed+1)); echo "ok   - $1"; }
 fail() { failed=$((failed+1)); echo "FAIL - $1"; }
+in_section() {
+  if [ "$section" = all ] || [ "$section" = "$1" ]; then
+    sections_run=$((sections_run+1)); echo "# section $1"; return 0
+  fi
+  return 1
+}
 
 # expect_fail NAME PATTERN CMD...: non-zero exit and exactly one error line, which matches PATTERN
 # (warnings about the input may come before it).
@@ -25,16 +35,35 @@ expect_ok() {
 }
 
 spot="$root/data/spot.obj"
+fs="$root/data/patterns/aaron_cisFemaleAdult36.json"; gc="$root/data/patterns/shirt_mean_specification.json"
+base36='{"biceps": 286, "chest": 979, "hpsToBust": 286, "hpsToWaistBack": 410, "neck": 360,
+ "shoulderToShoulder": 431, "shoulderSlope": 13, "waistToArmpit": 177, "waistToHips": 130,
+ "hips": 953, "highBust": 916}'
+
+# Inputs several sections read: the generated icosphere:3 with its great-circle truth and exact
+# distances from vertex 0, and the exact distances on spot from vertex 0.
+make_ico() {
+  [ -f ico_exact.txt ] && return
+  expect_ok "generate icosphere:3 with truth" "$bin" mesh generate icosphere:3 --out ico.off --truth-source 0 --truth-out truth.txt
+  expect_ok "exact distances on the generated file" "$bin" geodesic distances ico.off --source 0 --out ico_exact.txt
+}
+make_spot_exact() {
+  [ -f d_exact-cgal.txt ] && return
+  expect_ok "distances exact-cgal on spot" "$bin" geodesic distances "$spot" --source 0 --method exact-cgal --out d_exact-cgal.txt
+}
 
 # --- help ---------------------------------------------------------------------------------------
+if in_section help; then
 for sub in "" "mesh generate" "mesh check" "geodesic distances" "geodesic path" "bench geodesic" \
            "measure"; do
   # shellcheck disable=SC2086
   if "$bin" $sub --help >help.txt 2>&1 && grep -q "Usage" help.txt; then ok "help: tapeline $sub"
   else fail "help: tapeline $sub"; fi
 done
+fi
 
 # --- distances by every method ------------------------------------------------------------------
+if in_section distances; then
 for m in exact-mmp exact-cgal heat heat-idt dijkstra; do
   expect_ok "distances $m on spot" "$bin" geodesic distances "$spot" --source 0 --method $m --out d_$m.txt
   if [ "$(wc -l <d_$m.txt)" -eq 2930 ] && [ "$(head -1 d_$m.txt)" = "0" ]; then ok "distances $m: 2930 lines, source at 0"
@@ -51,8 +80,17 @@ if head -c 3 d.ply | grep -q ply && grep -aq "property float distance" d.ply && 
   ok "PLY has the distance and colours"; else fail "PLY header"; fi
 expect_ok "several sources and a face point" "$bin" geodesic distances "$spot" --source 0 --source 100 \
   --source-point 5:0.2,0.3,0.5 --method dijkstra --out multi.txt
+# Several sources give the pointwise minimum of the single-source fields (the same graph search).
+expect_ok "dijkstra from vertex 100" "$bin" geodesic distances "$spot" --source 100 --method dijkstra --out d100.txt
+expect_ok "dijkstra from the face point" "$bin" geodesic distances "$spot" --source-point 5:0.2,0.3,0.5 \
+  --method dijkstra --out dface.txt
+if paste multi.txt d_dijkstra.txt d100.txt dface.txt | awk '{ m = $2; if ($3 < m) m = $3; if ($4 < m) m = $4;
+     e = $1 - m; if (e < 0) e = -e; if (e > 1e-12 * (m + 1)) bad++; n++ } END { exit !(n == 2930 && bad == 0) }'; then
+  ok "several sources = minimum of the single-source fields"; else fail "multi-source field is not the minimum"; fi
+fi
 
 # --- bad input: one line, non-zero exit, nothing written ------------------------------------------
+if in_section bad_input; then
 expect_fail "unknown method" "heatx" "$bin" geodesic distances "$spot" --source 0 --method heatx --out x.txt
 expect_fail "vertex out of range" "99999" "$bin" geodesic distances "$spot" --source 99999 --out x.txt
 expect_fail "missing mesh file" "nope.off" "$bin" geodesic distances nope.off --source 0 --out x.txt
@@ -69,10 +107,11 @@ expect_fail "bad surface spec" "icosphere:x" "$bin" mesh generate icosphere:x --
 expect_fail "unknown mesh extension" "s.abc" "$bin" mesh generate icosphere:1 --out s.abc
 expect_fail "no truth on a torus" "torus" "$bin" mesh generate torus:1,0.3:16,8 --out t.off --truth-source 0 --truth-out t.txt
 if ls t.off s.off s.abc t.txt >/dev/null 2>&1; then fail "rejected generate wrote a file"; else ok "rejected generate wrote nothing"; fi
+fi
 
 # --- generated surfaces against their exact smooth distance ------------------------------------
-expect_ok "generate icosphere:3 with truth" "$bin" mesh generate icosphere:3 --out ico.off --truth-source 0 --truth-out truth.txt
-expect_ok "exact distances on the generated file" "$bin" geodesic distances ico.off --source 0 --out ico_exact.txt
+if in_section generated; then
+make_ico
 # Polyhedral distances on an inscribed icosphere fall short of the great circle by O(h^2):
 # at level 3 (h ~ 0.1) a mean relative gap of a few 1e-3; 1e-2 is the bound.
 if paste ico_exact.txt truth.txt | awk 'NR > 1 && $2 > 0.3 { s += ($2 - $1) / $2; n++; if ($1 > $2 * (1 + 1e-9)) over++ }
@@ -80,8 +119,11 @@ if paste ico_exact.txt truth.txt | awk 'NR > 1 && $2 > 0.3 { s += ($2 - $1) / $2
   ok "icosphere:3 exact vs great circle ($(cat gap.txt))"; else fail "icosphere:3 vs great circle ($(cat gap.txt))"; fi
 expect_ok "mesh check" "$bin" mesh check ico.off
 if grep -qi "642" out.txt; then ok "mesh check reports 642 vertices"; else fail "mesh check output: $(head -c 300 out.txt)"; fi
+fi
 
 # --- exact path ---------------------------------------------------------------------------------
+if in_section path; then
+make_ico; make_spot_exact
 expect_ok "exact path" "$bin" geodesic path "$spot" --from 0 --to 1500 --method exact-cgal --out path.json
 want=$(sed -n 1501p d_exact-cgal.txt)
 if $py - "$want" <<'PY'
@@ -151,8 +193,10 @@ then ok "--svg: valid SVG, one polygon per unfolded face, exact path straight"; 
 rm -f bad_u.json
 expect_fail "--svg to an unwritable place" "no_such_dir/u.svg" "$bin" geodesic path ico.off --from 0 --to 300 --method gcf --out bad_u.json --svg no_such_dir/u.svg
 if [ ! -e bad_u.json ] && [ ! -e no_such_dir ]; then ok "--svg failure: no JSON, no picture"; else fail "--svg failure left files"; fi
+fi
 
 # --- benchmark harness --------------------------------------------------------------------------
+if in_section bench; then
 expect_ok "bench geodesic" "$bin" bench geodesic --surface icosphere:2 --surface cylinder:1,2:24,8 \
   --methods heat,dijkstra --reference exact-cgal --sources 2 --repeat 2 --out bench.jsonl
 if $py - <<'PY'
@@ -201,8 +245,10 @@ assert all(w[m]["max_rel_error"] < 2e-2 for m in ("gcf-window:2", "gcf-window:6"
 PY
 then ok "bench window sweep lines"; else fail "bench window sweep lines"; fi
 [ ! -e b2.jsonl ] && ok "rejected bench wrote nothing" || fail "rejected bench wrote b2.jsonl"
+fi
 
 # --- geodesics on point clouds (gcf-points) -----------------------------------------------------
+if in_section points; then
 # Points on the unit sphere as .xyz, .csv (with a header) and a faceless .ply; distances against
 # the great circle; the same points in R^5 (.csv); readers' line-numbered rejections.
 $py - <<'PY'
@@ -263,6 +309,7 @@ grep -q "R^5, k 2" out.txt && ok "R^5: manifold dimension 2 estimated" || fail "
 check_sphere "point-cloud distances in R^5 match the great circle" d5.txt
 expect_ok "gcf-points:W with the plane projection" "$bin" geodesic distances sphere.xyz --point-cloud \
   --source 0 --method gcf-points:4 --projection plane --out d_plane.txt
+check_sphere "gcf-points:4 with the plane projection matches the great circle" d_plane.txt
 printf '1 2 3\n4 5 6\n7 8\n' > bad_cols.xyz
 expect_fail "xyz row of another length" "bad_cols.xyz: line 3: 2 coordinates, but line 1 has 3" \
   "$bin" geodesic distances bad_cols.xyz --point-cloud --source 0 --out x.txt
@@ -298,9 +345,10 @@ assert pts[0]["options"]["noise"] == 0.001 and pts[0]["options"]["cell"] == 0.15
 assert pts[1]["options"]["window"] == 4
 assert all(l["mean_rel_error_truth"] < 0.05 for l in pts), [l["mean_rel_error_truth"] for l in pts]
 PY
+fi
 
 # --- sewing patterns ----------------------------------------------------------------------------
-fs="$root/data/patterns/aaron_cisFemaleAdult36.json"; gc="$root/data/patterns/shirt_mean_specification.json"
+if in_section pattern; then
 expect_ok "pattern import" "$bin" pattern import "$fs" "$gc" --db p.sqlite
 expect_ok "pattern list" "$bin" pattern list --db p.sqlite
 if [ "$(wc -l <out.txt)" -eq 2 ] && grep -q "^shirt_mean" out.txt && grep -q "^aaron_cisFemaleAdult36" out.txt; then ok "list shows both"
@@ -313,10 +361,39 @@ expect_ok "pattern show" "$bin" pattern show shirt_mean --db p.sqlite
 grep -q "pieces: 8" out.txt && ok "show: 8 pieces" || fail "show: $(head -c 300 out.txt)"
 expect_ok "pattern export all formats" "$bin" pattern export shirt_mean --db p.sqlite --svg s.svg --png s.png \
   --dxf s.dxf --json s.json --mesh s.obj --edge-length 20
-if grep -q "<svg" s.svg && head -c 8 s.png | grep -q PNG && grep -q "AC1009" s.dxf && grep -q "^vt " s.obj; then ok "exports look right"
+# Every export holds the stored pattern's 8 pieces: the JSON's outlines, one SVG piece group
+# each (named as in the JSON), one DXF BLOCK each, a PNG, and a mesh whose every vertex has a UV
+# (the 2D piece coordinates).
+if $py - <<'PY'
+import json, struct, xml.etree.ElementTree as ET
+ns = "{http://www.w3.org/2000/svg}"
+j = json.load(open("s.json"))
+names = [p["name"] for p in j["pieces"]]
+assert len(names) == 8, names
+groups = [g for g in ET.parse("s.svg").getroot().iter(ns + "g") if g.get("class") == "piece"]
+assert [g.get("data-name") for g in groups] == names, [g.get("data-name") for g in groups]
+assert all(any(e.get("class") == "outline" for e in g) for g in groups)
+dxf = open("s.dxf").read().splitlines()
+blocks = [i for i in range(len(dxf) - 1) if dxf[i].strip() == "0" and dxf[i + 1].strip() == "BLOCK"]
+assert dxf[dxf.index("$ACADVER") + 2].strip() == "AC1009" and len(blocks) == 8, len(blocks)
+png = open("s.png", "rb").read()
+assert png[:8] == b"\x89PNG\r\n\x1a\n" and png[12:16] == b"IHDR"
+v = [l for l in open("s.obj") if l.startswith("v ")]
+vt = [list(map(float, l.split()[1:3])) for l in open("s.obj") if l.startswith("vt ")]
+f = [l for l in open("s.obj") if l.startswith("f ")]
+assert len(v) == len(vt) > 0 and len(f) > 0, (len(v), len(vt), len(f))
+PY
+then ok "exports hold the 8 pieces (JSON, SVG groups, DXF blocks, PNG, mesh with UVs)"
 else fail "export contents"; fi
 expect_ok "exported JSON validates" "$bin" pattern validate s.json
-expect_ok "export from a file" "$bin" pattern export "$fs" --svg f.svg
+expect_ok "export from a file" "$bin" pattern export "$fs" --svg f.svg --json f.json
+$py - <<'PY' && ok "export from a file: one SVG group per piece of the file" || fail "export from a file"
+import json, xml.etree.ElementTree as ET
+ns = "{http://www.w3.org/2000/svg}"
+names = [p["name"] for p in json.load(open("f.json"))["pieces"]]
+groups = [g.get("data-name") for g in ET.parse("f.svg").getroot().iter(ns + "g") if g.get("class") == "piece"]
+assert groups == names and len(names) == 4, (groups, names)
+PY
 printf '{"design": "x", "pieces": [' > broken.json
 expect_fail "truncated pattern JSON" "broken.json" "$bin" pattern import broken.json --db p.sqlite
 expect_ok "database unchanged after a rejected import" "$bin" pattern list --db p.sqlite
@@ -324,11 +401,10 @@ expect_ok "database unchanged after a rejected import" "$bin" pattern list --db 
 expect_fail "unknown pattern" "nope" "$bin" pattern export nope --db p.sqlite --svg n.svg
 expect_fail "export without output" "at least one" "$bin" pattern export shirt_mean --db p.sqlite
 [ ! -e n.svg ] && ok "failed export wrote nothing" || fail "failed export wrote n.svg"
+fi
 
 # --- grade --------------------------------------------------------------------------------------
-base36='{"biceps": 286, "chest": 979, "hpsToBust": 286, "hpsToWaistBack": 410, "neck": 360,
- "shoulderToShoulder": 431, "shoulderSlope": 13, "waistToArmpit": 177, "waistToHips": 130,
- "hips": 953, "highBust": 916}'
+if in_section grade; then
 echo "$base36" > base36.json
 echo "$base36" | sed 's/"chest": 979/"chest": 1143/; s/"hips": 953/"hips": 1112/;
   s/"hpsToWaistBack": 410/"hpsToWaistBack": 455/; s/"shoulderToShoulder": 431/"shoulderToShoulder": 478/;
@@ -339,6 +415,37 @@ expect_ok "grade aaron 36 to 42" "$bin" grade "$fs" --from base36.json --to targ
 if grep -q '"tapeline-pattern"' g.json && grep -q "<svg" g.svg && head -c 8 front.png | grep -q PNG &&
    grep -q '"tapeline-grade-rules"' rules.json && grep -q "AC1009" g.dxf && grep -q "^RULE: DELTA" rules.rul
 then ok "grade outputs look right"; else fail "grade outputs"; fi
+# The grade rules: each outline vertex's rule goes from the base draft's vertex to the graded
+# pattern's (edge N = start of outline edge N), and the .rul table lists the same offsets.
+expect_ok "export the base draft as tapeline JSON" "$bin" pattern export "$fs" --json base.json
+if $py - <<'PY'
+import json
+def start(e):
+    return e["p"][0] if e["type"] == "cubic" else e["a"]
+base = {p["name"]: p for p in json.load(open("base.json"))["pieces"]}
+graded = {p["name"]: p for p in json.load(open("g.json"))["pieces"]}
+r = json.load(open("rules.json"))
+assert r["format"] == "tapeline-grade-rules" and r["units"] == "mm"
+edge_rules = [x for x in r["rules"] if x["point"].startswith("edge ")]
+assert len(edge_rules) == sum(len(p["outline"]) for p in base.values()), len(edge_rules)
+for x in edge_rules:
+    n = int(x["point"].split()[1])
+    b, g = start(base[x["piece"]]["outline"][n]), start(graded[x["piece"]]["outline"][n])
+    assert max(abs(x["base"][0] - b[0]), abs(x["base"][1] - b[1])) <= 1e-9, (x, b)
+    assert max(abs(x["graded"][0] - g[0]), abs(x["graded"][1] - g[1])) <= 1e-9, (x, g)
+    assert abs(x["offset"][0] - (g[0] - b[0])) <= 1e-9 and abs(x["offset"][1] - (g[1] - b[1])) <= 1e-9
+moved = max(abs(c) for x in edge_rules for c in x["offset"])
+assert moved > 5, moved  # 36 to 42 moves the outline by centimetres
+rul = open("rules.rul").read().splitlines()
+assert rul[0] == "RULE: DELTA" and rul[-1] == "END", (rul[0], rul[-1])
+deltas = [tuple(map(float, rul[i + 1].split()[1].split(","))) for i in range(len(rul) - 1)
+          if rul[i].startswith("RULE: ") and rul[i] != "RULE: DELTA"]
+assert len(deltas) == len(edge_rules), (len(deltas), len(edge_rules))
+for d, x in zip(deltas, edge_rules):
+    assert abs(d[0] - x["offset"][0]) <= 5e-4 and abs(d[1] - x["offset"][1]) <= 5e-4, (d, x)
+PY
+then ok "grade rules: base and graded vertices of the outlines, .rul offsets the same"
+else fail "grade rules"; fi
 if $py - <<'PY'
 import json, sys
 r = json.load(open("report.json"))
@@ -348,10 +455,26 @@ PY
 then ok "grade: every binding within 2 mm"; else fail "grade: fit $(head -c 400 report.json)"; fi
 expect_ok "graded pattern validates" "$bin" pattern validate g.json
 expect_ok "grade to a smaller size (42 back to 36)" "$bin" grade g.json --from target42.json \
-  --to base36.json --out back.json --threads 2 --generations 10
+  --to base36.json --out back.json --threads 2 --generations 10 --report back_report.json
+$py - <<'PY' && ok "graded back to 36: targets are the 36 set, bindings within 2 mm" || fail "grade back to 36: $(head -c 300 back_report.json)"
+import json
+want = json.load(open("base36.json"))
+rows = json.load(open("back_report.json"))["fit"]
+assert rows and {"chest", "hips"} <= {r["measurement"] for r in rows}, rows
+for r in rows:
+    assert r["target_mm"] == want[r["measurement"]] and abs(r["error_mm"]) < 2.0, r
+PY
 $py -c 'import json; m = json.load(open("target42.json")); json.dump({"measurements": [{"name": "iso_" + k, "freesewing_name": k, "value_mm": v} for k, v in m.items()]}, open("measure.json", "w"))'
 expect_ok "grade to a tapeline-measure JSON (Ceres only)" "$bin" grade "$fs" --from base36.json \
-  --to measure.json --out gm.json --threads 2 --generations 0
+  --to measure.json --out gm.json --threads 2 --generations 0 --report gm_report.json
+$py - <<'PY' && ok "grade to a measure JSON: its FreeSewing names are the targets, within 2 mm" || fail "grade to a measure JSON: $(head -c 300 gm_report.json)"
+import json
+want = json.load(open("target42.json"))
+r = json.load(open("gm_report.json"))
+assert r["fit"] and r["nsga2_evaluations"] == 0, r["nsga2_evaluations"]
+for row in r["fit"]:
+    assert row["target_mm"] == want[row["measurement"]] and abs(row["error_mm"]) < 2.0, row
+PY
 echo '{"measurements": [{"freesewing_name": "chest", "value_mm": 1000}]}' > m.json
 expect_fail "target missing a bound measurement" "no measurement 'hips'" "$bin" grade "$fs" \
   --from base36.json --to m.json --out miss.json
@@ -385,8 +508,10 @@ assert r["seams"] and all(s["mismatch_mm"] <= 1.0 for s in r["seams"]), r["seams
 PY
 then ok "grade to a .vit: targets are the measured values, bindings within 2 mm, seams within 1 mm"
 else fail "grade to a .vit: $(head -c 300 gv_report.json)"; fi
+fi
 
 # --- measure ------------------------------------------------------------------------------------
+if in_section measure; then
 # A closed octahedron 40 units tall: no unit makes it a human height, so --units is required.
 printf 'v 3 20 0\nv -3 20 0\nv 0 20 3\nv 0 20 -3\nv 0 40 0\nv 0 0 0\n' > tall.obj
 printf 'f 5 3 1\nf 5 2 3\nf 5 4 2\nf 5 1 4\nf 6 1 3\nf 6 3 2\nf 6 2 4\nf 6 4 1\n' >> tall.obj
@@ -522,6 +647,181 @@ PY
 else
   echo "skip - measure on MakeHuman bodies ($bodies absent)"
 fi
+fi
 
+# --- grade options: each against a known answer ----------------------------------------------
+if in_section grade_options; then
+echo "$base36" > base36.json
+echo "$base36" | sed 's/"chest": 979/"chest": 1143/; s/"hips": 953/"hips": 1112/;
+  s/"hpsToWaistBack": 410/"hpsToWaistBack": 455/; s/"shoulderToShoulder": 431/"shoulderToShoulder": 478/;
+  s/"waistToHips": 130/"waistToHips": 144/' > target42.json
+quick=(--from base36.json --to target42.json --seed 7 --threads 2 --population 10 --generations 3)
+expect_ok "grade with a fit table" "$bin" grade "$fs" "${quick[@]}" --out a.json --report a_report.json \
+  --fit-table a_fit.txt
+# The fit table has the report's rows: target, ease, achieved and error to its printed digits.
+$py - <<'PY' && ok "--fit-table rows = the report's fit and seam rows" || fail "--fit-table: $(head -c 300 a_fit.txt)"
+import json
+r = json.load(open("a_report.json"))
+rows = [l.split() for l in open("a_fit.txt").read().splitlines()[1:]]
+fit = [l for l in rows if l[0] != "seam"]
+seams = [l for l in rows if l[0] == "seam"]
+assert len(fit) == len(r["fit"]) > 0 and len(seams) == len(r["seams"]), (len(fit), len(r["fit"]))
+for l, f in zip(fit, r["fit"]):
+    assert l[0] == f["measurement"], (l, f)
+    target, ease, achieved, error = map(float, l[-4:])
+    assert abs(target - f["target_mm"]) <= 0.05 and abs(ease - f["ease_mm"]) <= 0.05, (l, f)
+    assert abs(achieved - f["achieved_mm"]) <= 0.005 and abs(error - f["error_mm"]) <= 0.005, (l, f)
+for l, s in zip(seams, r["seams"]):  # seam NAME LA LB ratio R mismatch M mm
+    assert " ".join(l[1:-7]) == s["name"] and abs(float(l[-2]) - s["mismatch_mm"]) <= 0.005, (l, s)
+PY
+# NSGA-II evaluates its population (--population rounded up to a multiple of 4, at least 8) once
+# per generation and once at the start: 12 x (3 + 1) = 48.
+$py -c 'import json, sys; r = json.load(open("a_report.json")); sys.exit(r["nsga2_evaluations"] != 48)' \
+  && ok "--population 10 --generations 3: 48 NSGA-II evaluations" \
+  || fail "--population: $($py -c 'import json; print(json.load(open("a_report.json"))["nsga2_evaluations"])')"
+# Polishing adds Ceres-refined front members (origin nsga2+ceres); --no-polish adds none.
+expect_ok "grade --no-polish" "$bin" grade "$fs" "${quick[@]}" --out np.json --report np_report.json --no-polish
+$py - <<'PY' && ok "--no-polish: no polished candidates, polishing otherwise" || fail "--no-polish"
+import json
+a = [p["origin"] for p in json.load(open("a_report.json"))["front"]]
+n = json.load(open("np_report.json"))
+assert "nsga2+ceres" in a, a
+assert "nsga2+ceres" not in [p["origin"] for p in n["front"]] and n["timings_s"]["polish"] == 0, n["front"]
+PY
+# Without the FreeSewing point-name bindings only the importer's bindings and seams are graded.
+expect_ok "grade --no-freesewing-bindings" "$bin" grade "$fs" "${quick[@]}" --out nb.json \
+  --report nb_report.json --no-freesewing-bindings
+$py - <<'PY' && ok "--no-freesewing-bindings: fewer seams, fewer bindings" || fail "--no-freesewing-bindings"
+import json
+a, n = json.load(open("a_report.json")), json.load(open("nb_report.json"))
+# The importer's own seams (pattern data) stay; the point-name table's multi-piece seams go.
+sa, sn = {s["name"] for s in a["seams"]}, {s["name"] for s in n["seams"]}
+assert sn < sa, (sa, sn)
+fa, fn = {f["measurement"] for f in a["fit"]}, {f["measurement"] for f in n["fit"]}
+assert fn < fa, (fa, fn)
+PY
+# --format: naming the format the file has gives the same result as recognising it.
+expect_ok "grade --format freesewing" "$bin" grade "$fs" "${quick[@]}" --out fmt.json --format freesewing
+cmp -s fmt.json a.json && ok "--format freesewing = recognised format" || fail "--format freesewing changed the result"
+expect_fail "grade --format garmentcode on a FreeSewing file" "$(basename "$fs")" "$bin" grade "$fs" \
+  "${quick[@]}" --out x.json --format garmentcode
+# --store / --db / --replace: the graded pattern goes into the database, a second store needs
+# --replace, and what is stored is what was written.
+expect_ok "grade --store --db" "$bin" grade "$fs" "${quick[@]}" --out st.json --store --db g.sqlite
+name=$($py -c 'import json; print(json.load(open("st.json"))["name"])')
+expect_ok "stored graded pattern listed" "$bin" pattern list --db g.sqlite
+grep -q "^$name" out.txt && ok "database lists the graded pattern '$name'" || fail "not stored: $(cat out.txt)"
+expect_fail "grade --store twice" "is already stored" "$bin" grade "$fs" "${quick[@]}" --out st2.json --store --db g.sqlite
+expect_ok "grade --store --replace" "$bin" grade "$fs" "${quick[@]}" --out st3.json --store --replace --db g.sqlite
+expect_ok "export the stored pattern" "$bin" pattern export "$name" --db g.sqlite --json st_db.json
+$py - <<'PY' && ok "stored pattern = written pattern" || fail "stored pattern differs"
+import json
+a, b = json.load(open("st3.json")), json.load(open("st_db.json"))
+def numbers(o):
+    if isinstance(o, dict): return [x for k in sorted(o) for x in numbers(o[k])]
+    if isinstance(o, list): return [x for v in o for x in numbers(v)]
+    return [o] if isinstance(o, (int, float)) and not isinstance(o, bool) else []
+na, nb = numbers([p["outline"] for p in a["pieces"]]), numbers([p["outline"] for p in b["pieces"]])
+# The database keeps coordinates on a 0.001 mm grid: stored = written within half a step.
+assert len(na) == len(nb) > 0 and all(abs(x - y) <= 0.0005 + 1e-9 * (1 + abs(x)) for x, y in zip(na, nb))
+PY
+expect_ok "grade a pattern by its name in the database" "$bin" grade "$name" --db g.sqlite \
+  --from target42.json --to target42.json --threads 2 --generations 0 --out same.json --report same_report.json
+$py -c 'import json, sys; r = json.load(open("same_report.json")); sys.exit(not all(abs(f["error_mm"]) < 2 for f in r["fit"]))' \
+  && ok "graded from the database: bindings within 2 mm" || fail "grade from the database"
+# --compare against a reference that is the base scaled by 1.05 about the origin: the uniform
+# oracle (each base piece scaled by the perimeter ratio) is the reference itself, so its
+# deviation is the outline sampling's (< 0.01 mm); the unchanged base is 5 % off.
+expect_ok "export the base as tapeline JSON" "$bin" pattern export "$fs" --json base.json
+$py - <<'PY'
+import json
+j = json.load(open("base.json")); s = 1.05
+def sc(p): return [s * p[0], s * p[1]]
+for piece in j["pieces"]:
+    for e in piece["outline"]:
+        for k in ("a", "b"):
+            if k in e: e[k] = sc(e[k])
+        if "p" in e: e["p"] = [sc(q) for q in e["p"]]
+        if "radius" in e: e["radius"] *= s
+j["name"] = "reference"
+json.dump(j, open("ref105.json", "w"))
+PY
+expect_ok "grade --compare" "$bin" grade "$fs" "${quick[@]}" --out c.json --report c_report.json --compare ref105.json
+$py - <<'PY' && ok "--compare: uniform oracle 0 on a scaled reference, unchanged base 5 % off" || fail "--compare: $(head -c 300 c_report.json)"
+import json
+r = json.load(open("c_report.json"))
+c = r["comparison"]
+names = {p["name"] for p in json.load(open("base.json"))["pieces"]}
+assert {p["piece"] for p in c} == names, c
+for p in c:
+    assert p["uniform_oracle_mean_mm"] < 0.01 and p["uniform_oracle_max_mm"] < 0.01, p
+    assert p["unchanged_mean_mm"] > 1.0, p
+    assert p["graded_mean_mm"] > 0, p
+PY
+fi
+
+# --- geodesic and mesh options ----------------------------------------------------------------
+if in_section geodesic_options; then
+make_ico
+# --surface builds the same mesh `mesh generate` writes: the same exact distances.
+expect_ok "distances on --surface icosphere:3" "$bin" geodesic distances --surface icosphere:3 --source 0 --out surf.txt
+if paste surf.txt ico_exact.txt | awk '{ e = $1 - $2; if (e < 0) e = -e; if (e > 1e-6 * ($2 + 1)) bad++; n++ }
+     END { exit !(n == 642 && bad == 0) }'; then ok "--surface = the generated file"; else fail "--surface differs from the generated file"; fi
+expect_ok "path on --surface" "$bin" geodesic path --surface icosphere:3 --from 0 --to 300 --out sp.json
+$py -c 'import json, sys; w = float(open("ico_exact.txt").read().split()[300]); L = json.load(open("sp.json"))["length"]; sys.exit(abs(L - w) > 1e-6 * w)' \
+  && ok "--surface path length = exact distance" || fail "--surface path length"
+expect_fail "a file and --surface" "surface|excludes" "$bin" geodesic distances ico.off --surface icosphere:3 --source 0 --out x.txt
+expect_fail "neither a file nor --surface" "give a mesh file or --surface SPEC" "$bin" geodesic distances --source 0 --out x.txt
+# --strict: a quad is triangulated (with a warning) unless --strict, which rejects it by name.
+printf 'OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n' > quad.off
+expect_ok "a quad without --strict" "$bin" geodesic distances quad.off --source 0 --out q.txt
+$py -c 'import math, sys; d = [float(x) for x in open("q.txt")]; sys.exit(not (len(d) == 4 and abs(d[2] - math.sqrt(2)) < 1e-9 and abs(d[1] - 1) < 1e-9))' \
+  && ok "triangulated quad: flat distances" || fail "quad distances: $(cat q.txt)"
+expect_fail "a quad with --strict" "quad.off.*4 vertices; strict mode accepts triangles only" "$bin" geodesic distances quad.off --strict --source 0 --out x.txt
+[ ! -e x.txt ] && ok "rejected runs wrote nothing" || fail "a rejected run wrote x.txt"
+# mesh generate --seed: the jitter follows the seed (default 1).
+expect_ok "generate with the default seed" "$bin" mesh generate ellipsoid:1,1,0.5:2:0.2 --out e_default.off
+expect_ok "generate --seed 1" "$bin" mesh generate ellipsoid:1,1,0.5:2:0.2 --seed 1 --out e1.off
+expect_ok "generate --seed 2" "$bin" mesh generate ellipsoid:1,1,0.5:2:0.2 --seed 2 --out e2.off
+expect_ok "generate --seed 2 again" "$bin" mesh generate ellipsoid:1,1,0.5:2:0.2 --seed 2 --out e2b.off
+if cmp -s e_default.off e1.off && cmp -s e2.off e2b.off && ! cmp -s e1.off e2.off &&
+   [ "$(sed -n 2p e1.off)" = "$(sed -n 2p e2.off)" ]; then ok "--seed: same seed same mesh, another seed another jitter"
+else fail "--seed"; fi
+fi
+
+# --- bench options ----------------------------------------------------------------------------
+if in_section bench_options; then
+# --mesh: a file's lines name it; --reference none leaves the errors null.
+expect_ok "bench --mesh --reference none" "$bin" bench geodesic --mesh "$spot" --methods dijkstra \
+  --reference none --out m.jsonl
+$py - "$spot" <<'PY' && ok "bench --mesh lines: the file, 2930 vertices, no reference errors" || fail "bench --mesh: $(head -c 300 m.jsonl)"
+import json, sys
+lines = [json.loads(l) for l in open("m.jsonl")]
+assert lines and all(l["method"] == "dijkstra" for l in lines), lines
+for l in lines:
+    assert l["mesh_file"].endswith("spot.obj") and l["vertices"] == 2930 and l["status"] == "ok", l
+    assert l["mean_rel_error"] is None and l["max_rel_error"] is None, l
+PY
+# --append adds to the file; without it the file is replaced.
+one=$(wc -l <m.jsonl)
+expect_ok "bench --append" "$bin" bench geodesic --mesh "$spot" --methods dijkstra --reference none --append --out m.jsonl
+[ "$(wc -l <m.jsonl)" -eq $((2 * one)) ] && ok "--append: twice the lines" || fail "--append: $(wc -l <m.jsonl) lines, one run $one"
+expect_ok "bench without --append" "$bin" bench geodesic --mesh "$spot" --methods dijkstra --reference none --out m.jsonl
+[ "$(wc -l <m.jsonl)" -eq "$one" ] && ok "without --append the file is replaced" || fail "replace: $(wc -l <m.jsonl) lines"
+# --timeout: a run that takes longer is killed and recorded as `timeout`; the next method runs.
+# (exact-cgal needs ~10 s on icosphere:6, Dijkstra a few ms.)
+expect_ok "bench --timeout" "$bin" bench geodesic --surface icosphere:6 --methods exact-cgal,dijkstra \
+  --reference none --sources 1 --timeout 2 --out t.jsonl
+$py - <<'PY' && ok "--timeout: timeout recorded, next method ran" || fail "--timeout: $(head -c 400 t.jsonl)"
+import json
+lines = {l["method"]: l for l in map(json.loads, open("t.jsonl"))}
+assert lines["exact-cgal"]["status"] == "timeout", lines["exact-cgal"]
+assert "killed after" in lines["exact-cgal"]["message"], lines["exact-cgal"]
+assert lines["dijkstra"]["status"] == "ok", lines["dijkstra"]
+PY
+fi
+
+if [ $sections_run -eq 0 ]; then fail "no section named '$section'"; fi
+[ $((passed+failed)) -gt 0 ] || fail "no check ran"
 echo "$passed passed, $failed failed"
 [ $failed -eq 0 ]

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <string>
@@ -615,3 +616,47 @@ TEST_F(Reject, ScalarPlyBadPropertyName) {
 }
 
 }  // namespace
+
+// --- coordinate range and hostile paths ---------------------------------------------------------
+
+TEST_F(Reject, CoordinateBeyondRange) {
+    expect_load_error<InvalidInput>(
+        file("huge.off",
+             "OFF\n4 4 0\n0 0 0\n1e300 0 0\n0 1e300 0\n0 0 1e300\n"
+             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+        {"vertex 1 has coordinate 1e+300, outside the supported range |x| <= 1e+15",
+         "rescale or re-centre"});
+}
+
+TEST_F(Reject, CoordinatesSpanTooLittle) {
+    expect_load_error<InvalidInput>(
+        file("tiny.off",
+             "OFF\n4 4 0\n0 0 0\n1e-300 0 0\n0 1e-300 0\n0 0 1e-300\n"
+             "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+        {"the 4 points span only 1.73e-300 (bounding-box diagonal)", "at least 1e-12"});
+}
+
+TEST_F(Reject, CoordinatesSpanTooLittleForTheirOffset) {
+    // A unit tetrahedron 1e11 away from the origin keeps only 5 digits of its shape.
+    expect_load_error<InvalidInput>(
+        file("far.off",
+             "OFF\n4 4 0\n1e11 1e11 1e11\n100000000001 1e11 1e11\n1e11 100000000001 1e11\n"
+             "1e11 1e11 100000000001\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+        {"span only 1.73", "at coordinates up to 1e+11", "1e-09 of the largest coordinate"});
+}
+
+TEST_F(Reject, CoordinatesAtTheLimitsLoad) {
+    // 1e14 (inside |x| <= 1e15) with a spread of 1e14, and a spread of 1e-11 near the origin.
+    EXPECT_NO_THROW(load(file("big.off",
+                              "OFF\n4 4 0\n0 0 0\n1e14 0 0\n0 1e14 0\n0 0 1e14\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
+    EXPECT_NO_THROW(load(file("small.off",
+                              "OFF\n4 4 0\n0 0 0\n1e-11 0 0\n0 1e-11 0\n0 0 1e-11\n"
+                              "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")));
+}
+
+TEST_F(Reject, DirectoryGivenAsMesh) {
+    const std::string dir = dir_ + "/mesh.obj";
+    std::filesystem::create_directories(dir);
+    expect_error<InvalidInput>([&] { load(dir); }, {dir + ": is a directory, not a file"});
+}

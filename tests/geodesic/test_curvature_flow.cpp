@@ -298,69 +298,54 @@ TEST(CurvatureFlow, UnreachableIsAValue) {
     EXPECT_TRUE(std::isinf(r.on_mesh.length));
 }
 
-// Timings (printout only, DESIGN.md §7): icosphere:6 (41k vertices), one-shot (preparation
-// included) and with a reused GeodesicPathSolver; the three Eigen solvers side by side on
-// icosphere:5 (median of 5 runs of the flow part).
-TEST(CurvatureFlow, TimingsPrintout) {
-    {
-        const tg::Soup soup = tg::surface("icosphere:6");
-        const std::size_t a = 0, b = vertex_at_angle(soup, a, 120.0);
-        std::vector<double> total, init, flow, plain;
-        tg::CurvatureFlowOptions no_straighten;
-        no_straighten.straighten = false;
-        for (int rep = 0; rep < 5; ++rep) {
-            // Side by side: the plane-cut trace only, then the default (straightened) output.
-            plain.push_back(tg::gcf_path(soup, tg::SurfacePoint::vertex(a),
-                                         tg::SurfacePoint::vertex(b), no_straighten)
-                                .report.seconds);
-            const auto r =
-                tg::gcf_path(soup, tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(b));
-            total.push_back(r.report.seconds);
-            init.push_back(r.report.init_seconds);
-            flow.push_back(r.report.flow_seconds);
-            EXPECT_EQ(r.report.status, "converged");
-            if (rep == 0)
-                std::printf("[ gcf      ] icosphere:6 V=%zu 120 deg: %zu samples, %zu it\n",
-                            r.report.vertices, r.report.samples, r.report.iterations);
-        }
-        std::printf(
-            "[ gcf      ] icosphere:6 one-shot median: total %.1f ms (init %.1f incl. mesh "
-            "preparation and Dijkstra, flow %.1f); without straightening %.1f ms\n",
-            1e3 * median(total), 1e3 * median(init), 1e3 * median(flow), 1e3 * median(plain));
-        std::vector<std::pair<tg::SurfacePoint, tg::SurfacePoint>> pairs;
-        for (double deg : {30.0, 60.0, 90.0, 120.0, 150.0, 179.0})
-            pairs.push_back({tg::SurfacePoint::vertex(a),
-                             tg::SurfacePoint::vertex(vertex_at_angle(soup, a, deg))});
-        const auto q = tg::gcf_paths(soup, pairs);
-        std::printf("[ gcf      ] icosphere:6 solver reused: prepare %.1f ms; per query:",
-                    1e3 * q.prepare_seconds);
-        for (const auto& r : q.paths)
-            std::printf(" %.1f ms (%zu it, %s)", 1e3 * r.report.seconds, r.report.iterations,
-                        r.report.status.c_str());
-        std::printf("\n");
-    }
+// A reused GeodesicPathSolver answers each query as the one-shot function does, and the three
+// Eigen solvers of the flow step reach the same path. Their times are the benchmark's
+// (benchmarks/run_gcf.sh), not a unit test's (DESIGN.md §7). Tolerances: the same deterministic
+// flow gives the same path, 1e-12 relative (rounding only); sparse QR solves the same
+// least-squares step as LDLT (measured: the same length to the last digit, 1e-9); LSCG solves it
+// iteratively, takes other steps and stops elsewhere inside the flow's own tolerance (measured
+// 26 iterations against 18, length +8.8e-8 relative): 3e-7.
+TEST(CurvatureFlow, ReusedSolverAndTheEigenSolversAgreeWithTheOneShotPath) {
     const tg::Soup soup = tg::surface("icosphere:5");
-    const std::size_t a = 0, b = vertex_at_angle(soup, a, 150.0);
+    const std::size_t a = 0;
+    std::vector<std::pair<tg::SurfacePoint, tg::SurfacePoint>> pairs;
+    for (double deg : {30.0, 90.0, 150.0, 179.0})
+        pairs.push_back(
+            {tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(vertex_at_angle(soup, a, deg))});
+    const auto q = tg::gcf_paths(soup, pairs);
+    ASSERT_EQ(q.paths.size(), pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        const auto one = tg::gcf_path(soup, pairs[k].first, pairs[k].second);
+        EXPECT_EQ(q.paths[k].report.status, "converged") << k;
+        EXPECT_EQ(one.report.status, "converged") << k;
+        EXPECT_NEAR(q.paths[k].on_mesh.length, one.on_mesh.length, 1e-12 * one.on_mesh.length) << k;
+        EXPECT_EQ(q.paths[k].report.iterations, one.report.iterations) << k;
+    }
+    const std::size_t b = vertex_at_angle(soup, a, 150.0);
+    tg::GcfResult ref;
     for (auto s : {tg::CurvatureFlowSolver::eigen_normal_ldlt,
                    tg::CurvatureFlowSolver::eigen_sparse_qr, tg::CurvatureFlowSolver::eigen_lscg}) {
         tg::CurvatureFlowOptions o;
         o.solver = s;
-        std::vector<double> flow;
-        tg::GcfResult r;
-        for (int rep = 0; rep < 5; ++rep) {
-            r = tg::gcf_path(soup, tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(b), o);
-            flow.push_back(r.report.flow_seconds / std::max<std::size_t>(1, r.report.iterations));
+        const auto r =
+            tg::gcf_path(soup, tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(b), o);
+        EXPECT_EQ(r.report.status, "converged") << r.report.solver;
+        EXPECT_EQ(r.report.solver, std::string(to_string(s)));
+        if (s == tg::CurvatureFlowSolver::eigen_normal_ldlt) {
+            ref = r;
+            continue;
         }
-        std::printf(
-            "[ gcf      ] icosphere:5 150 deg solver %-18s median %.3f ms per iteration, "
-            "%zu it, on-mesh length %.9f, %s\n",
-            r.report.solver.c_str(), 1e3 * median(flow), r.report.iterations, r.on_mesh.length,
-            r.report.status.c_str());
+        std::printf("[ gcf      ] icosphere:5 150 deg solver %-18s %zu it, on-mesh %.12f (%+.1e)\n",
+                    r.report.solver.c_str(), r.report.iterations, r.on_mesh.length,
+                    rel(r.on_mesh.length, ref.on_mesh.length));
+        const double rel_tol = s == tg::CurvatureFlowSolver::eigen_lscg ? 3e-7 : 1e-9;
+        EXPECT_NEAR(r.on_mesh.length, ref.on_mesh.length, rel_tol * ref.on_mesh.length)
+            << r.report.solver;
     }
 }
 
 // Non-convex and open meshes: the on-mesh path is a path on the faces (>= exact polyhedral
-// distance) and, once converged, a few percent from it at most.
+// distance) and, converged or not, a few percent from it at most.
 TEST(CurvatureFlow, OtherMeshesAgainstExactPolyhedral) {
     struct Case {
         const char* name;
@@ -374,6 +359,8 @@ TEST(CurvatureFlow, OtherMeshesAgainstExactPolyhedral) {
         const std::size_t n = c.soup.points.size();
         const std::size_t a = 0;
         const tg::MmpField mmp = tg::mmp_distances(c.soup, tg::Sources::vertex(a));
+        const tg::MmpField loc_mmp =
+            tg::mmp_distances(c.soup, tg::Sources{{tg::SurfacePoint::face(0, {0.2, 0.3, 0.5})}});
         for (std::size_t b : {n / 3, n / 2, n - 1}) {
             const auto r =
                 tg::gcf_path(c.soup, tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(b));
@@ -388,8 +375,7 @@ TEST(CurvatureFlow, OtherMeshesAgainstExactPolyhedral) {
                 r.report.samples, r.report.iterations, r.report.scaled_max_geodesic_curvature,
                 r.report.status.c_str(), r.report.trace_fallbacks);
             EXPECT_GE(r.on_mesh.length, e * (1 - 1e-9)) << c.name << " " << b;
-            if (r.report.status == "converged")
-                EXPECT_LE(r.on_mesh.length, e * 1.03) << c.name << " " << b;
+            EXPECT_LE(r.on_mesh.length, e * 1.03) << c.name << " " << b << " " << r.report.status;
             // A face-location start and a restart from the traced path. Regression: on the
             // jittered ellipsoid these cycled without converging while the projection looked only
             // at the 1-ring of the nearest vertex.
@@ -400,17 +386,25 @@ TEST(CurvatureFlow, OtherMeshesAgainstExactPolyhedral) {
             interp.interpolate_normals = true;
             const auto loc_i = tg::gcf_path(c.soup, tg::SurfacePoint::face(0, {0.2, 0.3, 0.5}),
                                             tg::SurfacePoint::vertex(b), interp);
+            const double e_loc = loc_mmp.d[b];
             std::printf(
-                "[ gcf      ]   face-location start: %s (kappa*h %.1e); interpolated "
-                "normals: %s (%.1e); restart from the traced path: %s (%.1e)\n",
+                "[ gcf      ]   face-location start: %s (kappa*h %.1e, %+.2e vs exact); "
+                "interpolated normals: %s (%.1e, %+.2e); restart from the traced path: %s "
+                "(%.1e)\n",
                 loc.report.status.c_str(), loc.report.scaled_max_geodesic_curvature,
-                loc_i.report.status.c_str(), loc_i.report.scaled_max_geodesic_curvature,
+                (loc.on_mesh.length - e_loc) / e_loc, loc_i.report.status.c_str(),
+                loc_i.report.scaled_max_geodesic_curvature, (loc_i.on_mesh.length - e_loc) / e_loc,
                 again.report.status.c_str(), again.report.scaled_max_geodesic_curvature);
-            // Known limitation: on spot (irregular, non-convex) some runs cycle without reaching
-            // the tolerance; they still return a path on the mesh.
+            // Converged or not (on spot, irregular and non-convex, some runs cycle without
+            // reaching the flow's tolerance), the result is a path on the faces from the face
+            // location: never below the exact distance, and within the same 3 % of it.
             if (std::string(c.name) != "spot") {
                 EXPECT_EQ(loc.report.status, "converged") << c.name << " " << b;
                 EXPECT_EQ(again.report.status, "converged") << c.name << " " << b;
+            }
+            for (const auto* p : {&loc, &loc_i}) {
+                EXPECT_GE(p->on_mesh.length, e_loc * (1 - 1e-9)) << c.name << " " << b;
+                EXPECT_LE(p->on_mesh.length, e_loc * 1.03) << c.name << " " << b;
             }
             EXPECT_GE(again.on_mesh.length, e * (1 - 1e-9));
             EXPECT_NEAR(again.on_mesh.length, r.on_mesh.length, 1e-3 * r.on_mesh.length);
@@ -444,17 +438,19 @@ TEST(CurvatureFlow, InterpolatedNormals) {
     }
 }
 
-// Ceres against the Eigen normal-equation LDLT on the same flow (printout of the time per
-// iteration, DESIGN.md §7; no timed assertion). Both minimise the same linear least-squares
-// system per step; they differ in how the endpoints are held (Ceres: constant parameter blocks;
-// Eigen: rows of weight 1e4, which let the endpoint coordinates move by O(1e-8) inside the solve,
-// though the endpoints themselves are never moved) and in rounding. So the iterates agree to far
-// below the flow's own tolerance and the flow takes the same number of steps: the final samples
-// must agree to 1e-8 mean edge lengths (the endpoint rows' effect; measured <= 7e-11) and the
-// lengths to 1e-9 relative. CGNR (iterative, inexact steps) is only printed.
+// Ceres against the Eigen normal-equation LDLT on the same flow (the time per iteration is the
+// benchmark's, DESIGN.md §7). Both minimise the same linear least-squares system per step; they
+// differ in how the endpoints are held (Ceres: constant parameter blocks; Eigen: rows of weight
+// 1e4, which let the endpoint coordinates move by O(1e-8) inside the solve, though the endpoints
+// themselves are never moved) and in rounding. So the iterates agree to far below the flow's own
+// tolerance and the flow takes the same number of steps: the final samples must agree to 1e-8
+// mean edge lengths (the endpoint rows' effect; measured <= 7e-11) and the lengths to 1e-9
+// relative. CGNR solves each step only to its iterative tolerance, so its path is another point
+// of the flow's stopping set: converged, and its length within kCgnrRel of the exact steps'.
 TEST(CurvatureFlow, CeresSolverMatchesEigen) {
     if (!tg::gcf_ceres_available())
         GTEST_SKIP() << "tapeline::geodesic_ceres not built";
+    constexpr double kCgnrRel = 1e-6;
     for (int level : {5, 6}) {
         const std::string spec = "icosphere:" + std::to_string(level);
         const tg::Soup soup = tg::surface(spec);
@@ -477,44 +473,40 @@ TEST(CurvatureFlow, CeresSolverMatchesEigen) {
             if (samples <= 40)  // dense: 3.4 ms per iteration at 100 samples
                 runs.push_back({"ceres dense_qr", S::ceres, L::dense_qr});
             tg::GcfResult ref;
-            double ref_ms = 0;
             for (const Run& run : runs) {
                 tg::CurvatureFlowOptions o;
                 o.sample_count = samples;
                 o.solver = run.solver;
                 o.ceres_linear_solver = run.linear;
-                std::vector<double> per_it;
-                tg::GcfResult r;
-                for (int rep = 0; rep < 3; ++rep) {
-                    r = tg::gcf_path(soup, tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(b),
-                                     o);
-                    per_it.push_back(r.report.flow_seconds /
-                                     std::max<std::size_t>(1, r.report.iterations));
-                }
-                const double ms = 1e3 * median(per_it);
-                double max_dev = 0;
+                const tg::GcfResult r =
+                    tg::gcf_path(soup, tg::SurfacePoint::vertex(a), tg::SurfacePoint::vertex(b), o);
+                EXPECT_EQ(r.report.solver, std::string(to_string(run.solver)));
                 if (run.solver == S::eigen_normal_ldlt) {
                     ref = r;
-                    ref_ms = ms;
-                } else {
-                    ASSERT_EQ(r.smooth.points.size(), ref.smooth.points.size());
-                    for (std::size_t i = 0; i < r.smooth.points.size(); ++i)
-                        max_dev = std::max(max_dev,
-                                           tg::euclidean(r.smooth.points[i], ref.smooth.points[i]));
+                    continue;
                 }
-                std::printf(
-                    "[ gcf      ] %s 150 deg %3zu samples %-32s %7.3f ms/it (%5.1fx eigen), "
-                    "%2zu it, %s, on-mesh %.12f, max sample deviation from eigen %.1e h\n",
-                    spec.c_str(), samples, run.name, ms, ms / ref_ms, r.report.iterations,
-                    r.report.status.c_str(), r.on_mesh.length, max_dev / h);
-                EXPECT_EQ(r.report.solver, std::string(to_string(run.solver)));
-                if (run.solver == S::eigen_normal_ldlt || run.linear == L::cgnr)
-                    continue;  // CGNR is iterative: only printed
-                EXPECT_EQ(r.report.status, ref.report.status) << run.name;
-                EXPECT_EQ(r.report.iterations, ref.report.iterations) << run.name;
-                EXPECT_LE(max_dev, 1e-8 * h) << run.name;
+                const std::string what = spec + " " + std::to_string(samples) + " " + run.name;
+                std::printf("[ gcf      ] %s: %zu it (eigen %zu), %s, on-mesh %+.1e vs eigen\n",
+                            what.c_str(), r.report.iterations, ref.report.iterations,
+                            r.report.status.c_str(), rel(r.on_mesh.length, ref.on_mesh.length));
+                if (run.linear == L::cgnr) {
+                    // An iterative inner solve converges in more outer steps (it may stop at the
+                    // iteration limit where the direct solve converged): its path length is what
+                    // must agree.
+                    EXPECT_NEAR(r.on_mesh.length, ref.on_mesh.length, kCgnrRel * ref.on_mesh.length)
+                        << what;
+                    continue;
+                }
+                EXPECT_EQ(r.report.status, ref.report.status) << what;
+                ASSERT_EQ(r.smooth.points.size(), ref.smooth.points.size());
+                double max_dev = 0;
+                for (std::size_t i = 0; i < r.smooth.points.size(); ++i)
+                    max_dev =
+                        std::max(max_dev, tg::euclidean(r.smooth.points[i], ref.smooth.points[i]));
+                EXPECT_EQ(r.report.iterations, ref.report.iterations) << what;
+                EXPECT_LE(max_dev, 1e-8 * h) << what;
                 EXPECT_NEAR(r.on_mesh.length, ref.on_mesh.length, 1e-9 * ref.on_mesh.length)
-                    << run.name;
+                    << what;
             }
         }
     }
@@ -601,6 +593,9 @@ TEST(CurvatureFlow, ParallelPathsEqualSequential) {
 // on a farther locally shortest path: it is then still a polyhedral geodesic, straight in its own
 // unfolding where it passes no vertex (1e-9 relative), and never shorter than the exact path.
 TEST(CurvatureFlow, StraightenedPathIsTheExactDistanceInItsClass) {
+    // From the Dijkstra start the flow may settle on a farther locally shortest path: measured
+    // worst +2.4e-7 (icosphere:5), +5.7e-6 (icosphere:6), +3.5e-7 (spot); about 3.5x.
+    constexpr double kDijkstraGap = 2e-5;
     struct Case {
         const char* name;
         tg::Soup soup;
@@ -627,6 +622,7 @@ TEST(CurvatureFlow, StraightenedPathIsTheExactDistanceInItsClass) {
             exact_count += std::abs(gap) <= 1e-9;
             worst = std::max(worst, gap);
             EXPECT_GE(gap, -1e-9) << c.name << " " << b;
+            EXPECT_LE(gap, kDijkstraGap) << c.name << " " << b;
             EXPECT_TRUE(r.report.straightened) << c.name << " " << b;
             if (r.report.straighten_bends == 0) {
                 const tg::UnfoldedPath u = tg::unfold(c.soup, r.on_mesh.points);

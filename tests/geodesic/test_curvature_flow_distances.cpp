@@ -18,8 +18,9 @@
 // - Algorithm 2 (window 8), the thesis' straightest-parent rule and prefix anchor: every vertex
 //   keeps the prefix of its parent up to the fixed sample, so each generation adds a kink and the
 //   kinks add up along the path. Measured mean 1.5e-2 / 2.1e-2, max 9.0e-2 / 1.06e-1: the issue's
-//   targets (mean <= 0.1 %, max <= 1 %) are NOT met by the rule as written; asserted only as a
-//   regression bound. With shortest_parent: mean 4.9e-3 / 2.5e-3, max 1.5e-2 / 7.6e-3.
+//   targets (mean <= 0.1 %, max <= 1 %) are NOT met by the rule as written; its accuracy is a
+//   benchmark row (gcf-window-thesis), only its invariants are asserted here. With shortest_parent:
+//   mean 4.9e-3 / 2.5e-3, max 1.5e-2 / 7.6e-3.
 // - Algorithm 2 with the field anchor (the default; interpolated anchor distance, anchor slid to
 //   straighten the kink, cut-locus guard): on-face length against exact polyhedral, like for
 //   like, mean 5.6e-4 / 1.6e-4, max 9.7e-4 / 8.4e-4: the targets are met; Phong-lifted against
@@ -192,9 +193,10 @@ TEST(CurvatureFlowDistances, IcosphereAgainstExactPolyhedralAndGreatCircle) {
                 EXPECT_LE(vs_truth.mean, level == 3 ? 2e-3 : 7e-4) << what;
                 EXPECT_LE(vs_truth.max, 1e-2) << what;
             } else if (!c.shortest_parent) {
-                // Targets not met (see the header); regression bound on the measured values.
-                EXPECT_LE(vs_exact.mean, 3e-2) << what;
-                EXPECT_LE(vs_exact.max, 0.15) << what;
+                // The thesis' prefix rule misses the targets (see the header); its accuracy is a
+                // benchmark row (gcf-window-thesis:8 in benchmarks/run_gcf.sh), not a unit-test
+                // snapshot: here only expect_basic's properties (every vertex reached, finite,
+                // never below the straight line) and convergence of every flow hold it.
             } else {
                 // Measured 4.9e-3 / 1.5e-2 (level 3), 2.5e-3 / 7.6e-3 (level 4).
                 EXPECT_LE(vs_exact.mean, level == 3 ? 6e-3 : 3.5e-3) << what;
@@ -301,10 +303,11 @@ TEST(CurvatureFlowDistances, EpsilonMBoundAgainstTheWholePathFlow) {
                 d2.report.error_bound, worst, ratio);
             EXPECT_GT(d2.report.epsilon, 0.0);
             EXPECT_GT(d2.report.max_faces, 10u);
+            // The thesis' prefix rule does not meet the bound (7.3x, 9.3x measured; see above and
+            // geodesic/README.md): a property of the rule, recorded, not asserted, so that an
+            // improvement does not fail. The field anchor must meet it.
             if (field)
                 EXPECT_LE(ratio, 1.0);
-            else  // the refutation, kept as a regression check of the measured ratio
-                EXPECT_GT(ratio, 3.0);
         }
     }
 }
@@ -394,10 +397,8 @@ TEST(CurvatureFlowDistances, SpotOnFaceLengthMeetsTheTargets) {
 // and 1.25 % long. Started from the graph's path, the flow lands in the geodesic's class.
 TEST(CurvatureFlowDistances, SteinerGraphStartReachesGeodesicsThroughSaddleVertices) {
     tg::Soup knight;
-    if (!tg::shared_mesh("meshes/decimated-knight.off", knight)) {
-        std::printf("[ gcf-dist ] decimated-knight skipped: shared data absent\n");
-        return;
-    }
+    if (!tg::shared_mesh("meshes/decimated-knight.off", knight))
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/meshes/decimated-knight.off absent";
     for (const std::size_t source : {std::size_t{0}, std::size_t{186}}) {
         const tg::MmpField mmp = tg::mmp_distances(knight, tg::Sources::vertex(source));
         tg::CurvatureFlowDistanceOptions o;
@@ -425,10 +426,8 @@ TEST(CurvatureFlowDistances, SteinerGraphStartReachesGeodesicsThroughSaddleVerti
 // Steiner-graph distance (an upper bound of the exact one), it is re-solved all the same.
 TEST(CurvatureFlowDistances, FieldFarBelowTheGraphDistanceIsReSolved) {
     tg::Soup knight;
-    if (!tg::shared_mesh("meshes/decimated-knight.off", knight)) {
-        std::printf("[ gcf-dist ] decimated-knight skipped: shared data absent\n");
-        return;
-    }
+    if (!tg::shared_mesh("meshes/decimated-knight.off", knight))
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/meshes/decimated-knight.off absent";
     const tg::MmpField mmp = tg::mmp_distances(knight, tg::Sources::vertex(0));
     tg::CurvatureFlowDistanceOptions o;
     o.window = 4;
@@ -465,11 +464,12 @@ TEST(CurvatureFlowDistances, SteinerGraphIsAnUpperBoundAndTightNearTheSource) {
             EXPECT_GE(g[v], exact.d[v] * (1 - 1e-12)) << near << " " << v;
         EXPECT_EQ(g[5], 0.0);
     }
+}
+
+TEST(CurvatureFlowDistances, SteinerGraphOnBunnyIsTightWithFinerPointsNearTheSource) {
     tg::Soup bunny;
-    if (!tg::shared_mesh("meshes/bunny_decimated.off", bunny)) {
-        std::printf("[ gcf-dist ] bunny_decimated skipped: shared data absent\n");
-        return;
-    }
+    if (!tg::shared_mesh("meshes/bunny_decimated.off", bunny))
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/meshes/bunny_decimated.off absent";
     const tg::MmpField mmp = tg::mmp_distances(bunny, tg::Sources::vertex(2966));
     const std::vector<double> g8 = tg::steiner_distances(bunny, 2966, 8);
     const std::vector<double> g32 = tg::steiner_distances(bunny, 2966, 8, 32, 12);
@@ -502,10 +502,8 @@ TEST(CurvatureFlowDistances, DefaultMarginMendsShortRunsAndKeepsExactVertices) {
     for (const Case c :
          {Case{"meshes/decimated-knight.off", 420}, Case{"meshes/blub_triangulated.obj", 5771}}) {
         tg::Soup soup;
-        if (!tg::shared_mesh(c.mesh, soup)) {
-            std::printf("[ gcf-dist ] %s skipped: shared data absent\n", c.mesh);
-            continue;
-        }
+        if (!tg::shared_mesh(c.mesh, soup))
+            GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/" << c.mesh << " absent";
         const tg::MmpField mmp = tg::mmp_distances(soup, tg::Sources::vertex(c.source));
         tg::CurvatureFlowDistanceOptions o;
         o.window = 8;
@@ -545,10 +543,9 @@ TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
     std::vector<Case> cases{{"spot", tg::spot(), 548},
                             {"torus:1,0.4:160,64", tg::surface("torus:1,0.4:160,64"), 10088}};
     tg::Soup fandisk;
-    if (tg::shared_mesh("meshes/fandisk.obj", fandisk))
+    const bool with_fandisk = tg::shared_mesh("meshes/fandisk.obj", fandisk);
+    if (with_fandisk)
         cases.push_back({"fandisk", fandisk, 0});
-    else
-        std::printf("[ gcf-dist ] fandisk skipped: shared data absent\n");
     for (const auto& c : cases) {
         const tg::MmpField mmp = tg::mmp_distances(c.soup, tg::Sources::vertex(c.source));
         tg::CurvatureFlowDistanceOptions o;
@@ -580,4 +577,8 @@ TEST(CurvatureFlowDistances, RepairPassMeetsOnePercentAndStaysAboveExact) {
         }
         EXPECT_EQ(changed, repaired.report.repair_improved) << c.name;
     }
+    // Spot and the torus ran above (a failure there is reported as such); the fandisk case is the
+    // skipped part.
+    if (!with_fandisk)
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/meshes/fandisk.obj absent";
 }

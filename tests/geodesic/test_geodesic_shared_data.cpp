@@ -31,7 +31,7 @@ double min_excess_over_euclid(const tg::Soup& soup, const std::vector<double>& d
 TEST(SharedData, BodyMeshHeatIdtBeatsHeatAndBoundsHold) {
     tg::Soup soup;
     if (!tg::shared_mesh("bodies/mh_male_average.obj", soup))
-        GTEST_SKIP() << "shared data absent";
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/bodies/mh_male_average.obj absent";
     const double h = tg::mean_edge_length(soup);
     const tg::Field exact = tg::distances(soup, tg::Method::exact, tg::Sources::vertex(0));
     const tg::Field heat = tg::distances(soup, tg::Method::heat, tg::Sources::vertex(0));
@@ -54,7 +54,7 @@ TEST(SharedData, BodyMeshHeatIdtBeatsHeatAndBoundsHold) {
 TEST(SharedData, GenusOneMesh) {
     tg::Soup soup;
     if (!tg::shared_mesh("meshes/bob_tri.obj", soup))
-        GTEST_SKIP() << "shared data absent";
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/meshes/bob_tri.obj absent";
     const double h = tg::mean_edge_length(soup);
     const tg::Field exact = tg::distances(soup, tg::Method::exact, tg::Sources::vertex(0));
     EXPECT_GE(min_excess_over_euclid(soup, exact.d, 0), -1e-12);

@@ -94,7 +94,7 @@ TEST(Heat, IntrinsicDelaunayFixesObtuseTriangles) {
 // Several sources. Default (min_of_single_sources): exactly the minimum of single-source heat
 // fields from the same prefactored solver, and within tolerance of the exact multi-source field
 // (icosphere:4, 4 sources, measured mean 1.60e-2, far max 6.2e-2). CGAL's joint solve
-// (cgal_joint) carries the CGAL#9565 bias: measured mean 2.95e-2, far max 0.150 -- worse.
+// (cgal_joint) carries the CGAL#9565 bias: measured mean 2.95e-2, far max 0.150.
 TEST(Heat, MultipleSourcesAvoidTheJointNormalisationBias) {
     const tg::Soup soup = tg::surface("icosphere:4");
     const std::vector<std::size_t> src = {0, 100, 500, 1200};
@@ -118,12 +118,19 @@ TEST(Heat, MultipleSourcesAvoidTheJointNormalisationBias) {
     EXPECT_LT(ours.mean_rel, 0.03);
     EXPECT_LT(ours.max_rel_far, 0.1);
 
+    // The joint mode is honoured (one joint solve, not the pointwise minimum) and is a distance
+    // field within its own measured error (mean 2.95e-2: 2x margin). Whether it beats the default
+    // is a benchmark question (geodesic/README.md), not asserted: an improvement must not fail.
     tg::HeatOptions joint;
     joint.multi_source = tg::HeatMultiSource::cgal_joint;
-    const auto cgal = tg::compare(
-        tg::distances(soup, tg::Method::heat, all, tg::MeshKind::surface_mesh, joint).d, exact.d);
-    EXPECT_GT(cgal.mean_rel, ours.mean_rel) << "CGAL's joint multi-source heat got better: "
-                                               "revisit the min_of_single_sources default";
+    const auto joint_d =
+        tg::distances(soup, tg::Method::heat, all, tg::MeshKind::surface_mesh, joint).d;
+    ASSERT_EQ(joint_d.size(), soup.points.size());
+    for (std::size_t v = 0; v < joint_d.size(); ++v)
+        ASSERT_TRUE(std::isfinite(joint_d[v]) && joint_d[v] >= 0) << v << " " << joint_d[v];
+    EXPECT_NE(joint_d, fields.back().d);
+    const auto cgal = tg::compare(joint_d, exact.d);
+    EXPECT_LT(cgal.mean_rel, 0.06);
 }
 
 // One solver, several queries: each query equals the one-shot function, the factorisation time

@@ -125,7 +125,7 @@ TEST(PathOnFaces, ExactFromASourceJustInsideAnEdgeIsEuclidean) {
 TEST(PathOnFaces, OnMeshNeverBelowExactOnABody) {
     tg::Soup soup;
     if (!tg::shared_mesh("bodies/mh_male_average.obj", soup))
-        GTEST_SKIP() << "shared data absent";
+        GTEST_SKIP() << TAPELINE_SHARED_DATA_DIR << "/bodies/mh_male_average.obj absent";
     check_on_mesh_not_below_exact(soup, 36, 1, "mh_male_average");
 }
 

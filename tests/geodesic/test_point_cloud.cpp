@@ -130,12 +130,19 @@ TEST(PointCloud, SphereAgainstGreatCircleCleanAndNoisy) {
                     en.mean, en.max);
             expect_basic(f, src, what);
             EXPECT_EQ(f.report.manifold_dimension, 2u) << what;
-            if (noise == 0 && projection == tg::PointCloudProjection::mls)
-                EXPECT_LE(e.mean, 1e-2) << what;  // the issue's target (measured 1.9e-4)
-            else if (noise == 0)
-                EXPECT_LE(e.mean, 1e-2) << what;  // plane: measured 1.5e-3
-            else  // measured 3.5e-3 (0.1 %) and 1.6e-2 (0.5 %); floor 0.26 % and 1.3 %
-                EXPECT_LE(e.mean, 3e-2) << what;
+            // Bounds: about 3x the measured mean error (the propagation is deterministic; the
+            // margin absorbs library differences), far inside the 1 % target.
+            const bool mls = projection == tg::PointCloudProjection::mls;
+            if (noise == 0) {
+                EXPECT_LE(e.mean, mls ? 6e-4 : 4.5e-3) << what;  // measured 1.9e-4, 1.5e-3
+            } else {
+                // Against the clean truth the noise floor (0.26 %, 1.3 %) dominates: measured
+                // 3.5e-3 and 1.6e-2, bounded at 1.5x (3x the margin above the floor). Against
+                // the noisy points' own great circles, what is left is the method's: measured
+                // 1.1e-3 / 1.2e-3 (0.1 %, mls / plane) and 3.8e-3 / 2.1e-3 (0.5 %), about 3x.
+                EXPECT_LE(e.mean, noise < 0.002 ? 5e-3 : 2.4e-2) << what;
+                EXPECT_LE(en.mean, noise < 0.002 ? 3.5e-3 : 1.2e-2) << what;
+            }
         }
     }
 }
@@ -177,6 +184,16 @@ TEST(PointCloud, SphereInR5AgainstGreatCircle) {
     const tg::CloudField f3 = tg::cloud_distances(c3, src);
     const Errors e3 = relative_errors(f3.d, truth, 3 * f3.report.cell_size);
     print("the same sphere in R^3", f3, e3);
+    expect_basic(f3, src, "R^3");
+    const tg::CloudField f5 = tg::cloud_distances(c5, src);
+    const Errors e35 = relative_errors(f5.d, f3.d, 3 * f3.report.cell_size);
+    std::printf("[ gcf-pts  ] R^5 against R^3, point by point: mean %.2e max %.2e\n", e35.mean,
+                e35.max);
+    // Both are within the method's error of the same truth (R^3 measured 2.4e-4 mean, as R^5),
+    // and of each other point by point (measured 1.2e-4 mean): the embedding changes the grid,
+    // not the surface. About 3x each.
+    EXPECT_LE(e3.mean, 7e-4);
+    EXPECT_LE(e35.mean, 4e-4);
 }
 
 TEST(PointCloud, SwissRollAgainstUnrolledPlane) {
@@ -209,8 +226,8 @@ TEST(PointCloud, MeshVerticesAgainstExactPolyhedral) {
     print("spot vertices vs exact polyhedral (MMP)", f, e);
     expect_basic(f, src, "spot");
     // The points sample a smooth surface the polyhedron only approximates (2930 vertices, sharp
-    // ears and horns): measured mean 4.0e-3; bound with margin.
-    EXPECT_LE(e.mean, 3e-2);
+    // ears and horns): measured mean 4.0e-3; 3x that.
+    EXPECT_LE(e.mean, 1.2e-2);
 }
 
 TEST(PointCloud, PathsAgainstGreatCircle) {
@@ -238,34 +255,25 @@ TEST(PointCloud, PathsAgainstGreatCircle) {
     }
 }
 
-// The issue asks for both neighbour searches, measured, the faster kept: the same kNN graph
-// (distances identical up to ties between equidistant points) and the time of each.
+// Both neighbour searches build the same kNN graph: the distances agree up to ties between
+// equidistant points (1e-9; measured 0). Which one is faster is the benchmark's to say.
 TEST(PointCloud, KnnBackendsAgree) {
-    for (const std::size_t n : {10000u, 40000u}) {
-        const tg::Cloud c = tg::random_sphere(n, 4);
-        tg::CloudField f[2];
-        double best[2] = {1e300, 1e300};
-        int b = 0;
-        for (const auto backend : {tg::PointCloudKnn::cgal, tg::PointCloudKnn::nanoflann}) {
-            tg::PointCloudDistanceOptions o;
-            o.knn = backend;
-            for (int rep = 0; rep < 3; ++rep) {
-                f[b] = tg::cloud_distances(c, 0, o);
-                best[b] = std::min(best[b], f[b].report.knn_seconds);
-            }
-            ++b;
-        }
-        double diff = 0;
-        for (std::size_t i = 0; i < n; ++i)
-            diff = std::max(diff, std::abs(f[0].d[i] - f[1].d[i]));
-        std::printf(
-            "[ gcf-pts  ] kNN graph (d = 16) of %zu points, best of 3: CGAL Kd_tree %.1f "
-            "ms, nanoflann %.1f ms (%.2fx); max |d_cgal - d_nanoflann| %.1e\n",
-            n, 1e3 * best[0], 1e3 * best[1], best[0] / best[1], diff);
-        EXPECT_EQ(f[0].report.knn, "cgal");
-        EXPECT_EQ(f[1].report.knn, "nanoflann");
-        EXPECT_LE(diff, 1e-9);
+    const std::size_t n = 10000;
+    const tg::Cloud c = tg::random_sphere(n, 4);
+    tg::CloudField f[2];
+    int b = 0;
+    for (const auto backend : {tg::PointCloudKnn::cgal, tg::PointCloudKnn::nanoflann}) {
+        tg::PointCloudDistanceOptions o;
+        o.knn = backend;
+        f[b++] = tg::cloud_distances(c, 0, o);
     }
+    double diff = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        diff = std::max(diff, std::abs(f[0].d[i] - f[1].d[i]));
+    EXPECT_EQ(f[0].report.knn, "cgal");
+    EXPECT_EQ(f[1].report.knn, "nanoflann");
+    expect_basic(f[0], 0, "cgal kNN");
+    EXPECT_LE(diff, 1e-9);
 }
 
 TEST(PointCloud, NormalMapAndSolverReuse) {
@@ -364,25 +372,19 @@ TEST(PointCloud, RejectsBadInputWithItsMessage) {
     expect_invalid([&] { tg::cloud_distances(c, 0, o); }, "is too small for the extent");
 }
 
-// Time against the number of points (printed; the exponent is fitted between the sizes) and the
-// error against the cell size and the window at a fixed cloud.
+// The error at several sizes (the default cell shrinks with the spacing) and against the cell
+// size and the window at a fixed cloud; time against the number of points is the benchmark's
+// (benchmarks/run_points.sh, part 3).
 TEST(PointCloud, ScalingAndParameters) {
-    std::vector<std::pair<double, double>> nt;
-    for (const std::size_t n : {2500u, 10000u, 40000u}) {
+    for (const std::size_t n : {2500u, 10000u}) {
         const tg::Cloud c = tg::random_sphere(n, 12);
         const auto truth = great_circle(c, 0);
         const tg::CloudField f = tg::cloud_distances(c, 0);
         const Errors e = relative_errors(f.d, truth, 3 * f.report.cell_size);
-        print("sphere, scaling", f, e);
-        nt.emplace_back(static_cast<double>(n), f.report.seconds);
+        print("sphere, " + std::to_string(n) + " points", f, e);
+        expect_basic(f, 0, std::to_string(n) + " points");
         EXPECT_LE(e.mean, 1e-2);
     }
-    const double exponent = std::log(nt.back().second / nt.front().second) /
-                            std::log(nt.back().first / nt.front().first);
-    std::printf(
-        "[ gcf-pts  ] time ~ n^%.2f between %g and %g points (default cell: the cell "
-        "shrinks with the spacing)\n",
-        exponent, nt.front().first, nt.back().first);
     const tg::Cloud c = tg::random_sphere(10000, 13);
     const auto truth = great_circle(c, 0);
     for (const double cell : {0.05, 0.08, 0.12, 0.2}) {

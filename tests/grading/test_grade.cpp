@@ -13,6 +13,7 @@
 
 namespace tg = tapeline::grading;
 namespace tp = tapeline::pattern;
+namespace ts = tapeline::sizes;
 
 namespace {
 
@@ -28,8 +29,8 @@ tp::Piece rectangle(const std::string& name, double w, double h) {
     return p;
 }
 
-tp::MeasurementSet set(const std::string& name, std::map<std::string, double> v) {
-    tp::MeasurementSet m;
+ts::MeasurementSet set(const std::string& name, std::map<std::string, double> v) {
+    ts::MeasurementSet m;
     m.name = name;
     m.values = std::move(v);
     return m;
@@ -44,6 +45,16 @@ tg::GradingOptions quick() {
 }
 
 }  // namespace
+
+// The FreeSewing drafts and sets live in ../shared/data: without them these tests skip, naming
+// the path.
+#define SKIP_WITHOUT_FREESEWING()                                                                 \
+    do {                                                                                          \
+        const std::string sets_ =                                                                 \
+            std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json"; \
+        if (!std::ifstream(sets_))                                                                \
+            GTEST_SKIP() << sets_ << " absent";                                                   \
+    } while (0)
 
 // One piece, width bound to "chest" (count 2, ease 20), height to "length": the graded rectangle
 // must realise both targets, stay a rectangle (right angles) and keep its grain vertical.
@@ -197,6 +208,7 @@ TEST(Grading, PatternWithoutBindingsIsRefused) {
 // FreeSewing's own size pair: grade Brian from size 36 to the size-42 set. Every binding within
 // 2 mm, and the outlines much closer to FreeSewing's size-42 draft than the unchanged size 36.
 TEST(Grading, BrianSize36To42BeatsUnchanged) {
+    SKIP_WITHOUT_FREESEWING();
     const tp::Pattern base = tapeline_test::freesewing_draft("brian", "cisFemaleAdult36");
     const tp::Pattern ref = tapeline_test::freesewing_draft("brian", "cisFemaleAdult42");
     ASSERT_GE(base.bindings.size(), 4u);
@@ -226,6 +238,7 @@ TEST(Grading, BrianSize36To42BeatsUnchanged) {
 // draft, and the sides that are sewn without ease are equal there (within 1 mm) — the check that
 // the chains run between the right points.
 TEST(Grading, FreeSewingSeamsAreFoundOnEveryDesign) {
+    SKIP_WITHOUT_FREESEWING();
     const std::map<std::string, std::vector<std::string>> want = {
         {"aaron", {"side", "shoulder", "armhole binding", "neck binding"}},
         {"brian", {"side", "shoulder", "armhole", "sleeve"}},
@@ -277,6 +290,7 @@ TEST(Grading, FreeSewingSeamsAreFoundOnEveryDesign) {
 // within 1 mm, outlines within 3 mm (mean) of FreeSewing's own draft of the target size. Grading
 // to the smaller size (42 → 36) is the second half.
 TEST(Grading, FreeSewingBothWaysWithSeams) {
+    SKIP_WITHOUT_FREESEWING();
     for (const std::string design : {"brian", "teagan"}) {
         for (const auto& [from, to] : {std::pair<std::string, std::string>{"36", "42"},
                                        std::pair<std::string, std::string>{"42", "36"}}) {
@@ -307,6 +321,7 @@ TEST(Grading, FreeSewingBothWaysWithSeams) {
 // An invariant: grading to a size and back returns the base draft (the problem is the same both
 // ways, up to the optimiser's tolerance). Teagan 36 → 42 → 36, with its seams.
 TEST(Grading, RoundTripReturnsToTheBase) {
+    SKIP_WITHOUT_FREESEWING();
     const tp::Pattern base = tapeline_test::freesewing_draft("teagan", "cisFemaleAdult36");
     const auto s36 = tapeline_test::freesewing_set("cisFemaleAdult36");
     const auto s42 = tapeline_test::freesewing_set("cisFemaleAdult42");

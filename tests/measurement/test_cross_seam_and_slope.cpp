@@ -1,11 +1,10 @@
-// Crotch length (cross seam), shoulder slope and the ISO 8559-1 table against analytic truth
-// (DESIGN.md §6). The synthetic torso's mid-sagittal outline is known in closed form (its
-// semi-axes a(y), b(y)), so the taut tape under it is computed here independently: a dense
-// sampling of the exact outline and Andrew's monotone-chain hull (not CGAL's convex_hull_2, which
-// lengths.h uses).
-#include <tapeline/measurement/iso8559.h>
-#include <tapeline/measurement/seamly_vit.h>
+// Crotch length (cross seam) and shoulder slope against analytic truth (DESIGN.md §6), and the
+// catalogue's columns on the measurements. The synthetic torso's mid-sagittal outline is known in
+// closed form (its semi-axes a(y), b(y)), so the taut tape under it is computed here
+// independently: a dense sampling of the exact outline and Andrew's monotone-chain hull (not
+// CGAL's convex_hull_2, which lengths.h uses).
 #include <tapeline/measurement/shoulder_slope.h>
+#include <tapeline/sizes/catalogue.h>
 #include <tapeline_test/measurement.h>
 
 #include <gtest/gtest.h>
@@ -103,8 +102,8 @@ TEST(CrossSeam, SyntheticTorsoMatchesTheTautTapeUnderTheExactOutline) {
     EXPECT_EQ(set.find("cross_seam_front")->freesewing, "crossSeamFront");
     EXPECT_EQ(set.find("cross_seam_back")->freesewing, "");
     EXPECT_EQ(cs->iso_clause, "crotch length");
-    EXPECT_EQ(seamly_name("cross_seam"), "crotch_length");
-    // measure_body applied the ISO table to the girths.
+    EXPECT_EQ(tapeline::sizes::seamly_name("cross_seam"), "crotch_length");
+    // measure_body applied the catalogue to the girths.
     EXPECT_EQ(set.find("waist_girth")->iso_number, "5.3.10");
     EXPECT_EQ(set.find("hip_girth")->iso_number, "5.3.13");
 }
@@ -136,7 +135,7 @@ TEST(ShoulderSlope, ExactAngleOfHandPlacedLandmarks) {
     EXPECT_EQ(m->kind, MeasurementKind::angle);
     EXPECT_EQ(m->freesewing, "shoulderSlope");
     EXPECT_EQ(m->points.size(), 4u);
-    EXPECT_EQ(seamly_name("shoulder_slope"), "shoulder_slope_neck_side_angle");
+    EXPECT_EQ(tapeline::sizes::seamly_name("shoulder_slope"), "shoulder_slope_neck_side_angle");
     // A shoulder point above the side neck point is a negative slope.
     MeasurementSet up;
     measure_shoulder_slope(shoulders(-5, -5), up);
@@ -161,36 +160,21 @@ TEST(ShoulderSlope, OneSideMissingGivesTheOtherAndNamesTheCause) {
     EXPECT_EQ(none.missing.size(), 3u);
 }
 
-TEST(Iso8559, OnlySourcedNumbersAndSidesShareTheirItem) {
-    // The fifteen clause numbers Bodygram's definitions page states (iso8559.h); any other
-    // number would be one nobody checked.
-    const std::vector<std::pair<std::string, std::string>> sourced = {
-        {"neck_girth", "5.3.2"},         {"neck_base_girth", "5.3.3"},
-        {"bust_girth", "5.3.4"},         {"underbust_girth", "5.3.8"},
-        {"waist_girth", "5.3.10"},       {"high_hip_girth", "5.3.12"},
-        {"hip_girth", "5.3.13"},         {"upper_arm_girth", "5.3.16"},
-        {"wrist_girth", "5.3.19"},       {"thigh_girth", "5.3.20"},
-        {"mid_thigh_girth", "5.3.21"},   {"across_back_shoulder_width", "5.4.3"},
-        {"back_neck_to_waist", "5.4.5"}, {"back_neck_to_wrist", "5.4.17"},
-        {"shoulder_to_wrist", "5.7.8"}};
-    for (const auto& [name, number] : sourced) {
-        ASSERT_NE(iso8559_item(name), nullptr) << name;
-        EXPECT_EQ(iso8559_item(name)->number, number) << name;
-    }
-    for (const char* name : {"stature", "inseam", "outseam", "cross_seam", "knee_girth",
-                             "shoulder_to_elbow", "hps_to_bust", "shoulder_slope"}) {
-        const Iso8559Item* item = iso8559_item(name);
-        EXPECT_TRUE(!item || item->number.empty()) << name;
-    }
+TEST(Catalogue, AppliedToMeasurementsAndTheirSides) {
     Measurement m;
     m.name = "wrist_girth_left";
-    apply_iso8559(m);
+    m.freesewing = "wrist";
+    apply_catalogue(m);
     EXPECT_EQ(m.iso_number, "5.3.19");
     EXPECT_EQ(m.iso_clause, "wrist girth");
+    EXPECT_EQ(m.freesewing, "") << "a side has no FreeSewing name";
+    m.name = "wrist_girth";
+    apply_catalogue(m);
+    EXPECT_EQ(m.freesewing, "wrist");
     Measurement other;
-    other.name = "waist_to_hips";
+    other.name = "not_in_the_catalogue";
     other.iso_clause = "kept";
-    apply_iso8559(other);
+    apply_catalogue(other);
     EXPECT_EQ(other.iso_clause, "kept");
     EXPECT_TRUE(other.iso_number.empty());
 }

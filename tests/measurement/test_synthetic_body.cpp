@@ -1,15 +1,22 @@
 // The synthetic body (synthetic_body.h) has exactly known girths (ellipse perimeters) and
-// landmark levels. Tolerances are ISO 20685-1's for scan-derived measurements: 4 mm for small
-// girths and heights, 9 mm for bust, waist and hip (and the other torso girths); the mesh itself
-// misses the smooth girth by at most P·π²/(6n²) (0.9 mm for the 860 mm bust with n = 40
-// vertices around), well inside them.
+// landmark levels. Landmarks are checked against where the construction puts them, within one
+// scan step (the finder samples levels and sagittal planes every height/400 = 4.3 mm). Girths are
+// checked against the perimeter at the level the construction defines (an extremum of its
+// profile, or the measurement's rule applied to the construction's landmarks), within what the
+// mesh resolves: the polygon of n vertices around misses the smooth girth by at most P·π²/(6n²)
+// (0.9 mm for the 860 mm bust with n = 40, 0.15 mm with n = 96), twice that as the bound, plus,
+// where the level comes from a landmark, what one scan step of level changes the truth. (ISO
+// 20685-1's 4 and 9 mm belong to the benchmark's pass/fail table, not to a construction whose
+// truth is known this well.)
 #include <tapeline_test/measurement.h>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -27,6 +34,28 @@ class SyntheticBodyTest : public ::testing::TestWithParam<Resolution> {};
 double level(const Result& r, const std::string& name) {
     const Measurement* m = r.measurements.find(name);
     return m ? m->plane_point[1] : NAN;
+}
+
+/// The underbust rule (girths.h) on the construction: on the front profile at the bust point's
+/// x (0.1 of the half-width), the level between waist and bust deepest behind the chord from
+/// the bust point to the waist's front.
+double underbust_level(const SyntheticBody& body) {
+    const double x = 0.1 * body.torso_half_width(SyntheticBody::kBust);
+    auto front = [&](double y) {
+        const double u = x / body.torso_half_width(y);
+        return body.torso_depth(y) * std::sqrt(1 - u * u);
+    };
+    const double y1 = SyntheticBody::kBust, y0 = SyntheticBody::kWaist;
+    const double z1 = front(y1), z0 = front(y0);
+    double best = -INFINITY, at = y1;
+    for (double y = y1; y >= y0; y -= 0.01) {
+        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1));
+        if (behind > best) {
+            best = behind;
+            at = y;
+        }
+    }
+    return at;
 }
 
 TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
@@ -60,43 +89,110 @@ TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
         const Vec3 w = r.landmarks.find("wrist_" + s)->axis_point;
         EXPECT_NEAR(body.arm_parameter(sign, e), SyntheticBody::kElbowT, 6.0) << s;
         EXPECT_NEAR(body.arm_parameter(sign, w), SyntheticBody::kWristT, 6.0) << s;
+        // Acromion: the corner of the flat shoulder (the torso's top cap, y = 1400, half-width
+        // torso_a(1400)) where the outline drops to the arm, in the middle of the cap's flat top
+        // (z = 0 by symmetry). The finder samples the outline on sagittal planes a scan step
+        // apart and moves the farthest sample to the vertex of a parabola fitted over 3 samples
+        // each side, which suits a round shoulder; on this sharp 90-degree rim it lands up to
+        // those 3 samples inside the corner (measured 14.4 mm at both resolutions), so 4 steps.
+        const Vec3 ac = *r.landmarks.point("acromion_" + s);
+        EXPECT_NEAR(sign * ac[0], body.torso_half_width(SyntheticBody::kShoulder), 4 * step) << s;
+        EXPECT_LE(sign * ac[0], body.torso_half_width(SyntheticBody::kShoulder)) << s;
+        EXPECT_NEAR(ac[1], SyntheticBody::kShoulder, 0.5) << s;
+        EXPECT_NEAR(ac[2], 0, 0.5) << s;
+        // Bust point: the most forward point of the torso outside the central tenth of its
+        // width, at the bust maximum (1180): on the section's ellipse, at most one vertex step
+        // (2 pi / n around) from x = 0.1 a, so z within b (1 - cos(2 pi / n)) of 0.995 b. The
+        // maximum is flat in height (zero slope), and between two rings of the mesh the section
+        // crosses the diagonal edges nearer the central tenth: the level is resolved to a ring
+        // step plus a scan step (measured 13.3 mm coarse, 4.7 mm fine).
+        const Vec3 bp = *r.landmarks.point("bust_" + s);
+        const double a = body.torso_half_width(SyntheticBody::kBust);
+        const double b = body.torso_depth(SyntheticBody::kBust);
+        const double angle = 2 * M_PI / GetParam().options.around;
+        EXPECT_NEAR(bp[1], SyntheticBody::kBust, GetParam().options.ring_step + step) << s;
+        EXPECT_GT(sign * bp[0], 0.1 * a - 0.5) << s;
+        EXPECT_LT(sign * bp[0], 0.1 * a + a * std::sin(angle) + 0.5) << s;
+        EXPECT_NEAR(bp[2], 0.995 * b, b * (1 - std::cos(angle)) + 0.5) << s;
     }
+    // Cervicale and front neck: where the neck (semi-axes neck_a, 0.95 neck_a) meets the flat
+    // shoulder cap at y = 1400, on the midline, behind and in front.
+    const double neck_b = body.neck_b_ratio() * body.neck_half_width(SyntheticBody::kShoulder);
+    const Vec3 cv = *r.landmarks.point("cervicale");
+    EXPECT_NEAR(cv[0], 0, 0.5);
+    EXPECT_NEAR(cv[1], SyntheticBody::kShoulder, step + 0.5);
+    EXPECT_NEAR(cv[2], -neck_b, 1.0);
+    EXPECT_NEAR(r.landmarks.point("front_neck")->at(2), neck_b, 1.0);
 }
 
-TEST_P(SyntheticBodyTest, GirthsWithinIsoToleranceOfTheEllipsePerimeters) {
+TEST_P(SyntheticBodyTest, GirthsMatchTheEllipsePerimetersAtTheConstructionsLevels) {
     const SyntheticBody body(GetParam().options);
     const Result r = measure_synthetic(GetParam().options);
     struct Check {
         std::string name;
         double truth, tolerance;
     };
-    auto plane_y = [&](const std::string& n) { return level(r, n); };
-    auto arm_truth = [&](const std::string& n, int sign) {
-        return body.arm_girth(body.arm_parameter(sign, r.measurements.find(n)->plane_point));
+    const double step = SyntheticBody::kHeight / 400;  // the scan's spacing
+    const double n = GetParam().options.around;
+    // Twice the polygon's shortfall P pi^2 / (6 n^2), plus (for a level taken from landmarks)
+    // the change of the truth over one scan step of level.
+    auto tol = [&](const std::function<double(double)>& girth, double level, bool from_landmark) {
+        const double p = girth(level);
+        double t = 2 * p * M_PI * M_PI / (6 * n * n);
+        if (from_landmark)
+            t += std::max(std::abs(girth(level + step) - p), std::abs(girth(level - step) - p));
+        return t;
     };
+    const std::function<double(double)> torso = [&](double y) { return body.torso_girth(y); };
+    const std::function<double(double)> leg = [&](double y) { return body.leg_girth(y); };
+    const std::function<double(double)> neck = [&](double y) { return body.neck_girth(y); };
+    const std::function<double(double)> head = [&](double y) { return body.head_girth(y); };
+    const std::function<double(double)> arm = [&](double t) { return body.arm_girth(t); };
+    auto check = [&](const std::string& name, const std::function<double(double)>& girth,
+                     double level, bool from_landmark) {
+        return Check{name, girth(level), tol(girth, level, from_landmark)};
+    };
+    // Construction levels of the rules in girths.h: high bust 0.5 % of the height under the
+    // armpits; high hip halfway between waist and hip; neck base where the neck meets the cap;
+    // thigh at its top (2 % of the height under the crotch: the leg still widens up to 780);
+    // mid-thigh halfway between crotch and knee; upper arm halfway between the armpit's
+    // projection on the arm axis (or the joint's, if farther out) and the elbow.
+    const double armpit = body.armpit_height();
+    const double high_bust = armpit - 0.005 * SyntheticBody::kHeight;
+    const double high_hip = 0.5 * (SyntheticBody::kWaist + SyntheticBody::kHip);
+    const double thigh = SyntheticBody::kCrotch - 0.02 * SyntheticBody::kHeight;
+    const double mid_thigh = 0.5 * (SyntheticBody::kCrotch + SyntheticBody::kKnee);
     std::vector<Check> checks = {
-        {"head_girth", body.head_girth(SyntheticBody::kHead), 4},
-        {"neck_girth", body.neck_girth(SyntheticBody::kNeck), 4},
-        {"neck_base_girth", body.neck_girth(plane_y("neck_base_girth")), 4},
-        {"bust_girth", body.torso_girth(SyntheticBody::kBust), 9},
-        {"high_bust_girth", body.torso_girth(plane_y("high_bust_girth")), 9},
-        {"underbust_girth", body.torso_girth(plane_y("underbust_girth")), 9},
-        {"waist_girth", body.torso_girth(SyntheticBody::kWaist), 9},
-        {"high_hip_girth", body.torso_girth(plane_y("high_hip_girth")), 9},
-        {"hip_girth", body.torso_girth(SyntheticBody::kHip), 9},
+        check("head_girth", head, SyntheticBody::kHead, false),
+        check("neck_girth", neck, SyntheticBody::kNeck, false),
+        check("neck_base_girth", neck, SyntheticBody::kShoulder, true),
+        check("bust_girth", torso, SyntheticBody::kBust, false),
+        check("high_bust_girth", torso, high_bust, true),
+        check("underbust_girth", torso, underbust_level(body), true),
+        check("waist_girth", torso, SyntheticBody::kWaist, false),
+        check("high_hip_girth", torso, high_hip, true),
+        check("hip_girth", torso, SyntheticBody::kHip, false),
     };
     for (const char* side : {"left", "right"}) {
         const std::string s = std::string("_") + side;
         const int sign = s == "_left" ? 1 : -1;
-        for (const char* leg : {"thigh_girth", "mid_thigh_girth", "knee_girth", "calf_girth"}) {
-            checks.push_back({leg + s, body.leg_girth(plane_y(leg + s)), 4});
-        }
-        checks.push_back({"calf_girth" + s + "@max", body.leg_girth(SyntheticBody::kCalf), 4});
-        checks.push_back({"ankle_girth" + s, body.leg_girth(SyntheticBody::kAnkle), 4});
-        for (const char* arm : {"upper_arm_girth", "elbow_girth"}) {
-            checks.push_back({arm + s, arm_truth(arm + s, sign), 4});
-        }
-        checks.push_back({"wrist_girth" + s, body.arm_girth(SyntheticBody::kWristT), 4});
+        checks.push_back(check("thigh_girth" + s, leg, thigh, true));
+        checks.push_back(check("mid_thigh_girth" + s, leg, mid_thigh, true));
+        checks.push_back(check("knee_girth" + s, leg, SyntheticBody::kKnee, false));
+        checks.push_back(check("calf_girth" + s, leg, SyntheticBody::kCalf, false));
+        checks.push_back(check("ankle_girth" + s, leg, SyntheticBody::kAnkle, false));
+        // The arm's joint is midway between acromion and armpit (the construction's: the cap's
+        // corner, and the torso's side at the armpit level).
+        const double top = SyntheticBody::kShoulder;
+        const Vec3 armpit_point{sign * body.torso_half_width(armpit), armpit, 0};
+        const Vec3 joint{0.5 * sign * (body.torso_half_width(top) + body.torso_half_width(armpit)),
+                         0.5 * (top + armpit), 0};
+        const double t_from =
+            std::max(body.arm_parameter(sign, armpit_point), body.arm_parameter(sign, joint));
+        checks.push_back(
+            check("upper_arm_girth" + s, arm, 0.5 * (t_from + SyntheticBody::kElbowT), true));
+        checks.push_back(check("elbow_girth" + s, arm, SyntheticBody::kElbowT, false));
+        checks.push_back(check("wrist_girth" + s, arm, SyntheticBody::kWristT, false));
     }
     std::printf("%s: %zu vertices, %.3f s\n", GetParam().name, r.report.vertices, r.seconds);
     std::printf("  %-26s %10s %10s %8s\n", "girth", "measured", "exact", "error");
@@ -104,8 +200,8 @@ TEST_P(SyntheticBodyTest, GirthsWithinIsoToleranceOfTheEllipsePerimeters) {
         const std::string name = c.name.substr(0, c.name.find('@'));
         const Measurement* m = r.measurements.find(name);
         ASSERT_NE(m, nullptr) << name;
-        std::printf("  %-26s %10.2f %10.2f %+8.2f\n", c.name.c_str(), m->value, c.truth,
-                    m->value - c.truth);
+        std::printf("  %-26s %10.2f %10.2f %+8.2f (tolerance %.2f)\n", c.name.c_str(), m->value,
+                    c.truth, m->value - c.truth, c.tolerance);
         EXPECT_NEAR(m->value, c.truth, c.tolerance) << c.name;
     }
     EXPECT_NEAR(r.measurements.value("stature").value(), SyntheticBody::kHeight, 1e-9);

@@ -1,8 +1,9 @@
 // Lengths along the skin of the synthetic body against analytic truth (issue 6, DESIGN.md §6).
 // The body's closed parts are merged into one skin (support: corefinement union), measured at two
 // resolutions, and every length is compared with the truth between the SAME end points the
-// measurement walked between (its segments' end points), so that landmark placement error (tested
-// in test_synthetic_body.cpp) is kept apart from length error. ISO 20685-1 allows 5 mm.
+// measurement walked between (its segments' end points), so that landmark placement error is kept
+// apart from length error; those end points are checked against where the construction puts
+// them (within one scan step, as the landmarks in test_synthetic_body.cpp).
 //
 // Truth. The torso, legs, neck and arms are elliptic generalised cylinders centred on their axes,
 // so the planes x = 0 (torso, neck) and z = 0 (everything but head and feet) are planes of mirror
@@ -12,8 +13,8 @@
 // run over the torso's flat top cap around the neck: the shortest path in a plane around a convex
 // obstacle (a tangent segment plus an arc of the neck's ellipse), computed here in closed form.
 // The lengths with no closed form (HPS to waist, HPS to bust, the arm over the shoulder) are held
-// against exact MMP between the same end points on the coarse mesh (MMP on the fine one takes ~8 s
-// per segment).
+// against exact MMP between the same end points: every segment on the coarse mesh, and on the
+// fine one (where MMP takes ~8 s per segment) the segments of those three lengths only.
 #include <tapeline_test/measurement_synthetic.h>
 
 #include <gtest/gtest.h>
@@ -39,16 +40,29 @@ void PrintTo(const Resolution& r, std::ostream* os) {
     *os << r.name;
 }
 const Resolution kResolutions[] = {{"coarse", {40, 10, 40}}, {"fine", {96, 4, 40}}};
-// Every segment against exact MMP on this resolution only (~0.5 s per segment on its 17k vertices).
+// Every segment against exact MMP on this resolution (~0.5 s per segment on its 17k vertices);
+// on the others, the segments of the lengths without a closed form.
 constexpr int kExactCheckedAround = 40;
-constexpr double kIsoSegment = 5;  // ISO 20685-1, segment lengths (mm)
+const std::vector<std::string> kNoClosedForm = {"hps_to_bust", "hps_to_waist_back",
+                                                "shoulder_to_elbow"};
+// The measured lengths against the closed-form truth: measured within 0.148 mm (coarse) and
+// 0.116 mm (fine); the truth is resolved to 0.05 mm (exact MMP between the same end points): 0.3.
+constexpr double kLengthTolerance = 0.3;
+// The curvature-flow segment against exact MMP between the same points: equal to 1e-3 mm on every
+// segment but one; on the coarse mesh the outseam's flow settles on a locally shortest path over
+// the leg's top cap 0.84 mm longer (measured), so 1 mm there and 0.01 mm elsewhere.
+constexpr double kFlowExcess = 0.01;
+constexpr double kOutseamExcess = 1.0;
 
 const SyntheticLengths& measured(const SyntheticBodyOptions& o) {
     static std::map<std::pair<int, double>, SyntheticLengths> cache;
     const auto key = std::make_pair(o.around, o.ring_step);
     auto it = cache.find(key);
     if (it == cache.end()) {
-        it = cache.emplace(key, measure_synthetic_lengths(o, true, o.around == kExactCheckedAround))
+        const bool all = o.around == kExactCheckedAround;
+        it = cache
+                 .emplace(key, measure_synthetic_lengths(
+                                   o, true, true, all ? std::vector<std::string>{} : kNoClosedForm))
                  .first;
     }
     return it->second;
@@ -212,7 +226,37 @@ TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
         // 48-115 mm long until the on-mesh path also straightened its initial path, and that
         // path stepped across faces: the flow on the flat cap's 90-degree rims ends in a longer
         // locally shortest path; geodesic/README.md.)
-        EXPECT_NEAR(m->value, truth, kIsoSegment) << name;
+        EXPECT_NEAR(m->value, truth, kLengthTolerance) << name;
+    }
+    // The end points are where the construction puts the landmarks they start and end at
+    // (heights within one scan step, height/400): waist, hip and armpit levels on the side,
+    // the neck base (cap level 1400) and the waist on the midline, crotch and ankle (the rest
+    // to the floor is straight down).
+    const double step = SyntheticBody::kHeight / 400 + 0.5;
+    struct Ends {
+        const char* name;
+        double top, bottom;
+    };
+    for (const Ends& e :
+         {Ends{"waist_to_hips", SyntheticBody::kWaist, SyntheticBody::kHip},
+          Ends{"waist_to_armpit", body.armpit_height(), SyntheticBody::kWaist},
+          Ends{"back_neck_to_waist", SyntheticBody::kShoulder, SyntheticBody::kWaist},
+          Ends{"front_neck_to_waist", SyntheticBody::kShoulder, SyntheticBody::kWaist},
+          Ends{"inseam", SyntheticBody::kCrotch, SyntheticBody::kAnkle},
+          Ends{"outseam", SyntheticBody::kWaist, SyntheticBody::kAnkle}}) {
+        const auto seg = segments(r, e.name);
+        ASSERT_FALSE(seg.empty()) << e.name;
+        const double y0 = seg.front()->from[1], y1 = seg.back()->to[1];
+        EXPECT_NEAR(std::max(y0, y1), e.top, step) << e.name;
+        EXPECT_NEAR(std::min(y0, y1), e.bottom, step) << e.name;
+    }
+    // The shoulder widths end at the acromions: the corners of the flat cap, x = +-torso_a(1400),
+    // found up to 3 outline samples inside the sharp corner (test_synthetic_body.cpp): 4 steps.
+    for (const char* name : {"shoulder_width_back", "across_back_shoulder_width"}) {
+        for (const auto* s : segments(r, name)) {
+            const double x = std::max(std::abs(s->from[0]), std::abs(s->to[0]));
+            EXPECT_NEAR(x, body.torso_half_width(SyntheticBody::kShoulder), 4 * step) << name;
+        }
     }
     // The end points lie in the symmetry plane the truth assumes.
     for (const char* name : {"waist_to_hips", "waist_to_armpit", "inseam", "outseam"}) {
@@ -243,45 +287,50 @@ TEST_P(SyntheticLengthsTest, InvariantsAndLeftRightSymmetry) {
     // (the body is symmetric in x = 0).
     const LandmarkSet& lm = r.result.landmarks;
     const Vec3 al = *lm.point("acromion_left"), ar = *lm.point("acromion_right");
-    const bool mirrored = std::abs(al[0] + ar[0]) < 0.5 && std::abs(al[1] - ar[1]) < 0.5 &&
-                          std::abs(al[2] - ar[2]) < 0.5;
-    std::printf("%s acromions left (%.2f %.2f %.2f) right (%.2f %.2f %.2f)%s\n", GetParam().name,
-                al[0], al[1], al[2], ar[0], ar[1], ar[2], mirrored ? "" : ": not mirror images");
-    if (mirrored) {
-        for (const char* name : {"shoulder_width_back", "across_back_shoulder_width"}) {
-            const auto seg = segments(r, name);
-            ASSERT_EQ(seg.size(), 2u) << name;
-            EXPECT_NEAR(seg[0]->gcf, seg[1]->gcf, 1.0) << name;
-        }
+    // The body is symmetric in x = 0 and the finder treats both sides alike: the acromions
+    // are mirror images (to 0.5 mm) and so are the two halves of the back shoulder widths
+    // (to 1 mm: each half is its own flow).
+    EXPECT_NEAR(al[0], -ar[0], 0.5);
+    EXPECT_NEAR(al[1], ar[1], 0.5);
+    EXPECT_NEAR(al[2], ar[2], 0.5);
+    for (const char* name : {"shoulder_width_back", "across_back_shoulder_width"}) {
+        const auto seg = segments(r, name);
+        ASSERT_EQ(seg.size(), 2u) << name;
+        EXPECT_NEAR(seg[0]->gcf, seg[1]->gcf, 1.0) << name;
     }
     EXPECT_NEAR(*r.result.measurements.value("hps_to_waist_back"),
                 *r.result.measurements.value("hps_to_waist_front"), 1.0)
         << "front-back mirror (z = 0) of the same path";
 }
 
-// Every segment of every length against the exact polyhedral distance between the same points
-// (exact MMP, on the coarse mesh): the arm over the shoulder, HPS to bust and to waist have no
-// closed form. The on-mesh path is never shorter than exact (it is a path on the faces) and within
-// the ISO 20685-1 segment tolerance of it.
+// Every segment against the exact polyhedral distance between the same points (exact MMP): all
+// of them on the coarse mesh, those of the lengths without a closed form (the arm over the
+// shoulder, HPS to bust and to waist) on the fine one. The on-mesh path is never shorter than
+// exact (it is a path on the faces) and exceeds it by at most kFlowExcess (kOutseamExcess).
 TEST_P(SyntheticLengthsTest, EverySegmentAgreesWithExactMmp) {
-    if (GetParam().options.around != kExactCheckedAround) {
-        GTEST_SKIP() << "exact MMP is run on the coarse mesh only";
-    }
     const SyntheticLengths& r = measured(GetParam().options);
     ASSERT_FALSE(r.segments.empty());
     double worst = 0;
+    std::size_t checked = 0, segments_with_length = 0;
     for (const auto& s : r.segments) {
-        if (s.euclidean < 1e-9) {
-            continue;
+        segments_with_length += s.euclidean >= 1e-9;
+        if (s.euclidean < 1e-9 || s.exact < 0) {
+            continue;  // a zero-length segment, or one left to the coarse mesh
         }
+        ++checked;
         ASSERT_GT(s.exact, 0) << s.measurement;
         EXPECT_GE(s.gcf, s.exact * (1 - 1e-9)) << s.measurement;
-        EXPECT_NEAR(s.gcf, s.exact, kIsoSegment) << s.measurement;
+        EXPECT_LE(s.gcf - s.exact, s.measurement == "outseam" ? kOutseamExcess : kFlowExcess)
+            << s.measurement;
         worst = std::max(worst, s.gcf - s.exact);
         std::printf("%s %-27s segment gcf %8.3f exact %8.3f  %+7.3f mm\n", GetParam().name,
                     s.measurement.c_str(), s.gcf, s.exact, s.gcf - s.exact);
     }
     std::printf("%s worst segment excess over exact MMP %.3f mm\n", GetParam().name, worst);
+    if (GetParam().options.around == kExactCheckedAround)
+        EXPECT_EQ(checked, segments_with_length);
+    else
+        EXPECT_GE(checked, kNoClosedForm.size());
 }
 
 INSTANTIATE_TEST_SUITE_P(Resolutions, SyntheticLengthsTest, ::testing::ValuesIn(kResolutions),

@@ -182,7 +182,7 @@ TEST(PatternDxf, TwoPiecePatternReadBackByEzdxf) {
 TEST(PatternDxf, EverySharedPatternReadBackByEzdxf) {
     const std::vector<std::string> files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
-        GTEST_SKIP() << "shared pattern data absent";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     TempDir dir;
     double worst_in = 0, worst_out = 0;

@@ -171,10 +171,23 @@ TEST(PatternFreeSewing, PiecesWithoutSeamPathAreSkippedAndNoted) {
     EXPECT_EQ(back->darts.size(), 1u);
 }
 
+// The bundled copy (always present): every piece's outline is as long as the seam path
+// FreeSewing measured (length_mm, rounded to 0.001 mm; 0.01 mm as for the shared drafts).
 TEST(PatternFreeSewing, BundledCopyImports) {
     const Pattern p = read_freesewing(bundled());
     EXPECT_EQ(p.pieces.size(), 4u);
     EXPECT_TRUE(validate(p).ok());
+    const nlohmann::json doc = nlohmann::json::parse(tapeline_test::slurp(bundled()));
+    std::size_t checked = 0;
+    for (const auto& jp : doc["pieces"]) {
+        const std::string name = jp["name"];
+        const Piece* piece = find_piece(p, name);
+        ASSERT_TRUE(piece) << name;
+        const double ref = jp["paths"]["seam"]["length_mm"];
+        EXPECT_NEAR(length(piece->outline), ref, 0.01) << name;
+        ++checked;
+    }
+    EXPECT_EQ(checked, p.pieces.size());
 }
 
 TEST(PatternFreeSewing, MalformedInputIsRejectedWithItsLocation) {

@@ -1,20 +1,23 @@
 // The model's JSON round trip (bit-exact) and the SVG drawing (well-formed, one group per piece,
 // a 100 mm scale bar at 1 user unit per mm).
+#include <tapeline/core/xml.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/svg.h>
 #include <tapeline/pattern/validate.h>
-#include <tapeline/pattern/xml.h>
 
 #include <tapeline_test/pattern.h>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
+#include <sstream>
 
 using namespace tapeline::pattern;
+namespace xml = tapeline::xml;
 using tapeline_test::two_piece_pattern;
 
 namespace {
@@ -68,7 +71,7 @@ TEST(PatternJson, RoundTripIsExact) {
 TEST(PatternJson, RoundTripOfEverySharedPattern) {
     const auto files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
-        GTEST_SKIP() << "no shared patterns";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     for (const std::string& path : files) {
         SCOPED_TRACE(path);
@@ -170,6 +173,56 @@ TEST(PatternSvg, WellFormedWithOneGroupPerPieceAndAScaleBar) {
         EXPECT_TRUE(has_outline);
         EXPECT_TRUE(has_name);
     }
+    // Each outline path draws the model's outline: its commands, edge by edge, with the model's
+    // points moved by the piece offset and y flipped (written to 0.001 mm: 1e-3).
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const xml::Element* path = nullptr;
+        for (const xml::Element& c : pieces[i]->children)
+            if (c.name == "path" && *c.attribute("class") == "outline")
+                path = &c;
+        ASSERT_TRUE(path);
+        std::istringstream d(*path->attribute("d"));
+        const Point2 off = rep.piece_offsets[i];
+        std::string cmd;
+        auto point = [&](const Point2& q, const std::string& what) {
+            double x = NAN, y = NAN;
+            d >> x >> y;
+            EXPECT_NEAR(x, q.x + off.x, 1e-3) << p.pieces[i].name << " " << what;
+            EXPECT_NEAR(y, off.y - q.y, 1e-3) << p.pieces[i].name << " " << what;
+        };
+        const auto& edges = p.pieces[i].outline.edges;
+        for (std::size_t e = 0; e < edges.size(); ++e) {
+            const std::string what = "edge " + std::to_string(e);
+            d >> cmd;
+            if (e == 0) {
+                ASSERT_EQ(cmd, "M") << what;
+                point(start_point(edges[e].curve), what);
+                d >> cmd;
+            }
+            if (const auto* l = std::get_if<Line>(&edges[e].curve)) {
+                ASSERT_EQ(cmd, "L") << what;
+                point(l->b, what);
+            } else if (const auto* c = std::get_if<CubicBezier>(&edges[e].curve)) {
+                ASSERT_EQ(cmd, "C") << what;
+                point(c->p1, what);
+                point(c->p2, what);
+                point(c->p3, what);
+            } else {
+                const Arc& a = std::get<Arc>(edges[e].curve);
+                ASSERT_EQ(cmd, "A") << what;
+                double rx = 0, ry = 0, rot = 1;
+                int large = -1, sweep = -1;
+                d >> rx >> ry >> rot >> large >> sweep;
+                EXPECT_NEAR(rx, arc_frame(a).radius, 1e-3) << what;
+                EXPECT_EQ(large, a.large_arc ? 1 : 0) << what;
+                EXPECT_EQ(sweep, a.ccw ? 0 : 1) << what;  // y flipped
+                point(a.b, what);
+            }
+        }
+        d >> cmd;
+        EXPECT_EQ(cmd, "Z") << p.pieces[i].name;
+        EXPECT_FALSE(d >> cmd) << p.pieces[i].name << ": more path data";
+    }
     // Front: grain line, fold line, one notch, a seam mark; back: a seam mark.
     auto count = [](const xml::Element& g, const std::string& cls) {
         int n = 0;
@@ -202,7 +255,7 @@ TEST(PatternSvg, WellFormedWithOneGroupPerPieceAndAScaleBar) {
 TEST(PatternSvg, EverySharedPatternDrawsAndParses) {
     const auto files = tapeline_test::shared_pattern_files();
     if (files.empty()) {
-        GTEST_SKIP() << "no shared patterns";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     for (const std::string& path : files) {
         SCOPED_TRACE(path);

@@ -150,7 +150,10 @@ void check_seams(const Pattern& pat, const PatternMesh& mesh) {
         }
         const std::vector<double> fa = fractions(ma, ia), fb = fractions(mb, ib);
         for (std::size_t k = 0; k < fa.size(); ++k) {
-            EXPECT_NEAR(fa[k], fb[k], 0.5 / double(fa.size()));
+            // A side of several edges is sampled edge by edge (simon's FreeSewing seams), so a
+            // pair may sit up to one segment apart; on one-edge sides it is within half.
+            EXPECT_NEAR(fa[k], fb[k],
+                        (seam.a.count > 1 || seam.b.count > 1 ? 1.0 : 0.5) / double(fa.size()));
         }
     }
 }
@@ -198,7 +201,7 @@ TEST(PatternMeshing, EverySharedPattern) {
     const std::vector<std::string> fs = shared_pattern_files("freesewing");
     files.insert(files.end(), fs.begin(), fs.end());
     if (files.empty()) {
-        GTEST_SKIP() << "shared pattern data absent";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     MeshingOptions o;
     o.target_edge_mm = 10;

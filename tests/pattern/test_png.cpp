@@ -1,13 +1,14 @@
 // PNG drawing, decoded with libpng's simplified reader (a different code path from the writer):
 // image size = SVG page × resolution, dark pixels where the outlines pass, background where
-// nothing is drawn, and a clear error for absurd resolutions. Text: the bitmap font's glyphs are
-// all distinct, a string's ink stays in the box its font-size and anchor give, and every <text>
-// the SVG writes (parsed from the SVG itself) has ink at its place in the PNG that is not on any
-// line (lines found by rendering again with draw_text = false), and no ink outside those places.
+// nothing is drawn, and a clear error for absurd resolutions. Text: every <text> the SVG writes
+// (parsed from the SVG itself) has ink at its place in the PNG that is not on any line (lines
+// found by rendering again with draw_text = false), and no ink outside those places. The canvas,
+// font and encoder themselves are tested in tests/draw.
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/png.h>
 
+#include <tapeline_test/image.h>
 #include <tapeline_test/pattern.h>
 
 #include <gtest/gtest.h>
@@ -23,46 +24,11 @@ using namespace tapeline::pattern;
 
 namespace {
 
-struct Decoded {
-    std::size_t width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;
-    const std::uint8_t* at(long x, long y) const { return &rgba[4 * (std::size_t(y) * width + x)]; }
-    /// Darkest grey level (mean of RGB, alpha-composited on white) in the 3 × 3 block around.
-    double darkest(long x, long y) const {
-        double best = 255;
-        for (long dy = -1; dy <= 1; ++dy) {
-            for (long dx = -1; dx <= 1; ++dx) {
-                const long xx = std::clamp(x + dx, 0L, long(width) - 1);
-                const long yy = std::clamp(y + dy, 0L, long(height) - 1);
-                best = std::min(best, grey(xx, yy));
-            }
-        }
-        return best;
-    }
-    double grey(long x, long y) const {
-        const std::uint8_t* p = at(x, y);
-        const double a = p[3] / 255.0;
-        return (p[0] + p[1] + p[2]) / 3.0 * a + 255 * (1 - a);
-    }
-};
-
-Decoded decode(const std::string& bytes) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    Decoded d;
-    if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) {
-        ADD_FAILURE() << "libpng cannot read the PNG: " << image.message;
-        return d;
-    }
-    image.format = PNG_FORMAT_RGBA;
-    d.width = image.width;
-    d.height = image.height;
-    d.rgba.resize(PNG_IMAGE_SIZE(image));
-    if (!png_image_finish_read(&image, nullptr, d.rgba.data(), 0, nullptr)) {
-        ADD_FAILURE() << "libpng decode failed: " << image.message;
-    }
-    return d;
-}
+using tapeline_test::decode;
+using tapeline_test::Decoded;
+using tapeline_test::from_image;
+using tapeline_test::PixelBox;
+using tapeline_test::text_box;
 
 struct PixelStats {
     std::size_t outline_samples = 0, dark = 0, outside_samples = 0, white = 0;
@@ -190,7 +156,7 @@ TEST(PatternPng, EverySharedPattern) {
         }
     }
     if (files.empty()) {
-        GTEST_SKIP() << "shared pattern data absent";
+        GTEST_SKIP() << tapeline_test::shared_patterns_dir() << " absent";
     }
     tapeline_test::TempDir dir;
     for (const std::string& f : files) {
@@ -287,130 +253,11 @@ std::vector<SvgText> svg_texts(const std::string& svg) {
     return out;
 }
 
-/// Pixel box [x0, x1) × [y0, y1) where a text's ink may lie: the font's box (advance 0.6 em per
-/// character, 0.7 em above the baseline, 0.1 em below) grown by one glyph cell (0.6 × 0.8 em) on
-/// every side — the tolerance for a font whose exact proportions the test does not pin down.
-struct PixelBox {
-    long x0, y0, x1, y1;
-    bool contains(long x, long y) const { return x >= x0 && x < x1 && y >= y0 && y < y1; }
-};
-
-PixelBox text_box(double x, double y, double size, bool middle, std::size_t n, double ppmm,
-                  double grow_cells = 1) {
-    const double w = 0.6 * size * double(n);
-    const double left = middle ? x - 0.5 * w : x;
-    const double gx = grow_cells * 0.6 * size, gy = grow_cells * 0.8 * size;
-    return {long(std::floor((left - gx) * ppmm)), long(std::floor((y - 0.7 * size - gy) * ppmm)),
-            long(std::ceil((left + w + gx) * ppmm)), long(std::ceil((y + 0.1 * size + gy) * ppmm))};
-}
-
 PixelBox text_box(const SvgText& t, double ppmm, double grow_cells = 1) {
     return text_box(t.x, t.y, t.size, t.middle, t.code_points, ppmm, grow_cells);
 }
 
-Decoded from_image(const RgbaImage& img) {
-    return {img.width, img.height, img.rgba};
-}
-
 }  // namespace
-
-TEST(PatternPng, BitmapFontGlyphsDistinctAndInked) {
-    using namespace tapeline::pattern::internal;
-    std::set<Glyph> seen;
-    for (int c = 32; c <= 126; ++c) {
-        SCOPED_TRACE(std::string(1, char(c)));
-        const Glyph& g = glyph_for(std::uint32_t(c));
-        EXPECT_EQ(&g, &kBitmapFont[c - 32]);
-        int ink = 0;
-        for (std::uint8_t row : g) {
-            EXPECT_EQ(row & ~0x1F, 0) << "bits beyond the 5 columns";
-            for (int b = 0; b < 5; ++b) {
-                ink += (row >> b) & 1;
-            }
-        }
-        if (c == ' ') {
-            EXPECT_EQ(ink, 0);
-        } else {
-            EXPECT_GT(ink, 0);
-        }
-        EXPECT_TRUE(seen.insert(g).second) << "same bitmap as an earlier glyph";
-    }
-    EXPECT_EQ(seen.count(kPlaceholderGlyph), 0u);
-    for (const std::uint32_t c : {0u, 31u, 127u, 0xE9u, 0x20ACu}) {
-        EXPECT_EQ(&glyph_for(c), &kPlaceholderGlyph) << c;
-    }
-}
-
-TEST(PatternPng, BitmapFontOneGlyphPerCodePoint) {
-    using namespace tapeline::pattern::internal;
-    // a, é (2 bytes), € (3), U+1F600 (4), b, a stray continuation byte, a truncated 3-byte lead.
-    const std::string s =
-        "a\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"
-        "b\x80\xE2\x82";
-    const std::vector<const Glyph*> g = text_glyphs(s);
-    ASSERT_EQ(g.size(), 7u);
-    EXPECT_EQ(g[0], &kBitmapFont['a' - 32]);
-    EXPECT_EQ(g[4], &kBitmapFont['b' - 32]);
-    for (const std::size_t k : {1, 2, 3, 5, 6}) {
-        EXPECT_EQ(g[k], &kPlaceholderGlyph) << k;
-    }
-    EXPECT_TRUE(text_glyphs("").empty());
-}
-
-TEST(PatternPng, TextInkInsideItsBox) {
-    using namespace tapeline::pattern::internal;
-    struct Case {
-        std::string text;
-        double x, y, size, ppmm;
-        bool middle;
-    };
-    // Strings reaching the full cell (capitals, descenders, the bar) at several scales, both
-    // anchors, partly off-pixel positions, and a non-ASCII one drawn as boxes.
-    for (const Case& c : {Case{"Hgjy|_ 100 mm", 20, 40, 6, 2, false},
-                          Case{"Hgjy|_ 100 mm", 60.3, 40.7, 10, 4, true},
-                          Case{"front (mirrored pair)", 60, 30, 5, 1.3, true},
-                          Case{"~!@#$%^&*()", 10.25, 20.1, 6, 3, false},
-                          Case{"caf\xC3\xA9 \xE2\x82\xAC", 50, 25, 10, 2, true}}) {
-        SCOPED_TRACE(c.text + " at " + std::to_string(c.ppmm) + " px/mm");
-        RgbaImage img;
-        img.width = std::size_t(120 * c.ppmm);
-        img.height = std::size_t(60 * c.ppmm);
-        img.rgba.assign(4 * img.width * img.height, 255);
-        Canvas cv(img, c.ppmm);
-        cv.text(c.text, {c.x, c.y}, c.size, c.middle ? TextAnchor::middle : TextAnchor::start,
-                {0, 0, 0});
-        const Decoded d = from_image(img);
-        std::size_t n = 0;
-        for (unsigned char b : c.text) {
-            n += (b & 0xC0) != 0x80;
-        }
-        const PixelBox box = text_box(c.x, c.y, c.size, c.middle, n, c.ppmm);
-        // The ink's extent must also reach close to every side of the unexpanded box (within a
-        // glyph cell), so a glyph drawn at the wrong scale or anchor fails even if it is small.
-        long ix0 = long(img.width), iy0 = long(img.height), ix1 = -1, iy1 = -1;
-        std::size_t ink = 0, outside = 0;
-        for (long y = 0; y < long(img.height); ++y) {
-            for (long x = 0; x < long(img.width); ++x) {
-                if (d.grey(x, y) < 255) {
-                    ++ink;
-                    outside += !box.contains(x, y);
-                    ix0 = std::min(ix0, x);
-                    iy0 = std::min(iy0, y);
-                    ix1 = std::max(ix1, x + 1);
-                    iy1 = std::max(iy1, y + 1);
-                }
-            }
-        }
-        EXPECT_GT(ink, 0u);
-        EXPECT_EQ(outside, 0u);
-        const PixelBox tight = text_box(c.x, c.y, c.size, c.middle, n, c.ppmm, 0);
-        const double cell_w = 0.6 * c.size * c.ppmm, cell_h = 0.8 * c.size * c.ppmm;
-        EXPECT_LE(std::abs(ix0 - tight.x0), cell_w);
-        EXPECT_LE(std::abs(ix1 - tight.x1), cell_w);
-        EXPECT_LE(std::abs(iy0 - tight.y0), cell_h);
-        EXPECT_LE(std::abs(iy1 - tight.y1), cell_h);
-    }
-}
 
 TEST(PatternPng, SvgTextAppearsInPng) {
     std::vector<Pattern> patterns = {tapeline_test::two_piece_pattern()};

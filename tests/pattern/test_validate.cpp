@@ -199,3 +199,35 @@ TEST(PatternValidate, FeatureLengthUsesEdgesOrPoints) {
     EXPECT_NEAR(feature_length(p, p.bindings[0].features[1]), length(p.pieces[1].outline.edges[0]),
                 1e-12);
 }
+
+TEST(PatternValidate, NoPiecesZeroAreaAndFarCoordinatesAreRefused) {
+    Pattern empty;
+    empty.name = "nothing";
+    expect_rejected(empty, {"pattern 'nothing' has no pieces"});
+
+    Pattern flat;
+    flat.name = "flat";
+    Piece line;
+    line.name = "line";
+    line.outline = polygon({{0, 0}, {100, 0}, {100, 0.001}});  // a sliver of 0.05 mm2
+    flat.pieces.push_back(line);
+    ASSERT_TRUE(find_issue(validate(flat).errors, "zero_area"));
+    expect_rejected(flat, {"piece 'line'", "encloses 0.050 mm2, less than 1.000 mm2"});
+
+    Pattern point;
+    point.name = "point";
+    Piece dot;
+    dot.name = "dot";
+    dot.outline = polygon({{5, 5}});  // a single point: one edge of length 0
+    point.pieces.push_back(dot);
+    expect_rejected(point, {"piece 'dot'", "encloses 0.000 mm2"});
+
+    Pattern far;
+    far.name = "far";
+    Piece huge;
+    huge.name = "huge";
+    huge.outline = polygon({{0, 0}, {1e308, 0}, {0, 1e308}});
+    far.pieces.push_back(huge);
+    expect_rejected(far, {"piece 'huge'", "edge 0 reaches 1e+308 mm from the origin",
+                          "beyond the 10000000.000 mm a pattern may span"});
+}

@@ -2,8 +2,8 @@
 #define TAPELINE_TEST_GEODESIC_WITH_CGAL
 #include <tapeline_test/geodesic.h>
 
-#include <tapeline/core/analytic_geodesics.h>
-#include <tapeline/core/analytic_surface_types.h>
+#include <tapeline/surfaces/analytic_geodesics.h>
+#include <tapeline/surfaces/analytic_surface_types.h>
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>

@@ -2,25 +2,27 @@
 #include <tapeline/grading/compare.h>
 #include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
-#include <tapeline/grading/measurement_input.h>
 #include <tapeline/grading/output.h>
+#include <tapeline/pattern/freesewing_designs.h>
 #include <tapeline/pattern/io_freesewing.h>
+#include <tapeline/sizes/read_input.h>
 #include <tapeline_test/grading.h>
 
 namespace tapeline_test {
 
 namespace tg = tapeline::grading;
 namespace tp = tapeline::pattern;
+namespace ts = tapeline::sizes;
 
-tg::GradeResult grade(const tp::Pattern& base, const tp::MeasurementSet& from,
-                      const tp::MeasurementSet& to, const tg::GradingOptions& options,
+tg::GradeResult grade(const tp::Pattern& base, const ts::MeasurementSet& from,
+                      const ts::MeasurementSet& to, const tg::GradingOptions& options,
                       const std::vector<tg::SeamSpec>& seams) {
     return tg::grade_pattern(base, from, to, options, seams);
 }
 
 std::vector<tg::SeamSpec> freesewing_seams(const tp::Pattern& p,
                                            std::vector<std::string>* skipped) {
-    return tg::freesewing_seams(p, skipped);
+    return tp::freesewing_seams(p, skipped);
 }
 
 tp::Pattern freesewing_draft(const std::string& design, const std::string& size) {
@@ -30,13 +32,9 @@ tp::Pattern freesewing_draft(const std::string& design, const std::string& size)
     return p;
 }
 
-tp::MeasurementSet freesewing_set(const std::string& name) {
-    return tg::read_measurement_input(
+ts::MeasurementSet freesewing_set(const std::string& name) {
+    return ts::read_measurement_input(
         std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json", name);
-}
-
-tp::MeasurementSet read_measurement_input(const std::string& path, const std::string& set_name) {
-    return tg::read_measurement_input(path, set_name);
 }
 
 Deviation deviation(const tp::Pattern& reference, const tp::Pattern& graded) {

@@ -74,7 +74,7 @@ SyntheticSurfaceMesh synthetic_surface_mesh(const SyntheticBodyOptions& syntheti
 }
 
 SyntheticLengths measure_synthetic_lengths(const SyntheticBodyOptions& synthetic, bool connected,
-                                           bool exact) {
+                                           bool exact, const std::vector<std::string>& exact_only) {
     const SurfaceMesh tm = synthetic_surface_mesh(synthetic, connected);
     BodyOptions o;
     o.unit = meas::LengthUnit::mm;
@@ -103,7 +103,8 @@ SyntheticLengths measure_synthetic_lengths(const SyntheticBodyOptions& synthetic
             }
             const auto r = solver.path(s.waypoints[i], s.waypoints[i + 1]);
             c.gcf = r.on_mesh.found() ? r.on_mesh.length * m.frame.scale : NAN;
-            if (exact) {
+            if (exact && (exact_only.empty() || std::find(exact_only.begin(), exact_only.end(),
+                                                          s.name) != exact_only.end())) {
                 c.exact = geo::exact_mmp_path(tm, geo::SurfacePoint<SurfaceMesh>(s.waypoints[i]),
                                               geo::SurfacePoint<SurfaceMesh>(s.waypoints[i + 1]))
                               .length *

@@ -3,7 +3,7 @@
 // so the two cores compile them in parallel).
 #pragma once
 
-#include <tapeline/core/analytic_surfaces.h>
+#include <tapeline/surfaces/analytic_surfaces.h>
 #include <tapeline_test/surfaces.h>
 
 #include <CGAL/Polygon_mesh_processing/orientation.h>

@@ -3,8 +3,8 @@
 #pragma once
 
 #include <tapeline/grading/grading_types.h>
-#include <tapeline/pattern/measurement_set.h>
 #include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <string>
 #include <vector>
@@ -12,13 +12,13 @@
 namespace tapeline_test {
 
 tapeline::grading::GradeResult grade(const tapeline::pattern::Pattern& base,
-                                     const tapeline::pattern::MeasurementSet& from,
-                                     const tapeline::pattern::MeasurementSet& to,
+                                     const tapeline::sizes::MeasurementSet& from,
+                                     const tapeline::sizes::MeasurementSet& to,
                                      const tapeline::grading::GradingOptions& options,
                                      const std::vector<tapeline::grading::SeamSpec>& seams = {});
 
-/// The seams freesewing_bindings.h derives for a FreeSewing draft; `skipped` gets the rules that
-/// did not apply.
+/// The seams of a FreeSewing draft's design (pattern/freesewing_designs.h); `skipped` gets the
+/// rules that did not apply.
 std::vector<tapeline::grading::SeamSpec> freesewing_seams(const tapeline::pattern::Pattern& p,
                                                           std::vector<std::string>* skipped);
 
@@ -26,10 +26,7 @@ std::vector<tapeline::grading::SeamSpec> freesewing_seams(const tapeline::patter
 tapeline::pattern::Pattern freesewing_draft(const std::string& design, const std::string& size);
 
 /// A FreeSewing set from ../shared/data/patterns/freesewing/measurement_sets.json.
-tapeline::pattern::MeasurementSet freesewing_set(const std::string& name);
-
-tapeline::pattern::MeasurementSet read_measurement_input(const std::string& path,
-                                                         const std::string& set_name = "");
+tapeline::sizes::MeasurementSet freesewing_set(const std::string& name);
 
 struct Deviation {
     double mean_mm = 0, max_mm = 0;

@@ -58,6 +58,15 @@ void write_scalar_from_soup(const std::string& path, const Points& points, const
                             const std::vector<double>& values,
                             const tapeline::ScalarPlyOptions& options = {});
 
+/// A point set as read_point_set (core/point_io.h) returns it, in plain types.
+struct PointSetView {
+    std::string file, format;
+    std::size_t dimension = 0;
+    std::vector<double> coordinates, normals;
+};
+/// read_point_set (throws as the library does).
+PointSetView read_points(const std::string& path);
+
 /// A fresh empty directory under the system temporary directory, named after the test.
 std::string temp_dir(const std::string& name);
 /// Writes bytes to a file (test inputs, possibly broken on purpose).

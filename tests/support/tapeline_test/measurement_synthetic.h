@@ -27,8 +27,10 @@ struct SyntheticLengths {
 /// The synthetic body as a Surface_mesh<Epick>, measure_body, then everything
 /// measure_skin_lengths does (lengths.h). `connected`: the body's closed parts merged into one
 /// skin first (CGAL corefinement union; the same surface outside the overlaps), so that paths
-/// can cross from part to part. `exact`: also run exact MMP on every segment.
+/// can cross from part to part. `exact`: also run exact MMP on every segment (of the lengths
+/// named in `exact_only`, when it is not empty).
 SyntheticLengths measure_synthetic_lengths(const SyntheticBodyOptions& synthetic,
-                                           bool connected = true, bool exact = false);
+                                           bool connected = true, bool exact = false,
+                                           const std::vector<std::string>& exact_only = {});
 
 }  // namespace tapeline_test::measurement

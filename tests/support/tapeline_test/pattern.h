@@ -5,6 +5,7 @@
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/pattern.h>
+#include <tapeline_test/temp_dir.h>
 
 #include <gtest/gtest.h>
 
@@ -73,24 +74,6 @@ inline void write_text(const std::string& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary);
     out << text;
 }
-
-/// A fresh directory under the system temporary directory, removed at scope exit.
-struct TempDir {
-    std::filesystem::path path;
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        path = std::filesystem::temp_directory_path() /
-               ("tapeline_pattern_" + std::string(info ? info->name() : "test") + "_" +
-                std::to_string(::getpid()));
-        std::filesystem::remove_all(path);
-        std::filesystem::create_directories(path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
 
 /// A closed polygon of line edges through `pts`.
 inline tapeline::pattern::Outline polygon(const std::vector<tapeline::pattern::Point2>& pts) {

@@ -2,7 +2,7 @@
 // compiled once in tapeline_test_support_measurement (support/measurement_picture.cpp).
 #pragma once
 
-#include <tapeline/core/raster.h>
+#include <tapeline/draw/canvas.h>
 #include <tapeline/measurement/picture_types.h>
 #include <tapeline_test/measurement.h>
 
@@ -16,7 +16,7 @@ namespace tapeline_test::measurement {
 struct Picture {
     std::string svg;
     PictureReport svg_report;
-    tapeline::raster::RgbaImage image;
+    tapeline::draw::RgbaImage image;
     PictureReport image_report;
     std::vector<std::uint8_t> png;
     PictureReport png_report;

@@ -2,7 +2,7 @@
 // tapeline_test_support_surfaces, so test files include gtest and this header only.
 #pragma once
 
-#include <tapeline/core/analytic_surface_types.h>
+#include <tapeline/surfaces/analytic_surface_types.h>
 
 #include <cstddef>
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/internal/coordinate_range.h>
 #include <tapeline/core/internal/text_scan.h>
 #include <tapeline/core/mesh_io.h>
 
@@ -142,10 +143,13 @@ inline PointSet read_point_set(const std::string& path) {
                                    {nx->second[i], ny->second[i], nz->second[i]});
         if (out.coordinates.empty())
             throw InvalidInput(path + ": no points");
+        internal::check_coordinate_range(path, out.coordinates.data(), out.size(), 3);
         return out;
     }
     const std::string bytes = internal::load_file(path);
-    return internal::read_delimited_points(path, bytes, ext == ".csv");
+    PointSet out = internal::read_delimited_points(path, bytes, ext == ".csv");
+    internal::check_coordinate_range(path, out.coordinates.data(), out.size(), out.dimension);
+    return out;
 }
 
 }  // namespace tapeline

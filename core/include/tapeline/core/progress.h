@@ -76,15 +76,17 @@ inline void set_progress_sink(ProgressSink sink) {
 class Progress {
 public:
     explicit Progress(std::string phase, std::size_t total = 0, double delay = 1.0)
-        : phase_(std::move(phase)), total_(total), delay_(delay),
+        : phase_(std::move(phase)),
+          total_(total),
+          delay_(delay),
           start_(std::chrono::steady_clock::now()) {
         auto& s = internal::progress_settings();
         std::lock_guard<std::mutex> lock(s.mutex);
         sink_ = s.sink;
         if (!sink_) {
             const bool terminal = ::isatty(::fileno(stderr)) != 0;
-            enabled_ = s.mode == ProgressMode::always ||
-                       (s.mode == ProgressMode::automatic && terminal);
+            enabled_ =
+                s.mode == ProgressMode::always || (s.mode == ProgressMode::automatic && terminal);
             terminal_ = terminal;
         } else {
             enabled_ = s.mode != ProgressMode::never;
@@ -100,21 +102,26 @@ public:
 
     void advance(std::size_t n = 1) {
         const std::size_t done = done_.fetch_add(n, std::memory_order_relaxed) + n;
-        if (enabled_) maybe_report(done, false);
+        if (enabled_)
+            maybe_report(done, false);
     }
     void set(std::size_t done) {
         done_.store(done, std::memory_order_relaxed);
-        if (enabled_) maybe_report(done, false);
+        if (enabled_)
+            maybe_report(done, false);
     }
     void set_total(std::size_t total) { total_ = total; }
     void note(std::string text) {
-        if (!enabled_) return;
+        if (!enabled_)
+            return;
         std::lock_guard<std::mutex> lock(mutex_);
         note_ = std::move(text);
     }
     void finish() {
-        if (finished_.exchange(true)) return;
-        if (enabled_ && reported_) maybe_report(done_.load(), true);
+        if (finished_.exchange(true))
+            return;
+        if (enabled_ && reported_)
+            maybe_report(done_.load(), true);
     }
 
 private:
@@ -123,13 +130,16 @@ private:
     }
     void maybe_report(std::size_t done, bool final_line) {
         const double t = elapsed();
-        if (!final_line && (t < delay_ || t - last_ < interval_)) return;
+        if (!final_line && (t < delay_ || t - last_ < interval_))
+            return;
         std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
         if (!lock.owns_lock()) {
-            if (!final_line) return;
+            if (!final_line)
+                return;
             lock.lock();
         }
-        if (!final_line && t - last_ < interval_) return;
+        if (!final_line && t - last_ < interval_)
+            return;
         last_ = t;
         reported_ = true;
         ProgressEvent e{phase_, done, total_, t, note_, final_line};
@@ -145,7 +155,8 @@ private:
             std::snprintf(line, sizeof line, "%s: %zu %.1f s", phase_.c_str(), done, t);
         }
         std::string text = line;
-        if (!note_.empty()) text += "  " + note_;
+        if (!note_.empty())
+            text += "  " + note_;
         if (terminal_) {
             std::fprintf(stderr, "\r\033[K%s%s", text.c_str(), final_line ? "\n" : "");
         } else {

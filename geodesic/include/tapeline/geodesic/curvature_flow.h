@@ -14,7 +14,9 @@
 // smooth surface the mesh approximates.
 #pragma once
 
+#include <tapeline/core/compact_mesh.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/core/progress.h>
 #include <tapeline/geodesic/curvature_flow_types.h>
 #include <tapeline/geodesic/internal/gcf_distances.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
@@ -96,62 +98,8 @@ public:
             throw InvalidInput(std::string(kWhere) + ": the mesh is too large (32-bit indices)");
         if (nf == 0)
             throw InvalidInput(std::string(kWhere) + ": the mesh has no faces");
-        mesh_.xyz.resize(nv);
-        for (std::size_t i = 0; i < nv; ++i) {
-            const auto& p = get(vpm_, index_.vertex(i));
-            mesh_.xyz[i] =
-                gcf::Vec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-        }
-        mesh_.corner.resize(3 * nf);
-        mesh_.across.assign(3 * nf, gcf::kNone);
-        std::vector<std::uint32_t> vf_count(nv + 1, 0);
-        for (std::size_t fi = 0; fi < nf; ++fi) {
-            auto h = halfedge(index_.face(fi), tm);
-            for (int k = 0; k < 3; ++k, h = next(h, tm)) {
-                const auto v = static_cast<std::uint32_t>(index_.index(source(h, tm)));
-                mesh_.corner[3 * fi + k] = v;
-                ++vf_count[v + 1];
-                const auto g = face(opposite(h, tm), tm);
-                if (g != GT::null_face())
-                    mesh_.across[3 * fi + k] = static_cast<std::uint32_t>(index_.index(g));
-            }
-        }
-        mesh_.vf_start.assign(nv + 1, 0);
-        for (std::size_t i = 0; i < nv; ++i)
-            mesh_.vf_start[i + 1] = mesh_.vf_start[i] + vf_count[i + 1];
-        mesh_.vf.resize(mesh_.vf_start[nv]);
-        std::vector<std::uint32_t> fill(mesh_.vf_start.begin(), mesh_.vf_start.end() - 1);
-        for (std::size_t fi = 0; fi < nf; ++fi)
-            for (int k = 0; k < 3; ++k)
-                mesh_.vf[fill[mesh_.corner[3 * fi + k]]++] = static_cast<std::uint32_t>(fi);
-        // Neighbours over edges (border edges included).
-        mesh_.vv_start.assign(nv + 1, 0);
-        for (std::size_t i = 0; i < nv; ++i) {
-            const auto v = index_.vertex(i);
-            std::size_t deg = 0;
-            if (halfedge(v, tm) != GT::null_halfedge())
-                for (auto h : CGAL::halfedges_around_target(v, tm)) {
-                    (void)h;
-                    ++deg;
-                }
-            mesh_.vv_start[i + 1] = mesh_.vv_start[i] + static_cast<std::uint32_t>(deg);
-        }
-        mesh_.vv.resize(mesh_.vv_start[nv]);
-        double edge_sum = 0;
-        std::size_t edge_count = 0;
-        for (std::size_t i = 0; i < nv; ++i) {
-            const auto v = index_.vertex(i);
-            std::size_t k = mesh_.vv_start[i];
-            if (halfedge(v, tm) != GT::null_halfedge())
-                for (auto h : CGAL::halfedges_around_target(v, tm)) {
-                    const auto w = static_cast<std::uint32_t>(index_.index(source(h, tm)));
-                    mesh_.vv[k++] = w;
-                    edge_sum += (mesh_.xyz[w] - mesh_.xyz[i]).norm();
-                    ++edge_count;
-                }
-        }
-        mesh_.mean_edge = edge_count ? edge_sum / static_cast<double>(edge_count) : 0.0;
-        mesh_.finish();
+        mesh_ = gcf::Mesh(make_compact_mesh(tm, vpm_, index_.vertex_index_map(),
+                                            index_.face_index_map(), kWhere));
         components_ = connected_components(tm, index_);
     }
 
@@ -524,6 +472,10 @@ public:
     std::size_t vertex_count() const {
         return setup_.mesh().vertex_count();
     }
+    /// The checked index maps and the compact mesh arrays the queries run on.
+    const Setup& setup() const {
+        return setup_;
+    }
     double mean_edge_length() const {
         return setup_.mesh().mean_edge;
     }
@@ -609,7 +561,10 @@ CurvatureFlowDistanceReport gcf_distances(
           (options.repair_graph_margin >= 0 && options.repair_graph_margin <= 1)))
         throw InvalidInput(
             "gcf_distances: repair_graph_margin must be -1 (automatic) or in [0, 1]");
-    const internal::GcfSetup<TriangleMesh, NamedParameters> setup(tm, np);
+    // One set-up for the propagation and the repair's two-point paths.
+    using Solver = GeodesicPathSolver<TriangleMesh, NamedParameters>;
+    const Solver solver(tm, np);
+    const auto& setup = solver.setup();
     const auto a = setup.locate(SurfacePoint<TriangleMesh>(source), "the source");
     const auto& m = setup.mesh();
     CurvatureFlowDistanceReport r;
@@ -630,12 +585,7 @@ CurvatureFlowDistanceReport gcf_distances(
     pp.anchor_slides = options.anchor_slides;
     pp.cut_locus_guard = options.cut_locus_guard;
     auto f = internal::gcf::propagate(m, a.vertex, pp, options.flow);
-    r.flows = f.flows;
-    r.iterations = f.iterations;
-    r.converged = f.converged;
-    r.stalled = f.stalled;
-    r.max_iterations = f.max_iterations;
-    r.solver_failures = f.failed;
+    f.counts.write(r);
     r.stored_samples = f.stored_samples;
     r.epsilon = f.epsilon;
     r.max_faces = f.max_faces;
@@ -649,13 +599,12 @@ CurvatureFlowDistanceReport gcf_distances(
         // below the exact distance): kept where shorter, where the distance was far below the
         // graph's, or where it was too short and the path agrees better with the neighbours
         // (repaired_distance).
-        using Solver = GeodesicPathSolver<TriangleMesh, NamedParameters>;
         const auto t1 = internal::Clock::now();
         std::vector<char> skip(m.vertex_count(), 0);
         skip[a.vertex] = 1;
         for (std::uint32_t k = m.vv_start[a.vertex]; k < m.vv_start[a.vertex + 1]; ++k)
             skip[m.vv[k]] = 1;  // the 1-ring: straight edges, exact on the faces
-        const Solver solver(tm, np);
+        Progress progress("gcf distances: repaired vertices");
         CurvatureFlowOptions repair_flow;
         repair_flow.max_iterations = options.repair_flow_iterations;
         // Each vertex is re-solved once (its shortest path length is kept); every round checks
@@ -746,6 +695,7 @@ CurvatureFlowDistanceReport gcf_distances(
                     keep(solver.path_from_polyline(poly, repair_flow));
                 }
                 solved[v] = best;
+                progress.advance();
             };
 #ifdef CGAL_LINKED_WITH_TBB
             tbb::parallel_for(tbb::blocked_range<std::size_t>(0, fresh.size(), 1),

@@ -147,17 +147,39 @@ enum class WindowAnchor {
     field,
 };
 
+/// Knobs of the single-source curvature-flow propagation that meshes (CurvatureFlowDistanceOptions)
+/// and point sets (PointCloudDistanceOptions, point_cloud_types.h) share; each method's options
+/// derive from it. The window (Algorithm 2's flowed samples) and the flow settings are the
+/// methods' own: their defaults differ.
+struct FlowPropagationOptions {
+    /// Target spacing of the path samples; 0 picks the method's own length (the mean edge length
+    /// of a mesh, as the two-point flow does; the cell size of a point set).
+    double sample_spacing = 0;
+    /// Besides the straightest parent, also continue (and keep the shortest of) the visited
+    /// neighbour that gives the smallest tentative distance and those whose geodesics arrive from
+    /// a direction over 60 degrees away: where two wavefronts meet (a cut locus, the far side of
+    /// a handle) the straightest continuation can come from the longer side. Not in the thesis;
+    /// measured on the torus (80 x 32, W = 8): max error 16.6 % without, 0.26 % with it.
+    bool cut_locus_guard = true;
+    /// Algorithm 2 with the field anchor: paths of at most this many samples are flowed whole
+    /// (Algorithm 1 near the source, where the distance field is too curved to interpolate);
+    /// 0 picks 2 * window + 1.
+    std::size_t near_source_samples = 0;
+    /// Algorithm 2 with the field anchor: times the anchor is slid sideways to straighten the
+    /// kink between the incoming distance gradient and the flowed window (each slide re-flows).
+    std::size_t anchor_slides = 3;
+};
+
 /// Single-source distances by curvature flow (gcf_distances, curvature_flow.h): ring-by-ring
 /// propagation from a source vertex, each new vertex started from the straightest continuation of
-/// a visited neighbour's geodesic and flowed (the thesis' Algorithms 1 and 2).
-struct CurvatureFlowDistanceOptions {
+/// a visited neighbour's geodesic and flowed (the thesis' Algorithms 1 and 2). The shared knobs
+/// (sample_spacing, cut_locus_guard, near_source_samples, anchor_slides) are in
+/// FlowPropagationOptions.
+struct CurvatureFlowDistanceOptions : FlowPropagationOptions {
     /// 0: Algorithm 1, the whole polyline of every vertex is flowed (cost and memory grow with the
     /// distance). w > 0: Algorithm 2, only the last w samples are flowed, the sample before them
     /// is held fixed and only w + 1 samples and the fixed prefix length are kept per vertex.
     std::size_t window = 0;
-    /// Target spacing of the samples; 0 picks the mean edge length of the mesh (as the two-point
-    /// flow does).
-    double sample_spacing = 0;
     /// true: d(v) = length of the sample polyline lifted by Phong tessellation (approaches the
     /// smooth surface); false: a length on the faces, like the exact polyhedral distance's (see
     /// polyhedral_length).
@@ -176,12 +198,6 @@ struct CurvatureFlowDistanceOptions {
     /// geodesic is continued and flowed and the shortest result is kept (degree times the cost;
     /// the fixed prefix of Algorithm 2 then accumulates less error).
     bool shortest_parent = false;
-    /// Besides the straightest parent, also continue (and keep the shortest of) the visited
-    /// neighbour that gives the smallest tentative distance and those whose geodesics arrive from
-    /// a direction over 60 degrees away: where two wavefronts meet (a cut locus, the far side of
-    /// a handle) the straightest continuation can come from the longer side. Not in the thesis;
-    /// measured on the torus (80 x 32, W = 8): max error 16.6 % without, 0.26 % with it.
-    bool cut_locus_guard = true;
     /// With the on-face length (smooth_length = false): after the propagation, every vertex outside
     /// the source's 1-ring whose distance differs from the planar triangle update of its
     /// neighbours' distances by more than this (relative) is re-solved as a two-point path from the
@@ -233,13 +249,6 @@ struct CurvatureFlowDistanceOptions {
     double repair_graph_margin = -1;
     /// Algorithm 2 only: what the distance at the first flowed sample (the anchor) is.
     WindowAnchor anchor = WindowAnchor::field;
-    /// Algorithm 2 with WindowAnchor::field: paths of at most this many samples are flowed whole
-    /// (Algorithm 1 near the source, where the distance field is too curved to interpolate);
-    /// 0 picks 2 * window + 1.
-    std::size_t near_source_samples = 0;
-    /// Algorithm 2 with WindowAnchor::field: times the anchor is slid sideways to straighten the
-    /// kink between the incoming distance gradient and the flowed window (each slide re-flows).
-    std::size_t anchor_slides = 3;
     /// The flow of each vertex (sample_spacing and sample_count are ignored here). Tolerance
     /// 1e-7 instead of the two-point default 1e-4: a kink below 1e-4 would otherwise not be
     /// flowed at all, and on a flat grid the distances are then Euclidean to ~1e-13 instead of

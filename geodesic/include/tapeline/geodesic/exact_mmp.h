@@ -15,7 +15,9 @@
 // twice), and runaway propagation (a cap turns it into SolverFailure).
 #pragma once
 
+#include <tapeline/core/compact_mesh.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/core/progress.h>
 #include <tapeline/geodesic/exact_mmp_types.h>
 #include <tapeline/geodesic/internal/mesh_checks.h>
 #include <tapeline/geodesic/internal/mmp_engine.h>
@@ -44,7 +46,8 @@ namespace tapeline::geodesic {
 
 namespace internal {
 
-/// Source-independent part of the exact MMP method: checked index maps and the compact mesh.
+/// Source-independent part of the exact MMP method: checked index maps and the compact mesh
+/// (core/compact_mesh.h) with the lengths, layouts and flags of mmp_mesh.h.
 /// Shared (read-only) by every solver of a distance matrix.
 template <class TriangleMesh, class NamedParameters>
 class MmpPrepared {
@@ -64,34 +67,8 @@ public:
         if (index_.vertex_count() >= mmp::kNone / 2 || 3 * index_.face_count() >= mmp::kNone / 2)
             throw InvalidInput("exact_mmp: the mesh is too large (32-bit element indices)");
         components_ = connected_components(tm, index_);
-        const std::size_t nv = index_.vertex_count(), nf = index_.face_count();
-        mesh_.xyz.resize(3 * nv);
-        for (std::size_t i = 0; i < nv; ++i) {
-            const auto& p = get(vpm_, index_.vertex(i));
-            mesh_.xyz[3 * i] = CGAL::to_double(p.x());
-            mesh_.xyz[3 * i + 1] = CGAL::to_double(p.y());
-            mesh_.xyz[3 * i + 2] = CGAL::to_double(p.z());
-        }
-        mesh_.corner.resize(3 * nf);
-        mesh_.twin.assign(3 * nf, mmp::kNone);
-        for (std::size_t fi = 0; fi < nf; ++fi) {
-            const auto f = index_.face(fi);
-            auto h = halfedge(f, tm);
-            for (int k = 0; k < 3; ++k, h = next(h, tm)) {
-                mesh_.corner[3 * fi + k] = static_cast<std::uint32_t>(index_.index(source(h, tm)));
-                const auto o = opposite(h, tm);
-                if (is_border(o, tm))
-                    continue;
-                const auto g = face(o, tm);
-                auto c = halfedge(g, tm);
-                int j = 0;
-                while (c != o && j < 3) {
-                    c = next(c, tm);
-                    ++j;
-                }
-                mesh_.twin[3 * fi + k] = static_cast<std::uint32_t>(3 * index_.index(g) + j);
-            }
-        }
+        mesh_ = mmp::CompactMesh(make_compact_mesh(tm, vpm_, index_.vertex_index_map(),
+                                                   index_.face_index_map(), "exact_mmp"));
         mesh_.finish();
         for (auto flags : mesh_.vflags)
             pseudo_vertices_ += (flags & mmp::kPseudoSource) ? 1 : 0;
@@ -164,7 +141,8 @@ template <class Prepared>
 std::unique_ptr<mmp::Engine> run_mmp(const Prepared& prep,
                                      const std::vector<typename Prepared::Point>& sources,
                                      const std::vector<std::uint32_t>& targets,
-                                     const ExactMmpOptions& options, bool keep_windows) {
+                                     const ExactMmpOptions& options, bool keep_windows,
+                                     Progress* progress = nullptr) {
     auto engine = std::make_unique<mmp::Engine>(prep.compact(), options.max_distance,
                                                 options.prune_with_vertex_distances,
                                                 options.max_propagated_windows, keep_windows);
@@ -176,7 +154,7 @@ std::unique_ptr<mmp::Engine> run_mmp(const Prepared& prep,
     }
     engine->set_targets(targets);
     try {
-        engine->run();
+        engine->run(progress);
     } catch (const mmp::SolverAbort& e) {
         throw SolverFailure(std::string("exact_mmp: ") + e.what());
     }
@@ -270,7 +248,9 @@ private:
             pts.push_back(prep_->checked(SurfacePoint<TriangleMesh>(l), "source face location"));
         const auto targets = prep_->checked_targets(options_);
         const auto t0 = internal::Clock::now();
-        engine_ = internal::run_mmp(*prep_, pts, targets, options_, options_.keep_windows);
+        Progress progress("exact-mmp windows");
+        engine_ =
+            internal::run_mmp(*prep_, pts, targets, options_, options_.keep_windows, &progress);
         sources_ = std::move(pts);
         report_.method = "exact_mmp";
         report_.vertices = prep_->index().vertex_count();
@@ -374,12 +354,14 @@ std::vector<std::vector<double>> exact_mmp_distance_matrix(
     const auto targets = prep.checked_targets(options);
     const std::size_t nv = prep.index().vertex_count();
     std::vector<std::vector<double>> rows(sources.size());
+    Progress progress("exact-mmp distance matrix rows", sources.size());
     auto row = [&](std::size_t s) {
         const auto engine = internal::run_mmp(prep, {pts[s]}, targets, options, false);
         std::vector<double>& r = rows[s];
         r.resize(nv);
         for (std::size_t i = 0; i < nv; ++i)
             r[i] = engine->vertex_distance(static_cast<std::uint32_t>(i));
+        progress.advance();
     };
 #ifdef CGAL_LINKED_WITH_TBB
     (void)threads;

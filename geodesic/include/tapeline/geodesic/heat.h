@@ -239,6 +239,16 @@ public:
             throw SolverFailure(std::string(w) +
                                 ": CGAL Heat_method_3 failed in a solve: " + e.what());
         }
+        for (std::size_t i = 0; i < d.size(); ++i)
+            if (std::isnan(d[i]))
+                // CGAL normalises the heat gradient per face; where the heat is equal at a
+                // face's three corners (a coarse, symmetric mesh) that is 0 / 0.
+                throw SolverFailure(std::string(w) +
+                                    ": CGAL Heat_method_3 returned NaN at vertex #" +
+                                    std::to_string(i) +
+                                    ": the heat gradient vanishes on a face (a mesh too coarse "
+                                    "or too symmetric for the heat method); refine the mesh or "
+                                    "use exact-mmp");
         DistanceReport report = report_;
         report.sources = sources.size();
         report.unreachable = internal::write_distances(d, index_, distances, w);

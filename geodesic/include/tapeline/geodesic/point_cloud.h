@@ -189,12 +189,7 @@ private:
     }
     static void fill(PointCloudDistanceReport& r, const internal::gcf::points::QueryResult& q) {
         r.reached_nodes = q.reached_nodes;
-        r.flows = q.counts.flows;
-        r.iterations = q.counts.iterations;
-        r.converged = q.counts.converged;
-        r.stalled = q.counts.stalled;
-        r.max_iterations = q.counts.max_iterations;
-        r.solver_failures = q.counts.failed;
+        q.counts.write(r);
         r.charts = q.charts;
         r.propagate_seconds = q.propagate_seconds;
         r.interpolate_seconds = q.interpolate_seconds;

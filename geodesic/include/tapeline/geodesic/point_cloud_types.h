@@ -51,8 +51,9 @@ inline const char* to_string(PointCloudKnn k) {
 }
 
 /// Behaviour of the point-cloud propagation (the thesis' Algorithm 3). Lengths are in the
-/// points' unit.
-struct PointCloudDistanceOptions {
+/// points' unit. The knobs shared with meshes (sample_spacing, 0 = the cell size;
+/// cut_locus_guard; near_source_samples; anchor_slides) are in FlowPropagationOptions.
+struct PointCloudDistanceOptions : FlowPropagationOptions {
     /// Edge length of the regular grid's cubic cells; each non-empty cell is one destination node
     /// (the mean of its points, projected onto the local surface). 0 picks the median distance
     /// of a point to its d-th nearest neighbour (a few points per cell).
@@ -67,15 +68,6 @@ struct PointCloudDistanceOptions {
     std::size_t manifold_dimension = 0;
     PointCloudProjection projection = PointCloudProjection::mls;
     PointCloudKnn knn = PointCloudKnn::automatic;
-    /// Target spacing of the path samples; 0 picks the cell size.
-    double sample_spacing = 0;
-    /// As on meshes (CurvatureFlowDistanceOptions): also continue the neighbour with the smallest
-    /// tentative distance and those arriving from over 60 degrees away, keep the shortest.
-    bool cut_locus_guard = true;
-    /// Paths of at most this many samples are flowed whole (near the source); 0: 2 window + 1.
-    std::size_t near_source_samples = 0;
-    /// Times the window's anchor is slid sideways to straighten its kink (each slide re-flows).
-    std::size_t anchor_slides = 3;
     /// The flow of each node (sample_spacing and sample_count ignored; the ceres solver is for
     /// meshes only and is rejected). Tolerance 1e-4 and at most 30 steps, not the 1e-7 of mesh
     /// distances: a sample's surface is the chart of its nearest input point, which changes
@@ -109,6 +101,9 @@ struct PointCloudDistanceReport {
     double sample_spacing = 0;
     std::size_t nodes = 0;       ///< non-empty cells
     std::size_t node_edges = 0;  ///< pairs of neighbouring non-empty cells
+    /// Grid components joined through their closest k-nearest-neighbour pair (sampling sparser
+    /// than the cell somewhere); 0 when the grid of non-empty cells was connected.
+    std::size_t bridged_components = 0;
     std::size_t window = 0;
     std::string projection;
     std::string knn;                  ///< the backend used: "cgal" or "nanoflann"

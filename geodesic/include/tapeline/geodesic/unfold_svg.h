@@ -1,11 +1,12 @@
 // An unfolded path strip (unfold.h) as an SVG picture: the faces, the path mapped into the plane
 // and the straight segment between its unfolded end points, with their lengths.
 //
-// No CGAL; write to a file with tapeline::write_file_atomically (core/atomic_write.h) so that a
-// failure leaves no half-written picture.
+// No CGAL; the SVG helpers are the drawing module's (draw/svg.h). Write to a file with
+// tapeline::write_file_atomically (core/atomic_write.h) so that a failure leaves no half-written
+// picture.
 #pragma once
 
-#include <tapeline/core/xml_escape.h>
+#include <tapeline/draw/svg.h>
 #include <tapeline/geodesic/unfold_types.h>
 
 #include <algorithm>
@@ -14,29 +15,16 @@
 #include <limits>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace tapeline::geodesic {
-
-namespace internal {
-
-inline std::string svg_escape(const std::string& text) {
-    return xml_escape(text);
-}
-
-inline std::string svg_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    return buf;
-}
-
-}  // namespace internal
 
 /// Writes the strip as a standalone SVG document: faces (grey), the traced path (blue, through the
 /// unfolded points), the straight segment between the unfolded end points (red, dashed), and a
 /// caption with `title`, the traced and the straight lengths. `width`: picture width in pixels.
 inline void write_unfold_svg(std::ostream& out, const UnfoldedPath& u,
                              const std::string& title = "", double width = 1200) {
-    using internal::svg_number;
+    const auto svg_number = [](double v) { return draw::svg_fixed(v, 3); };
     double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
     double xmax = -xmin, ymax = -xmin;
     auto grow = [&](const std::array<double, 2>& p) {
@@ -59,13 +47,14 @@ inline void write_unfold_svg(std::ostream& out, const UnfoldedPath& u,
     const double scale = (width - 2 * margin) / span;
     const double height = (ymax - ymin) * scale + 2 * margin + caption;
     // Plane y up, SVG y down.
+    auto P = [&](const std::array<double, 2>& p) {
+        return tapeline::Vec2{margin + (p[0] - xmin) * scale,
+                              caption + margin + (ymax - p[1]) * scale};
+    };
     auto X = [&](double x) { return svg_number(margin + (x - xmin) * scale); };
     auto Y = [&](double y) { return svg_number(caption + margin + (ymax - y) * scale); };
-    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(width)
-        << "\" height=\"" << svg_number(height) << "\" viewBox=\"0 0 " << svg_number(width) << ' '
-        << svg_number(height) << "\">\n"
-        << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    draw::svg_open(out, svg_number(width), svg_number(height), "");
+    out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     const double gap = u.traced_length - u.straight_length;
     char line[256];
     std::snprintf(line, sizeof line,
@@ -74,7 +63,7 @@ inline void write_unfold_svg(std::ostream& out, const UnfoldedPath& u,
                   u.traced_length, u.straight_length, gap,
                   u.straight_length > 0 ? gap / u.straight_length : 0.0);
     out << "<text x=\"" << margin << "\" y=\"22\" font-family=\"sans-serif\" font-size=\"15\">"
-        << internal::svg_escape(title.empty() ? std::string("unfolded path strip") : title)
+        << draw::xml_escape(title.empty() ? std::string("unfolded path strip") : title)
         << "</text>\n"
         << "<text x=\"" << margin << "\" y=\"42\" font-family=\"sans-serif\" font-size=\"13\">"
         << line << "</text>\n";
@@ -89,10 +78,9 @@ inline void write_unfold_svg(std::ostream& out, const UnfoldedPath& u,
     out << "<g fill=\"#e8ecf4\" stroke=\"#8890a0\" stroke-width=\"" << stroke * 0.5
         << "\" stroke-linejoin=\"round\">\n";
     for (const auto& f : u.faces) {
-        out << "<polygon points=\"";
-        for (int k = 0; k < 3; ++k)
-            out << (k ? " " : "") << X(f.corners[k][0]) << ',' << Y(f.corners[k][1]);
-        out << "\"/>\n";
+        out << "<polygon points=\""
+            << draw::svg_points({P(f.corners[0]), P(f.corners[1]), P(f.corners[2])}, 3, false)
+            << "\"/>\n";
     }
     out << "</g>\n";
     if (!u.points.empty()) {
@@ -103,9 +91,10 @@ inline void write_unfold_svg(std::ostream& out, const UnfoldedPath& u,
             << "\" stroke-dasharray=\"6 4\"/>\n";
         out << "<polyline fill=\"none\" stroke=\"#2050c0\" stroke-width=\"" << 1.5 * stroke
             << "\" points=\"";
-        for (std::size_t k = 0; k < u.points.size(); ++k)
-            out << (k ? " " : "") << X(u.points[k][0]) << ',' << Y(u.points[k][1]);
-        out << "\"/>\n";
+        std::vector<tapeline::Vec2> path;
+        for (const auto& p : u.points)
+            path.push_back(P(p));
+        out << draw::svg_points(path, 3, false) << "\"/>\n";
         for (const auto* p : {&a, &b})
             out << "<circle cx=\"" << X((*p)[0]) << "\" cy=\"" << Y((*p)[1])
                 << "\" r=\"4\" fill=\"#2050c0\"/>\n";

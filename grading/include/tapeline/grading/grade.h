@@ -20,8 +20,8 @@
 #include <tapeline/core/errors.h>
 #include <tapeline/grading/grading_types.h>
 #include <tapeline/grading/internal/model.h>
-#include <tapeline/pattern/measurement_set.h>
 #include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <ceres/autodiff_cost_function.h>
 #include <ceres/dynamic_autodiff_cost_function.h>
@@ -394,10 +394,11 @@ inline StyleMetrics style_metrics(const Model& m, const Solution& s, double styl
 }  // namespace internal
 
 /// Grades `base` (drafted for `from`) to the measurements `to`, keeping the pattern's own seams and
-/// `seams` (e.g. freesewing_seams(base)). Throws InvalidInput when a binding names a measurement
-/// `to` lacks or a seam names a missing piece or edge, SolverFailure when Ceres fails.
-inline GradeResult grade_pattern(const tp::Pattern& base, const tp::MeasurementSet& from,
-                                 const tp::MeasurementSet& to, const GradingOptions& o = {},
+/// those of `seams` it does not hold by name (e.g. pattern::freesewing_seams(base)). Throws
+/// InvalidInput when a binding names a measurement `to` lacks or a seam names a missing piece or
+/// edge, SolverFailure when Ceres fails.
+inline GradeResult grade_pattern(const tp::Pattern& base, const sizes::MeasurementSet& from,
+                                 const sizes::MeasurementSet& to, const GradingOptions& o = {},
                                  const std::vector<SeamSpec>& seams = {}) {
     using namespace internal;
     const auto t0 = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <tapeline/pattern/pattern.h>
+#include <tapeline/pattern/seam_chains.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -44,24 +45,8 @@ struct GradingTolerances {
 /// A seam to keep while grading: the outline edges of side A are sewn to those of side B. A side
 /// may span several pieces (a sleeve cap against the front and the back armhole). The pattern's
 /// own seams (`Pattern::seams`) are used as well.
-struct SeamSpec {
-    std::string name;
-    std::vector<pattern::EdgeRange> a, b;
-    /// For a seam of one range per side: how the ranges meet (a pattern::Seam can record it).
-    pattern::SeamDirection direction = pattern::SeamDirection::opposite;
-};
-
-/// The seams of `seams` that a pattern can hold (one edge range per side), as pattern seams, for
-/// the graded pattern (ranges keep their edge indices: grading moves points, never edges).
-inline std::vector<pattern::Seam> pattern_seams(const std::vector<SeamSpec>& seams) {
-    std::vector<pattern::Seam> out;
-    for (const SeamSpec& s : seams) {
-        if (s.a.size() == 1 && s.b.size() == 1) {
-            out.push_back({s.name, s.a[0], s.b[0], s.direction});
-        }
-    }
-    return out;
-}
+/// Seams beyond the pattern's own that grading holds: sides of several edge ranges allowed.
+using pattern::SeamSpec;
 
 struct GradingOptions {
     std::uint32_t seed = 42;

@@ -1,12 +1,12 @@
 // What grading writes besides the graded pattern: the fit table (text), the report and the grade
-// rules (JSON), a DXF-.RUL-like rule table (text), and the Pareto front as a PNG scatter plot
-// drawn with pattern/png.h's encoder and bitmap font (no plotting library).
+// rules (JSON), a DXF-.RUL-like rule table (text), and the Pareto front as a PNG scatter plot with
+// axes, tick labels and a legend (draw/plot.h; no plotting library).
 #pragma once
 
 #include <tapeline/core/atomic_write.h>
+#include <tapeline/draw/plot.h>
+#include <tapeline/draw/png.h>
 #include <tapeline/grading/grade.h>
-#include <tapeline/pattern/internal/bitmap_font.h>
-#include <tapeline/pattern/png.h>
 
 #include <nlohmann/json.hpp>
 
@@ -133,94 +133,28 @@ inline std::string rul_table(const GradeResult& g, const std::string& from, cons
     return o.str();
 }
 
-namespace internal {
-
-struct Canvas {
-    pattern::RgbaImage img;
-    void set(long x, long y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
-        if (x < 0 || y < 0 || x >= long(img.width) || y >= long(img.height)) {
-            return;
-        }
-        std::uint8_t* p = &img.rgba[4 * (std::size_t(y) * img.width + std::size_t(x))];
-        p[0] = r;
-        p[1] = g;
-        p[2] = b;
-        p[3] = 255;
-    }
-    void text(long x, long y, const std::string& s, int scale = 2) {
-        for (char ch : s) {
-            const int c = (ch < 32 || ch > 126) ? '?' : ch;
-            const auto& glyph = pattern::internal::kBitmapFont[c - 32];
-            for (int row = 0; row < pattern::internal::kGlyphRows; ++row) {
-                for (int col = 0; col < pattern::internal::kGlyphColumns; ++col) {
-                    if (glyph[row] & (1 << (pattern::internal::kGlyphColumns - 1 - col))) {
-                        for (int a = 0; a < scale; ++a) {
-                            for (int b = 0; b < scale; ++b) {
-                                set(x + col * scale + a, y + row * scale + b, 0, 0, 0);
-                            }
-                        }
-                    }
-                }
-            }
-            x += pattern::internal::kGlyphAdvance * scale;
-        }
-    }
-};
-
-}  // namespace internal
-
 /// The candidates in the (fit, style) plane: NSGA-II members grey, polished members blue, the
-/// Ceres fast path green, the chosen one a red ring; axes labelled. PNG bytes.
+/// Ceres fast path green, the chosen one a red ring; axes with tick labels and a legend. PNG bytes.
 inline std::vector<std::uint8_t> pareto_png(const GradingReport& r) {
-    internal::Canvas c;
-    c.img.width = 640;
-    c.img.height = 480;
-    c.img.rgba.assign(4 * c.img.width * c.img.height, 255);
-    const long x0 = 80, x1 = 610, y0 = 420, y1 = 40;
-    double fmax = 1e-9, smax = 1e-9;
-    for (const ParetoPoint& p : r.front) {
-        fmax = std::max(fmax, p.fit);
-        smax = std::max(smax, p.style);
-    }
-    fmax *= 1.05;
-    smax *= 1.05;
-    for (long x = x0; x <= x1; ++x) {
-        c.set(x, y0, 0, 0, 0);
-    }
-    for (long y = y1; y <= y0; ++y) {
-        c.set(x0, y, 0, 0, 0);
-    }
-    auto px = [&](double f) { return x0 + long((x1 - x0) * f / fmax); };
-    auto py = [&](double s) { return y0 - long((y0 - y1) * s / smax); };
+    using draw::PlotSeries;
+    std::vector<PlotSeries> series(4);
+    series[0] = {"NSGA-II", {}, {150 / 255.0, 150 / 255.0, 150 / 255.0}};
+    series[1] = {"NSGA-II + Ceres polish", {}, {30 / 255.0, 80 / 255.0, 220 / 255.0}};
+    series[2] = {"Ceres fast path", {}, {0, 160 / 255.0, 0}};
+    series[3] = {"chosen", {}, {220 / 255.0, 0, 0}, PlotSeries::Marker::ring, 6};
     for (std::size_t i = 0; i < r.front.size(); ++i) {
         const ParetoPoint& p = r.front[i];
-        std::uint8_t cr = 150, cg = 150, cb = 150;
-        if (p.origin == "ceres") {
-            cr = 0, cg = 160, cb = 0;
-        } else if (p.polished) {
-            cr = 30, cg = 80, cb = 220;
-        }
-        const long X = px(p.fit), Y = py(p.style);
-        for (long a = -3; a <= 3; ++a) {
-            for (long b = -3; b <= 3; ++b) {
-                if (a * a + b * b <= 9) {
-                    c.set(X + a, Y + b, cr, cg, cb);
-                }
-                if (i == r.chosen && a * a + b * b >= 25 - 8) {
-                    c.set(X + a * 2, Y + b * 2, 220, 0, 0);
-                }
-            }
+        const std::size_t k = p.origin == "ceres" ? 2 : p.polished ? 1 : 0;
+        series[k].points.push_back({p.fit, p.style});
+        if (i == r.chosen) {
+            series[3].points.push_back({p.fit, p.style});
         }
     }
-    char buf[64];
-    c.text(x0, y0 + 20, "fit: RMS binding+seam error (mm), 0 to");
-    std::snprintf(buf, sizeof buf, "%.3g", fmax);
-    c.text(x1 - 60, y0 + 20, buf);
-    c.text(10, 10, "style (RMS, mm-equiv.), 0 to");
-    std::snprintf(buf, sizeof buf, "%.3g", smax);
-    c.text(360, 10, buf);
-    c.text(x0 + 20, y1 + 10, "grey NSGA-II  blue +Ceres  green Ceres  red chosen", 1);
-    return pattern::encode_png(c.img, 1.0);
+    draw::PlotOptions o;
+    o.title = "Pareto front of the grading";
+    o.x_label = "fit: RMS binding + seam error (mm)";
+    o.y_label = "style: RMS change (mm-equivalent)";
+    return draw::encode_png(draw::scatter_plot(series, o), 1.0);
 }
 
 }  // namespace tapeline::grading

@@ -8,6 +8,7 @@
 // of faces(tm), so a landmark can be located on the caller's mesh again.
 #pragma once
 
+#include <tapeline/core/compact_mesh.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/measurement/body_types.h>
 #include <tapeline/measurement/internal/sections.h>
@@ -110,44 +111,40 @@ inline Body make_body(std::vector<Vec3> points, std::vector<std::array<std::uint
 namespace internal {
 
 /// The vertices (input coordinates, as doubles) and triangles of a CGAL triangle mesh
-/// (FaceListGraph; named parameter vertex_point_map). A face with other than three vertices is a
-/// TopologyError naming `what` and the face.
+/// (FaceListGraph; named parameter vertex_point_map), read through the compact mesh
+/// (core/compact_mesh.h) in the order of vertices(tm) and faces(tm). A triangle's corners start at
+/// target(halfedge(f)). A face with other than three vertices is a TopologyError naming `what`
+/// and the face.
 template <class TriangleMesh, class NamedParameters>
 std::pair<std::vector<Vec3>, std::vector<std::array<std::uint32_t, 3>>> triangle_soup(
     const TriangleMesh& tm, const std::string& what, const NamedParameters& np) {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
     const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                      get_const_property_map(CGAL::vertex_point, tm));
-    auto index = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);
-    std::vector<Vec3> points;
-    points.reserve(num_vertices(tm));
-    for (auto v : vertices(tm)) {
-        put(index, v, static_cast<std::uint32_t>(points.size()));
-        const auto& p = get(vpm, v);
-        points.push_back({CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())});
+                                      CGAL::get_const_property_map(CGAL::vertex_point, tm));
+    // Enumeration order whatever index maps the mesh carries (a Surface_mesh with removed
+    // elements included), so that points[i] is the i-th vertex of vertices(tm).
+    auto vertex_index = get(CGAL::dynamic_vertex_property_t<std::uint32_t>(), tm);
+    std::uint32_t i = 0;
+    for (auto v : vertices(tm))
+        put(vertex_index, v, i++);
+    auto face_index = get(CGAL::dynamic_face_property_t<std::uint32_t>(), tm);
+    i = 0;
+    for (auto f : faces(tm))
+        put(face_index, f, i++);
+    CompactMesh c;
+    try {
+        c = make_compact_mesh(tm, vpm, vertex_index, face_index, what);
+    } catch (const TopologyError& e) {
+        throw TopologyError(std::string(e.what()) +
+                            "; tapeline::read_triangle_mesh triangulates polygons");
     }
-    std::vector<std::array<std::uint32_t, 3>> tris;
-    tris.reserve(num_faces(tm));
-    std::size_t f_index = 0;
-    for (auto f : faces(tm)) {
-        std::array<std::uint32_t, 3> t{};
-        std::size_t k = 0;
-        for (auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-            if (k < 3) {
-                t[k] = get(index, target(h, tm));
-            }
-            ++k;
-        }
-        if (k != 3) {
-            throw TopologyError(what + ": face " + std::to_string(f_index) + " has " +
-                                std::to_string(k) +
-                                " vertices; a body mesh must be triangulated "
-                                "(tapeline::read_triangle_mesh does it)");
-        }
-        tris.push_back(t);
-        ++f_index;
-    }
+    std::vector<Vec3> points(c.vertex_count());
+    for (std::uint32_t v = 0; v < points.size(); ++v)
+        points[v] = c.point(v);
+    std::vector<std::array<std::uint32_t, 3>> tris(c.face_count());
+    for (std::size_t f = 0; f < tris.size(); ++f)
+        tris[f] = {c.corner[3 * f + 1], c.corner[3 * f + 2], c.corner[3 * f]};
     return {std::move(points), std::move(tris)};
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/units.h>
 
 #include <array>
 #include <cmath>
@@ -19,36 +20,13 @@ namespace tapeline::measurement {
 
 using Vec3 = std::array<double, 3>;
 
-enum class LengthUnit { m, dm, cm, mm };
+/// The units a body mesh may be in: the metric ones of core's table (infer_length_unit tells
+/// them apart by the body's height).
+using tapeline::LengthUnit;
+using tapeline::millimetres_per;
+using tapeline::to_string;
+
 enum class Pose { a_pose, t_pose };
-
-inline const char* to_string(LengthUnit u) {
-    switch (u) {
-        case LengthUnit::m:
-            return "m";
-        case LengthUnit::dm:
-            return "dm";
-        case LengthUnit::cm:
-            return "cm";
-        case LengthUnit::mm:
-            break;
-    }
-    return "mm";
-}
-
-inline double millimetres_per(LengthUnit u) {
-    switch (u) {
-        case LengthUnit::m:
-            return 1000;
-        case LengthUnit::dm:
-            return 100;
-        case LengthUnit::cm:
-            return 10;
-        case LengthUnit::mm:
-            break;
-    }
-    return 1;
-}
 
 /// "m", "dm", "cm" or "mm"; anything else is InvalidInput naming `where` (e.g. "--units").
 inline LengthUnit parse_length_unit(const std::string& text, const std::string& where) {

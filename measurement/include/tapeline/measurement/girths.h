@@ -3,7 +3,8 @@
 // arms), its convex hull in the plane (the tape bridges hollows), and the hull's perimeter. Where
 // the definition asks for the smallest or largest girth, the level is searched within a band
 // (dense scan, then golden-section search). Limb girths are taken in planes perpendicular to the
-// limb's axis, found from the centres of the limb landmarks' sections. Definitions:
+// limb's axis, found from the centres of the limb landmarks' sections. Names and ISO 8559-1,
+// FreeSewing and Seamly2D columns: the catalogue (tapeline/sizes/catalogue.h). Definitions:
 // measurement/README.md.
 #pragma once
 
@@ -21,39 +22,6 @@
 #include <vector>
 
 namespace tapeline::measurement {
-
-/// One girth of the catalogue: identifier, ISO 8559-1 clause (by title) and FreeSewing name.
-struct GirthInfo {
-    const char* name;
-    const char* iso_clause;
-    const char* freesewing;
-};
-
-/// Every girth measure_girths produces. Limb girths also come per side ("thigh_girth_left",
-/// "thigh_girth_right", without FreeSewing name); the unsuffixed one is the body's right side
-/// (the left when the right is missing), as a tailor measures it.
-inline const std::vector<GirthInfo>& girth_catalogue() {
-    static const std::vector<GirthInfo> c = {
-        {"head_girth", "head girth", "head"},
-        {"neck_girth", "neck girth", "neck"},
-        {"neck_base_girth", "neck base girth", ""},
-        {"bust_girth", "bust girth", "chest"},
-        {"high_bust_girth", "", "highBust"},
-        {"underbust_girth", "underbust girth", "underbust"},
-        {"waist_girth", "waist girth", "waist"},
-        {"high_hip_girth", "", "hips"},
-        {"hip_girth", "hip girth", "seat"},
-        {"thigh_girth", "thigh girth", "upperLeg"},
-        {"mid_thigh_girth", "mid-thigh girth", ""},
-        {"knee_girth", "knee girth", "knee"},
-        {"calf_girth", "calf girth", ""},
-        {"ankle_girth", "ankle girth", "ankle"},
-        {"upper_arm_girth", "upper arm girth", "biceps"},
-        {"elbow_girth", "elbow girth", ""},
-        {"wrist_girth", "wrist girth", "wrist"},
-    };
-    return c;
-}
 
 namespace internal {
 
@@ -95,16 +63,6 @@ private:
     MeasurementSet out_;
     static constexpr double kInf = std::numeric_limits<double>::infinity();
 
-    static const GirthInfo& info(const std::string& base) {
-        for (const auto& g : girth_catalogue()) {
-            if (base == g.name) {
-                return g;
-            }
-        }
-        static const GirthInfo none{"", "", ""};
-        return none;
-    }
-
     /// The first missing landmark among `names`, as a reason line for `what`.
     std::optional<std::string> missing(const std::string& what,
                                        const std::vector<std::string>& names) const {
@@ -141,21 +99,11 @@ private:
             out_.add_missing(name, name + ": no body section around the expected point");
             return;
         }
-        std::string base = name;
-        for (const char* suffix : {"_left", "_right"}) {
-            const std::string sfx = suffix;
-            if (base.size() > sfx.size() &&
-                base.compare(base.size() - sfx.size(), sfx.size(), sfx) == 0) {
-                base = base.substr(0, base.size() - sfx.size());
-            }
-        }
-        const GirthInfo& gi = info(base);
         Measurement m;
         m.name = name;
         m.kind = MeasurementKind::girth;
         m.value = t.perimeter;
-        m.iso_clause = gi.iso_clause;
-        m.freesewing = base == name ? gi.freesewing : "";
+        apply_catalogue(m);
         m.points = t.loop;
         m.closed = true;
         m.plane_point = t.plane.origin;
@@ -230,7 +178,7 @@ private:
         m.name = "stature";
         m.kind = MeasurementKind::height;
         m.value = top[1] - m_.min_y;
-        m.iso_clause = "stature";
+        apply_catalogue(m);
         m.points = {{top[0], m_.min_y, top[2]}, top};
         m.landmarks = {"top_of_head"};
         out_.add(std::move(m));
@@ -506,7 +454,7 @@ private:
             }
             Measurement copy = *m;
             copy.name = b;
-            copy.freesewing = info(b).freesewing;
+            apply_catalogue(copy);
             out_.add(std::move(copy));
         }
     }

@@ -13,7 +13,6 @@
 #include <tapeline/geodesic/curvature_flow.h>
 #include <tapeline/geodesic/sources.h>
 #include <tapeline/measurement/body_types.h>
-#include <tapeline/measurement/iso8559.h>
 #include <tapeline/measurement/measurement_types.h>
 #include <tapeline/measurement/shoulder_slope.h>
 
@@ -39,7 +38,7 @@ namespace tapeline::measurement {
 /// One length to take: its names and the surface points the path goes through, in order.
 template <class TriangleMesh>
 struct SkinLength {
-    std::string name, iso_clause, freesewing;
+    std::string name;  ///< a catalogue name (tapeline/sizes/catalogue.h)
     std::vector<std::string> landmarks;
     std::vector<geodesic::FaceLocation<TriangleMesh>> waypoints;
     double floor_drop = 0;  ///< mm added after the last waypoint: straight down to the floor
@@ -106,7 +105,7 @@ public:
         }
         const auto vpm = CGAL::parameters::choose_parameter(
             CGAL::parameters::get_parameter(np_, CGAL::internal_np::vertex_point),
-            get_const_property_map(CGAL::vertex_point, tm_));
+            CGAL::get_const_property_map(CGAL::vertex_point, tm_));
         // The corners in the order of the barycentric coordinates (PMP::construct_point).
         const auto h = halfedge(l.first, tm_);
         const std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3> corners{
@@ -202,7 +201,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
 
     // Across-back shoulder width: acromion to acromion through the back midline at their level;
     // the ray starts in the neck base (the side neck points' centre, at the acromions' height).
-    add({"shoulder_width_back", "back shoulder width", "shoulderToShoulder", {}, {}, 0},
+    add({"shoulder_width_back", {}, {}, 0},
         {"acromion_left", "acromion_right", "side_neck_left", "side_neck_right"}, [&](auto& s) {
             const Vec3 neck = mid(P("side_neck_left"), P("side_neck_right"));
             const Vec3 shoulders = mid(P("acromion_left"), P("acromion_right"));
@@ -217,12 +216,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
     for (const bool back : {true, false}) {
         const std::string side = side_of({"side_neck"});
         const std::string hps = "side_neck_" + side;
-        add({back ? "hps_to_waist_back" : "hps_to_waist_front",
-             "",
-             back ? "hpsToWaistBack" : "hpsToWaistFront",
-             {},
-             {},
-             0},
+        add({back ? "hps_to_waist_back" : "hps_to_waist_front", {}, {}, 0},
             {hps, "waist_front", "waist_back"}, [&, hps, back](auto& s) {
                 const Vec3 w = mid(P("waist_front"), P("waist_back"));
                 s.waypoints.push_back(at.nearest(P(hps)));
@@ -234,16 +228,14 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
     {
         const std::string side = side_of({"acromion", "elbow", "wrist"});
         const std::string a = "acromion_" + side, e = "elbow_" + side, w = "wrist_" + side;
-        add({"shoulder_to_elbow", "upper arm length", "shoulderToElbow", {}, {}, 0}, {a, e},
-            [&](auto& s) {
-                s.waypoints = {at.nearest(P(a)), at.nearest(P(e))};
-                return std::string();
-            });
-        add({"shoulder_to_wrist", "arm length", "shoulderToWrist", {}, {}, 0}, {a, e, w},
-            [&](auto& s) {
-                s.waypoints = {at.nearest(P(a)), at.nearest(P(e)), at.nearest(P(w))};
-                return std::string();
-            });
+        add({"shoulder_to_elbow", {}, {}, 0}, {a, e}, [&](auto& s) {
+            s.waypoints = {at.nearest(P(a)), at.nearest(P(e))};
+            return std::string();
+        });
+        add({"shoulder_to_wrist", {}, {}, 0}, {a, e, w}, [&](auto& s) {
+            s.waypoints = {at.nearest(P(a)), at.nearest(P(e)), at.nearest(P(w))};
+            return std::string();
+        });
     }
     // Legs: inseam from the crotch down the inside of the leg to the inner ankle, outseam from
     // the waist at the side down the outside to the outer ankle; both then straight to the floor.
@@ -259,16 +251,15 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
             }
             return f;
         };
-        add({"inseam", "inside leg length", "inseam", {}, {}, 0}, {"crotch", ankle}, [&](auto& s) {
+        add({"inseam", {}, {}, 0}, {"crotch", ankle}, [&](auto& s) {
             s.waypoints.push_back(at.nearest(P("crotch")));
             return ankle_point(s, -out);
         });
-        add({"outseam", "outside leg length", "waistToFloor", {}, {}, 0},
-            {"waist_front", "waist_back", ankle}, [&](auto& s) {
-                const std::string f =
-                    hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
-                return f.empty() ? ankle_point(s, out) : f;
-            });
+        add({"outseam", {}, {}, 0}, {"waist_front", "waist_back", ankle}, [&](auto& s) {
+            const std::string f =
+                hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+            return f.empty() ? ankle_point(s, out) : f;
+        });
     }
     // Along the side of the torso: waist to hip level, and armpit down to the waist (the side
     // points are where a ray from the torso's centre at that level leaves the skin sideways).
@@ -279,28 +270,26 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
         auto waist_side = [&](SkinLength<TriangleMesh>& s) {
             return hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
         };
-        add({"waist_to_hips", "", "waistToHips", {}, {}, 0},
-            {"waist_front", "waist_back", "hip_back"}, [&](auto& s) {
-                const std::string f = waist_side(s);
-                if (!f.empty())
-                    return f;
-                const Vec3 w = mid(P("waist_front"), P("waist_back"));
-                return hit({w[0], P("hip_back")[1], w[2]}, {out, 0, 0}, s, "hip side");
-            });
-        add({"waist_to_armpit", "", "waistToArmpit", {}, {}, 0},
-            {armpit, "waist_front", "waist_back"}, [&](auto& s) {
-                s.waypoints.push_back(at.nearest(P(armpit)));
-                return waist_side(s);
-            });
+        add({"waist_to_hips", {}, {}, 0}, {"waist_front", "waist_back", "hip_back"}, [&](auto& s) {
+            const std::string f = waist_side(s);
+            if (!f.empty())
+                return f;
+            const Vec3 w = mid(P("waist_front"), P("waist_back"));
+            return hit({w[0], P("hip_back")[1], w[2]}, {out, 0, 0}, s, "hip side");
+        });
+        add({"waist_to_armpit", {}, {}, 0}, {armpit, "waist_front", "waist_back"}, [&](auto& s) {
+            s.waypoints.push_back(at.nearest(P(armpit)));
+            return waist_side(s);
+        });
     }
     // Back neck point (cervicale) to the waist at the back midline (ISO 8559-1 5.4.5), and the
     // front neck point to the waist at the front midline: both ends on the midline, so the
     // shortest path follows the spine / runs down between the breasts.
-    add({"back_neck_to_waist", "", "", {}, {}, 0}, {"cervicale", "waist_back"}, [&](auto& s) {
+    add({"back_neck_to_waist", {}, {}, 0}, {"cervicale", "waist_back"}, [&](auto& s) {
         s.waypoints = {at.nearest(P("cervicale")), at.nearest(P("waist_back"))};
         return std::string();
     });
-    add({"front_neck_to_waist", "", "", {}, {}, 0}, {"front_neck", "waist_front"}, [&](auto& s) {
+    add({"front_neck_to_waist", {}, {}, 0}, {"front_neck", "waist_front"}, [&](auto& s) {
         s.waypoints = {at.nearest(P("front_neck")), at.nearest(P("waist_front"))};
         return std::string();
     });
@@ -308,7 +297,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
     {
         const std::string side = side_of({"side_neck", "bust"});
         const std::string hps = "side_neck_" + side, bust = "bust_" + side;
-        add({"hps_to_bust", "", "hpsToBust", {}, {}, 0}, {hps, bust}, [&](auto& s) {
+        add({"hps_to_bust", {}, {}, 0}, {hps, bust}, [&](auto& s) {
             s.waypoints = {at.nearest(P(hps)), at.nearest(P(bust))};
             return std::string();
         });
@@ -316,8 +305,8 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
     // ISO's across-back shoulder width passes over the back neck point (5.4.3); our
     // shoulder_width_back (FreeSewing's shoulderToShoulder) crosses the back lower, at the
     // acromions' height.
-    add({"across_back_shoulder_width", "", "", {}, {}, 0},
-        {"acromion_left", "cervicale", "acromion_right"}, [&](auto& s) {
+    add({"across_back_shoulder_width", {}, {}, 0}, {"acromion_left", "cervicale", "acromion_right"},
+        [&](auto& s) {
             s.waypoints = {at.nearest(P("acromion_left")), at.nearest(P("cervicale")),
                            at.nearest(P("acromion_right"))};
             return std::string();
@@ -327,7 +316,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
     {
         const std::string side = side_of({"acromion", "elbow", "wrist"});
         const std::string a = "acromion_" + side, e = "elbow_" + side, w = "wrist_" + side;
-        add({"back_neck_to_wrist", "", "", {}, {}, 0}, {"cervicale", a, e, w}, [&](auto& s) {
+        add({"back_neck_to_wrist", {}, {}, 0}, {"cervicale", a, e, w}, [&](auto& s) {
             s.waypoints = {at.nearest(P("cervicale")), at.nearest(P(a)), at.nearest(P(e)),
                            at.nearest(P(w))};
             return std::string();
@@ -367,8 +356,6 @@ void take_skin_lengths(const geodesic::GeodesicPathSolver<TriangleMesh, NamedPar
         Measurement m;
         m.name = s.name;
         m.kind = MeasurementKind::length;
-        m.iso_clause = s.iso_clause;
-        m.freesewing = s.freesewing;
         m.landmarks = s.landmarks;
         double length = 0;
         std::string fail;
@@ -398,7 +385,7 @@ void take_skin_lengths(const geodesic::GeodesicPathSolver<TriangleMesh, NamedPar
             m.points.push_back({m.points.back()[0], 0.0, m.points.back()[2]});
         }
         m.value = length + s.floor_drop;
-        apply_iso8559(m);
+        apply_catalogue(m);
         set.add(std::move(m));
     }
     for (const auto& miss : plan.missing) {
@@ -618,26 +605,24 @@ void measure_cross_seam(const TriangleMesh& tm, const BodyFrame& frame, const La
     for (std::size_t i = split + 1; i < tape.size(); ++i) {
         back.push_back(to3(tape[i]));
     }
-    auto make = [&](const std::string& name, const std::string& freesewing,
-                    std::vector<Vec3> points) {
+    auto make = [&](const std::string& name, std::vector<Vec3> points) {
         Measurement m;
         m.name = name;
         m.kind = MeasurementKind::length;
-        m.freesewing = freesewing;
         m.landmarks = {"crotch", "waist_front", "waist_back"};
         if (lm.point("hip_back")) {
             m.landmarks.push_back("hip_back");
         }
         m.value = internal::polyline_length(points);
         m.points = std::move(points);
-        apply_iso8559(m);
+        apply_catalogue(m);
         set.add(std::move(m));
     };
     std::vector<Vec3> all = front;
     all.insert(all.end(), back.begin() + 1, back.end());
-    make("cross_seam", "crossSeam", all);
-    make("cross_seam_front", "crossSeamFront", front);
-    make("cross_seam_back", "", back);
+    make("cross_seam", all);
+    make("cross_seam_front", front);
+    make("cross_seam_back", back);
 }
 
 /// One-shot: the lengths along the skin of a body mesh (the mesh measure_body measured, with its

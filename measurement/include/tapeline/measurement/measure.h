@@ -6,7 +6,6 @@
 #include <tapeline/measurement/body.h>
 #include <tapeline/measurement/body_checks.h>
 #include <tapeline/measurement/girths.h>
-#include <tapeline/measurement/iso8559.h>
 #include <tapeline/measurement/landmarks.h>
 #include <tapeline/measurement/measurement_types.h>
 #include <tapeline/measurement/self_checks.h>
@@ -43,7 +42,7 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     const auto t1 = Clock::now();
     std::size_t cuts = 0;
     out.measurements = measure_girths(body, out.landmarks, options, &cuts);
-    apply_iso8559(out.measurements);
+    apply_catalogue(out.measurements);
     out.warnings = self_check(body, out.landmarks, out.measurements);
     const auto t2 = Clock::now();
     out.report.landmark_seconds = std::chrono::duration<double>(t1 - t0).count();

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <tapeline/measurement/body_types.h>
+#include <tapeline/sizes/catalogue.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <cstddef>
 #include <optional>
@@ -93,21 +95,10 @@ struct LandmarkSet {
     }
 };
 
-enum class MeasurementKind { girth, length, height, angle };
-
-inline const char* to_string(MeasurementKind k) {
-    switch (k) {
-        case MeasurementKind::girth:
-            return "girth";
-        case MeasurementKind::length:
-            return "length";
-        case MeasurementKind::height:
-            return "height";
-        case MeasurementKind::angle:
-            break;
-    }
-    return "angle";
-}
+/// The catalogue's kinds; a measurement is taken as a girth, a length (also for the catalogue's
+/// widths), a height or an angle.
+using sizes::MeasurementKind;
+using sizes::to_string;
 
 /// One measurement with where it was taken.
 struct Measurement {
@@ -118,7 +109,7 @@ struct Measurement {
     /// no such item.
     std::string iso_clause;
     /// Its ISO 8559-1:2017 clause number ("5.3.10"); empty where no source states one
-    /// (iso8559.h holds the table and its source).
+    /// (the catalogue, tapeline/sizes/catalogue.h, holds the numbers and their source).
     std::string iso_number;
     std::string freesewing;  ///< FreeSewing measurement name ("waist"); empty when none
     /// Canonical mm. Girths: the tape loop (the convex hull of the section, in order, closed
@@ -188,6 +179,48 @@ struct CheckWarning {
     std::string rule;
     std::string message;  ///< one line naming both
 };
+/// Sets iso_clause, iso_number and freesewing of a measurement from the catalogue (left as they
+/// are when the catalogue does not know its name). The _left/_right variants of a sided
+/// measurement are its ISO item taken on that side, without FreeSewing name.
+inline void apply_catalogue(Measurement& m) {
+    const sizes::CatalogueMatch c = sizes::find_measurement(m.name);
+    if (c) {
+        m.iso_clause = c.entry->iso_title;
+        m.iso_number = c.entry->iso_number;
+        m.freesewing = c.whole() ? c.entry->freesewing : "";
+    }
+}
+
+inline void apply_catalogue(MeasurementSet& set) {
+    for (Measurement& m : set.measurements) {
+        apply_catalogue(m);
+    }
+}
+
+/// The taken measurements' values in the order they were taken (what the writers of
+/// tapeline/sizes take).
+inline sizes::NamedValues named_values(const MeasurementSet& set) {
+    sizes::NamedValues out;
+    for (const Measurement& m : set.measurements) {
+        out.emplace_back(m.name, m.value);
+    }
+    return out;
+}
+
+/// The flat set of a measuring: each value under our name and, where the catalogue has one, its
+/// FreeSewing name. Reading the measurement JSON back gives the same set without the angles
+/// (its reader takes value_mm only).
+inline sizes::MeasurementSet flat_set(const MeasurementSet& set, const std::string& name = "") {
+    sizes::MeasurementSet out;
+    out.name = name;
+    for (const Measurement& m : set.measurements) {
+        out.values[m.name] = m.value;
+        if (!m.freesewing.empty()) {
+            out.values[m.freesewing] = m.value;
+        }
+    }
+    return out;
+}
 
 /// How landmarks are searched and girth levels optimised.
 struct MeasureOptions {

@@ -8,15 +8,16 @@
 // towards the right-hand labels). Both are orthographic at `scale` picture mm per body mm, floors
 // aligned.
 //
-// Body. Rasterised with a z-buffer (Catmull 1974; no painter's-order artefacts where arms cross
-// the torso), Gouraud-interpolated vertex normals and Lambert shading in grey, lit from the
-// viewer's upper left. The PNG draws it at its resolution; the SVG embeds it per view as a small
-// PNG image (a few tens of kB where the 26k triangles as vector paths would be megabytes),
-// everything else in the SVG is vector: tapes, leaders, labels (escaped with core's xml_escape) and
-// landmarks.
+// Body. Rendered by the drawing module's mesh renderer (draw/mesh_render.h: a z-buffer, so no
+// painter's-order artefacts where arms cross the torso; Gouraud-interpolated vertex normals and
+// Lambert shading in grey, lit from the viewer's upper left). The PNG draws it at its resolution;
+// the SVG embeds it per view as a small PNG image (a few tens of kB where the 26k triangles as
+// vector paths would be megabytes), everything else in the SVG is vector: tapes, leaders, labels
+// (escaped with core's xml_escape) and landmarks.
 //
-// Tapes. Every segment is tested against the z-buffer at its midpoint: farther than
-// hidden_tolerance_mm behind the nearest skin in a 3 × 3 pixel neighbourhood counts as hidden.
+// Tapes. Every segment is tested against the z-buffer at its midpoint (the renderer's hidden-line
+// test): farther than hidden_tolerance_mm behind the skin seen in a 3 × 3 pixel neighbourhood
+// counts as hidden.
 // Each path is drawn whole, thin, dashed and faint, and its visible runs solid over it. Each
 // measurement is labelled once, in the view where its tape is longest and most visible (front
 // view: in the column on the side of the body its tape lies; side view: to the right); labels of a
@@ -31,9 +32,11 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/core/png_encode.h>
-#include <tapeline/core/raster.h>
-#include <tapeline/core/xml_escape.h>
+#include <tapeline/core/vec2.h>
+#include <tapeline/draw/canvas.h>
+#include <tapeline/draw/mesh_render.h>
+#include <tapeline/draw/png.h>
+#include <tapeline/draw/svg.h>
 #include <tapeline/measurement/body.h>
 #include <tapeline/measurement/measurement_types.h>
 #include <tapeline/measurement/picture_types.h>
@@ -56,16 +59,14 @@ namespace tapeline::measurement {
 
 namespace internal::pic {
 
-using raster::Point;
-using raster::Rgb;
+using Point = tapeline::Vec2;
+using draw::mix;
+using draw::Rgb;
+using draw::svg_colour;
+using draw::xml_escape;
 
 inline double vdot(const Vec3& a, const Vec3& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
-inline Vec3 vnormalized(const Vec3& a) {
-    const double n = std::sqrt(vdot(a, a));
-    return n > 0 ? Vec3{a[0] / n, a[1] / n, a[2] / n} : Vec3{0, 0, 0};
+    return vec3::dot(a, b);
 }
 
 inline Rgb palette(std::size_t i) {
@@ -76,173 +77,22 @@ inline Rgb palette(std::size_t i) {
     return colours[i % (sizeof colours / sizeof colours[0])];
 }
 
-inline Rgb mix(Rgb a, Rgb b, double t) {
-    return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t};
-}
-
-inline std::string hex(Rgb c) {
-    char s[8];
-    const auto ch = [](double v) { return int(std::lround(255 * std::clamp(v, 0.0, 1.0))); };
-    std::snprintf(s, sizeof s, "#%02x%02x%02x", ch(c.r), ch(c.g), ch(c.b));
-    return s;
-}
-
 /// A number for SVG attributes: two decimals, trailing zeros dropped.
 inline std::string num(double v) {
-    char s[32];
-    std::snprintf(s, sizeof s, "%.2f", std::abs(v) < 0.005 ? 0.0 : v);
-    std::string t = s;
-    while (!t.empty() && t.back() == '0') {
-        t.pop_back();
-    }
-    if (!t.empty() && t.back() == '.') {
-        t.pop_back();
-    }
-    return t;
+    return draw::svg_number(v, 2);
 }
 
-inline std::string base64(const std::vector<std::uint8_t>& bytes) {
-    static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string out;
-    out.reserve((bytes.size() + 2) / 3 * 4);
-    for (std::size_t i = 0; i < bytes.size(); i += 3) {
-        const std::uint32_t n = (std::uint32_t(bytes[i]) << 16) |
-                                (i + 1 < bytes.size() ? std::uint32_t(bytes[i + 1]) << 8 : 0) |
-                                (i + 2 < bytes.size() ? std::uint32_t(bytes[i + 2]) : 0);
-        out += k[(n >> 18) & 63];
-        out += k[(n >> 12) & 63];
-        out += i + 1 < bytes.size() ? k[(n >> 6) & 63] : '=';
-        out += i + 2 < bytes.size() ? k[n & 63] : '=';
-    }
-    return out;
-}
-
-/// One view: its projection (body mm to view-local picture mm: x from the body's leftmost point,
-/// y down from its top) and its z-buffered rendering at r pixels per picture mm.
+/// One view: what the report says of it and its rendering (projection from body mm to picture
+/// mm, the z-buffered body at r pixels per picture mm, transparent where no body).
 struct ViewRender {
     PictureView view;
-    double scale = 1, u_min = 0, y_max = 0;
-    double r = 1;
-    raster::RgbaImage image;  ///< transparent where no body
-    std::vector<float> depth;
+    draw::RenderedView render;
 
-    Point local(const Vec3& p) const {
-        return {scale * (vdot(p, view.right) - u_min), scale * (y_max - p[1])};
-    }
-    Point page(const Vec3& p) const {
-        const Point l = local(p);
-        return {view.left_mm + l.x, view.top_mm + l.y};
-    }
-    double toward(const Vec3& p) const { return vdot(p, view.toward_viewer); }
-
+    Point local(const Vec3& p) const { return render.view.local(p); }
+    Point page(const Vec3& p) const { return render.view.page(p); }
     /// Whether p is no more than `tol` body mm behind the skin seen around its pixel.
-    bool visible(const Vec3& p, double tol) const {
-        const Point l = local(p);
-        const long x = long(std::floor(l.x * r)), y = long(std::floor(l.y * r));
-        const double d = toward(p);
-        double nearest = std::numeric_limits<double>::infinity();
-        for (long yy = y - 1; yy <= y + 1; ++yy) {
-            for (long xx = x - 1; xx <= x + 1; ++xx) {
-                if (xx < 0 || yy < 0 || xx >= long(image.width) || yy >= long(image.height)) {
-                    return true;
-                }
-                nearest = std::min(nearest,
-                                   double(depth[std::size_t(yy) * image.width + std::size_t(xx)]));
-            }
-        }
-        return !(nearest > -std::numeric_limits<double>::infinity()) || d >= nearest - tol;
-    }
+    bool visible(const Vec3& p, double tol) const { return render.visible(p, tol); }
 };
-
-inline std::vector<Vec3> vertex_normals(const std::vector<Vec3>& pts,
-                                        const PictureTriangles& tris) {
-    std::vector<Vec3> n(pts.size(), Vec3{0, 0, 0});
-    for (const auto& t : tris) {
-        const Vec3 &a = pts[t[0]], &b = pts[t[1]], &c = pts[t[2]];
-        const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const Vec3 e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const Vec3 f{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                     e1[0] * e2[1] - e1[1] * e2[0]};  // area-weighted
-        for (std::uint32_t v : t) {
-            for (int k = 0; k < 3; ++k) {
-                n[v][k] += f[k];
-            }
-        }
-    }
-    for (auto& v : n) {
-        v = vnormalized(v);
-    }
-    return n;
-}
-
-/// Fills v.image and v.depth: the body z-buffered and Lambert-shaded.
-inline void render_body(ViewRender& v, const std::vector<Vec3>& pts, const PictureTriangles& tris,
-                        const std::vector<Vec3>& normals) {
-    const std::size_t w = std::size_t(std::ceil(v.view.width_mm * v.r)) + 1;
-    const std::size_t h = std::size_t(std::ceil(v.view.height_mm * v.r)) + 1;
-    v.image.width = w;
-    v.image.height = h;
-    v.image.rgba.assign(4 * w * h, 0);
-    v.depth.assign(w * h, -std::numeric_limits<float>::infinity());
-    const Vec3 light = vnormalized({v.view.toward_viewer[0] - 0.35 * v.view.right[0],
-                                    v.view.toward_viewer[1] + 0.45,
-                                    v.view.toward_viewer[2] - 0.35 * v.view.right[2]});
-    const Rgb base{0.86, 0.84, 0.82};
-    for (const auto& t : tris) {
-        Point q[3];
-        double d[3];
-        for (int k = 0; k < 3; ++k) {
-            const Point l = v.local(pts[t[k]]);
-            q[k] = {l.x * v.r, l.y * v.r};
-            d[k] = v.toward(pts[t[k]]);
-        }
-        const double area =
-            (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
-        if (area == 0 || !std::isfinite(area)) {
-            continue;
-        }
-        const long x0 = std::max(0L, long(std::floor(std::min({q[0].x, q[1].x, q[2].x}))));
-        const long x1 = std::min(long(w) - 1, long(std::ceil(std::max({q[0].x, q[1].x, q[2].x}))));
-        const long y0 = std::max(0L, long(std::floor(std::min({q[0].y, q[1].y, q[2].y}))));
-        const long y1 = std::min(long(h) - 1, long(std::ceil(std::max({q[0].y, q[1].y, q[2].y}))));
-        for (long y = y0; y <= y1; ++y) {
-            for (long x = x0; x <= x1; ++x) {
-                const double px = x + 0.5, py = y + 0.5;
-                double b[3];
-                for (int k = 0; k < 3; ++k) {
-                    const Point& a = q[(k + 1) % 3];
-                    const Point& c = q[(k + 2) % 3];
-                    b[k] = ((c.x - a.x) * (py - a.y) - (c.y - a.y) * (px - a.x)) / area;
-                }
-                if (b[0] < 0 || b[1] < 0 || b[2] < 0) {
-                    continue;
-                }
-                const double z = b[0] * d[0] + b[1] * d[1] + b[2] * d[2];
-                float& zb = v.depth[std::size_t(y) * w + std::size_t(x)];
-                if (z <= zb) {
-                    continue;
-                }
-                zb = float(z);
-                Vec3 n{0, 0, 0};
-                for (int k = 0; k < 3; ++k) {
-                    for (int c = 0; c < 3; ++c) {
-                        n[c] += b[k] * normals[t[k]][c];
-                    }
-                }
-                n = vnormalized(n);
-                if (vdot(n, v.view.toward_viewer) < 0) {
-                    n = {-n[0], -n[1], -n[2]};  // seen through a hole: light it as a front face
-                }
-                const double shade = 0.32 + 0.68 * std::max(0.0, vdot(n, light));
-                std::uint8_t* p = &v.image.rgba[4 * (std::size_t(y) * w + std::size_t(x))];
-                p[0] = std::uint8_t(std::lround(255 * base.r * shade));
-                p[1] = std::uint8_t(std::lround(255 * base.g * shade));
-                p[2] = std::uint8_t(std::lround(255 * base.b * shade));
-                p[3] = 255;
-            }
-        }
-    }
-}
 
 /// A measurement as drawn: per view its whole path and its visible runs (page mm), its label.
 struct Drawn {
@@ -310,26 +160,18 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
         throw InvalidInput("measurement picture: empty body mesh (" + std::to_string(pts.size()) +
                            " vertices, " + std::to_string(tris.size()) + " triangles)");
     }
-    for (std::size_t f = 0; f < tris.size(); ++f) {
-        for (std::uint32_t v : tris[f]) {
-            if (v >= pts.size()) {
-                throw InvalidInput("measurement picture: face " + std::to_string(f) +
-                                   " references vertex " + std::to_string(v) + " of " +
-                                   std::to_string(pts.size()));
-            }
-        }
-    }
+    draw::check_triangles(pts.size(), tris, "measurement picture");
     Scene s;
     s.title = o.title;
     const double fs = o.font_size_mm, line_h = 1.45 * fs;
     const auto snap = [r](double mm) { return std::round(mm * r) / r; };
 
     s.views[0].view.name = "front";
-    s.views[0].view.right = {1, 0, 0};
-    s.views[0].view.toward_viewer = {0, 0, 1};
+    s.views[0].view.right = draw::front_view().right;
+    s.views[0].view.toward_viewer = draw::front_view().toward_viewer;
     s.views[1].view.name = "side";
-    s.views[1].view.right = {0, 0, -1};
-    s.views[1].view.toward_viewer = {1, 0, 0};
+    s.views[1].view.right = draw::left_side_view().right;
+    s.views[1].view.toward_viewer = draw::left_side_view().toward_viewer;
     // Bounds of everything drawn, per view.
     std::array<double, 2> u_min{}, u_max{};
     double y_max = 0;
@@ -358,12 +200,14 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
     if (!std::isfinite(u_min[0]) || !std::isfinite(u_max[1]) || !std::isfinite(y_max)) {
         throw InvalidInput("measurement picture: the body mesh has non-finite coordinates");
     }
+    std::array<draw::OrthoView, 2> ortho;
     for (int k = 0; k < 2; ++k) {
         ViewRender& v = s.views[k];
-        v.scale = o.scale;
-        v.u_min = u_min[k];
-        v.y_max = y_max;
-        v.r = r;
+        ortho[k].right = v.view.right;
+        ortho[k].toward_viewer = v.view.toward_viewer;
+        ortho[k].scale = o.scale;
+        ortho[k].u_min = u_min[k];
+        ortho[k].v_max = y_max;
         v.view.width_mm = o.scale * (u_max[k] - u_min[k]);
         v.view.height_mm = o.scale * y_max;
     }
@@ -376,9 +220,11 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
                                " Mpx; lower the resolution or the scale");
         }
     }
-    const std::vector<Vec3> normals = vertex_normals(pts, tris);
-    for (auto& v : s.views) {
-        render_body(v, pts, tris, normals);
+    const std::vector<Vec3> normals = draw::vertex_normals(pts, tris);
+    for (int k = 0; k < 2; ++k) {
+        ViewRender& v = s.views[k];
+        v.render =
+            draw::render_mesh(ortho[k], v.view.width_mm, v.view.height_mm, r, pts, tris, normals);
     }
 
     // Which view and column each measurement is labelled in, and its anchor.
@@ -399,7 +245,7 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
                 const Vec3& a = m.points[i];
                 const Vec3& b = m.points[(i + 1) % n];
                 const Point pa = s.views[k].local(a), pb = s.views[k].local(b);
-                const double l = raster::distance(pa, pb);
+                const double l = distance(pa, pb);
                 const Vec3 mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
                 len += l;
                 seen += s.views[k].visible(mid, o.hidden_tolerance_mm) ? l : 0;
@@ -447,7 +293,7 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
     std::array<std::size_t, 3> col_n{0, 0, 0};
     for (const auto& d : s.drawn) {
         col_w[std::size_t(d.column)] =
-            std::max(col_w[std::size_t(d.column)], raster::Canvas::text_width_mm(d.label.text, fs));
+            std::max(col_w[std::size_t(d.column)], draw::Canvas::text_width_mm(d.label.text, fs));
         ++col_n[std::size_t(d.column)];
     }
     const double leader = 12;  // room for the leader's slanted part
@@ -471,8 +317,9 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
     const double page_w = x + o.margin_mm;
     for (auto& v : s.views) {
         v.view.top_mm = top;
-        v.view.origin_x_mm = v.view.left_mm - o.scale * v.u_min;
-        v.view.origin_y_mm = v.view.top_mm + o.scale * v.y_max;
+        v.view.origin_x_mm = v.view.left_mm - o.scale * v.render.view.u_min;
+        v.view.origin_y_mm = v.view.top_mm + o.scale * v.render.view.v_max;
+        v.render.view.offset_mm = {v.view.left_mm, v.view.top_mm};
     }
     const double view_h = s.views[0].view.height_mm;
     double bottom = top + view_h;
@@ -514,31 +361,12 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
     // Paths, visible runs and landmarks in page millimetres.
     for (auto& d : s.drawn) {
         const Measurement& m = *d.m;
-        const std::size_t n = m.points.size();
-        const std::size_t segs = m.closed ? n : n - 1;
         for (int k = 0; k < 2; ++k) {
             const ViewRender& v = s.views[k];
             for (const auto& p : m.points) {
                 d.path[k].push_back(v.page(p));
             }
-            std::vector<Point> run;
-            for (std::size_t i = 0; i < segs; ++i) {
-                const Vec3& a = m.points[i];
-                const Vec3& b = m.points[(i + 1) % n];
-                const Vec3 mid{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
-                if (v.visible(mid, o.hidden_tolerance_mm)) {
-                    if (run.empty()) {
-                        run.push_back(v.page(a));
-                    }
-                    run.push_back(v.page(b));
-                } else if (!run.empty()) {
-                    d.visible_runs[k].push_back(std::move(run));
-                    run.clear();
-                }
-            }
-            if (!run.empty()) {
-                d.visible_runs[k].push_back(std::move(run));
-            }
+            d.visible_runs[k] = v.render.visible_runs(m.points, m.closed, o.hidden_tolerance_mm);
         }
         s.report.labels.push_back(d.label);
     }
@@ -582,14 +410,7 @@ inline Scene make_scene(const std::vector<Vec3>& pts, const PictureTriangles& tr
 }
 
 inline std::string points_attr(const std::vector<Point>& pts) {
-    std::string out;
-    for (const Point& p : pts) {
-        if (!out.empty()) {
-            out += ' ';
-        }
-        out += num(p.x) + "," + num(p.y);
-    }
-    return out;
+    return draw::svg_points(pts, 2);
 }
 
 /// Leader from the label's end to the tape: horizontal stub, then straight to the anchor.
@@ -613,12 +434,8 @@ inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<
     const Scene s = make_scene(points, triangles, set, landmarks, o, o.svg_shading_pixels_per_mm);
     const double fs = o.font_size_mm;
     std::ostringstream svg;
-    svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" "
-           "width=\""
-        << num(s.report.width_mm) << "mm\" height=\"" << num(s.report.height_mm)
-        << "mm\" viewBox=\"0 0 " << num(s.report.width_mm) << ' ' << num(s.report.height_mm)
-        << "\" font-family=\"sans-serif\">\n";
+    draw::svg_open(svg, num(s.report.width_mm), num(s.report.height_mm), "mm",
+                   " xmlns:xlink=\"http://www.w3.org/1999/xlink\"", " font-family=\"sans-serif\"");
     svg << "<title>" << xml_escape(o.title.empty() ? "body measurements" : o.title) << "</title>\n";
     svg << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     if (!s.title.empty()) {
@@ -633,16 +450,16 @@ inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<
             << "\" text-anchor=\"middle\">" << xml_escape(s.captions[k]) << "</text>\n";
         svg << "<image class=\"body\" data-view=\"" << v.view.name << "\" x=\""
             << num(v.view.left_mm) << "\" y=\"" << num(v.view.top_mm) << "\" width=\""
-            << num(double(v.image.width) / v.r) << "\" height=\""
-            << num(double(v.image.height) / v.r)
-            << "\" preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64,"
-            << base64(raster::encode_png(v.image, v.r)) << "\"/>\n";
+            << num(double(v.render.image.width) / v.render.pixels_per_mm) << "\" height=\""
+            << num(double(v.render.image.height) / v.render.pixels_per_mm)
+            << "\" preserveAspectRatio=\"none\" xlink:href=\""
+            << draw::png_data_uri(v.render.image, v.render.pixels_per_mm) << "\"/>\n";
     }
     svg << "</g>\n<g id=\"measurements\" fill=\"none\" stroke-linejoin=\"round\" "
            "stroke-linecap=\"round\">\n";
     for (const Drawn& d : s.drawn) {
         const Measurement& m = *d.m;
-        const std::string c = hex(d.colour);
+        const std::string c = svg_colour(d.colour);
         char value[32];
         std::snprintf(value, sizeof value, "%.2f", m.value);
         svg << "<g class=\"measurement\" id=\"m-" << xml_escape(m.name) << "\" data-name=\""
@@ -653,7 +470,7 @@ inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<
             const char* view = k == 0 ? "front" : "side";
             svg << '<' << (m.closed ? "polygon" : "polyline")
                 << " class=\"tape\" data-measurement=\"" << xml_escape(m.name) << "\" data-view=\""
-                << view << "\" stroke=\"" << hex(mix(d.colour, {1, 1, 1}, 0.35))
+                << view << "\" stroke=\"" << svg_colour(mix(d.colour, {1, 1, 1}, 0.35))
                 << "\" stroke-width=\"0.3\" stroke-dasharray=\"1.2,0.9\" points=\""
                 << points_attr(d.path[k]) << "\"/>\n";
             for (const auto& run : d.visible_runs[k]) {
@@ -664,9 +481,10 @@ inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<
         svg << "<polyline class=\"leader\" stroke=\"" << c << "\" stroke-width=\"0.2\" points=\""
             << points_attr(leader_points(d, fs)) << "\"/>\n";
         svg << "<text class=\"label\" x=\"" << num(d.label.x_mm) << "\" y=\"" << num(d.label.y_mm)
-            << "\" font-size=\"" << num(fs) << "\" fill=\"" << hex(mix(d.colour, {0, 0, 0}, 0.3))
-            << "\" stroke=\"none\"" << (d.column == 0 ? " text-anchor=\"end\"" : "") << '>'
-            << xml_escape(d.label.text) << "</text>\n</g>\n";
+            << "\" font-size=\"" << num(fs) << "\" fill=\""
+            << svg_colour(mix(d.colour, {0, 0, 0}, 0.3)) << "\" stroke=\"none\""
+            << (d.column == 0 ? " text-anchor=\"end\"" : "") << '>' << xml_escape(d.label.text)
+            << "</text>\n</g>\n";
     }
     svg << "</g>\n<g id=\"landmarks\" stroke=\"none\">\n";
     for (const DrawnLandmark& l : s.landmarks) {
@@ -695,7 +513,7 @@ inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<
 }
 
 /// The picture as an RGBA image at o.pixels_per_mm (see the file comment).
-inline raster::RgbaImage render_measurement_picture(
+inline draw::RgbaImage render_measurement_picture(
     const std::vector<Vec3>& points, const PictureTriangles& triangles, const MeasurementSet& set,
     const LandmarkSet& landmarks, const PictureOptions& o = {}, PictureReport* report = nullptr) {
     using namespace internal::pic;
@@ -708,30 +526,17 @@ inline raster::RgbaImage render_measurement_picture(
                            std::to_string(o.max_megapixels) +
                            " Mpx; lower the resolution or the scale");
     }
-    raster::RgbaImage img;
-    img.width = std::size_t(w);
-    img.height = std::size_t(h);
-    img.rgba.assign(4 * img.width * img.height, 255);
-    raster::Canvas cv(img, r);
+    draw::RgbaImage img = draw::RgbaImage::filled(std::size_t(w), std::size_t(h), 255);
+    draw::Canvas cv(img, r);
     const double fs = o.font_size_mm;
     const Rgb black{0, 0, 0};
     if (!s.title.empty()) {
-        cv.text(s.title, s.title_at, 1.6 * fs, raster::TextAnchor::start, black);
+        cv.text(s.title, s.title_at, 1.6 * fs, draw::TextAnchor::start, black);
     }
     for (int k = 0; k < 2; ++k) {
         const ViewRender& v = s.views[k];
-        cv.text(s.captions[k], s.caption_at[k], 1.25 * fs, raster::TextAnchor::middle, black);
-        const long ox = std::lround(v.view.left_mm * r), oy = std::lround(v.view.top_mm * r);
-        for (std::size_t y = 0; y < v.image.height; ++y) {
-            for (std::size_t x = 0; x < v.image.width; ++x) {
-                const std::uint8_t* p = &v.image.rgba[4 * (y * v.image.width + x)];
-                const long X = ox + long(x), Y = oy + long(y);
-                if (p[3] == 0 || X < 0 || Y < 0 || X >= long(img.width) || Y >= long(img.height)) {
-                    continue;
-                }
-                std::copy(p, p + 4, &img.rgba[4 * (std::size_t(Y) * img.width + std::size_t(X))]);
-            }
-        }
+        cv.text(s.captions[k], s.caption_at[k], 1.25 * fs, draw::TextAnchor::middle, black);
+        cv.paste(v.render.image, std::lround(v.view.left_mm * r), std::lround(v.view.top_mm * r));
     }
     for (const Drawn& d : s.drawn) {
         for (int k = 0; k < 2; ++k) {
@@ -754,14 +559,14 @@ inline raster::RgbaImage render_measurement_picture(
     for (const Drawn& d : s.drawn) {
         cv.polyline(leader_points(d, fs), 0.2, d.colour);
         cv.text(d.label.text, {d.label.x_mm, d.label.y_mm}, fs,
-                d.column == 0 ? raster::TextAnchor::end : raster::TextAnchor::start,
+                d.column == 0 ? draw::TextAnchor::end : draw::TextAnchor::start,
                 mix(d.colour, {0, 0, 0}, 0.3));
     }
     cv.fill_rect({s.scale_bar_at.x, s.scale_bar_at.y - 1.2},
                  {s.scale_bar_at.x + s.scale_bar_mm, s.scale_bar_at.y}, black);
     cv.text(num(s.scale_bar_body_mm) + " mm (scale 1:" + num(1 / o.scale) + ")",
-            {s.scale_bar_at.x + s.scale_bar_mm + 2, s.scale_bar_at.y}, fs,
-            raster::TextAnchor::start, black);
+            {s.scale_bar_at.x + s.scale_bar_mm + 2, s.scale_bar_at.y}, fs, draw::TextAnchor::start,
+            black);
     if (report) {
         *report = s.report;
         report->format = PictureFormat::png;
@@ -777,11 +582,9 @@ inline PictureReport write_measurement_png(std::ostream& out, const std::vector<
                                            const MeasurementSet& set, const LandmarkSet& landmarks,
                                            const PictureOptions& o = {}) {
     PictureReport rep;
-    const raster::RgbaImage img =
-        render_measurement_picture(points, triangles, set, landmarks, o, &rep);
-    const std::vector<std::uint8_t> bytes = raster::encode_png(img, o.pixels_per_mm);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    rep.bytes = bytes.size();
+    rep.bytes =
+        draw::write_png(out, render_measurement_picture(points, triangles, set, landmarks, o, &rep),
+                        o.pixels_per_mm);
     return rep;
 }
 

@@ -4,7 +4,6 @@
 // goniometer; here it is the angle between that 3D line and the horizontal plane.
 #pragma once
 
-#include <tapeline/measurement/iso8559.h>
 #include <tapeline/measurement/measurement_types.h>
 
 #include <cmath>
@@ -44,7 +43,7 @@ inline void measure_shoulder_slope(const LandmarkSet& lm, MeasurementSet& set) {
         m.value = std::atan2(h[1] - a[1], std::hypot(a[0] - h[0], a[2] - h[2])) * 180 / M_PI;
         m.points = {h, a};
         m.landmarks = {hps, acromion};
-        apply_iso8559(m);
+        apply_catalogue(m);
         taken.push_back(m.value);
         if (side == "left") {
             points = {a, h};
@@ -61,11 +60,10 @@ inline void measure_shoulder_slope(const LandmarkSet& lm, MeasurementSet& set) {
     Measurement m;
     m.name = "shoulder_slope";
     m.kind = MeasurementKind::angle;
-    m.freesewing = "shoulderSlope";
     m.value = taken.size() == 2 ? 0.5 * (taken[0] + taken[1]) : taken[0];
     m.points = std::move(points);
     m.landmarks = std::move(used);
-    apply_iso8559(m);
+    apply_catalogue(m);
     set.add(std::move(m));
 }
 

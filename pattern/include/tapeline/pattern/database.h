@@ -6,7 +6,11 @@
 // side table, and its geometry as a compressed blob (compression.h: 0.001 mm grid, varint deltas,
 // zstd). Safety: WAL journal, every write in one transaction (BEGIN IMMEDIATE ... COMMIT), so a
 // process killed at any moment leaves the file consistent, holding every pattern whose store()
-// returned and no partial one; readers see a consistent snapshot while a writer writes.
+// returned and no partial one; store_all() writes a batch in one transaction (all or none).
+// Readers see a consistent snapshot while a writer writes. A read-only open uses SQLite's
+// `mode=ro`, falling back to `immutable` where the WAL index cannot be created. Processes that
+// create the same new file at once agree: the schema is created under the write lock, after
+// checking again that no other process created it meanwhile.
 // Synchronous=NORMAL by default: a killed process loses nothing, a power failure may lose the last
 // transactions (DatabaseOptions::synchronous_full makes every commit durable).
 //
@@ -33,9 +37,11 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <set>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -50,6 +56,9 @@ struct DatabaseOptions {
     int busy_timeout_ms = 10000;  // how long a writer waits for another writer's lock
     bool synchronous_full = false;
     CompressionOptions compression;
+    /// Called with the running count after each pattern row written inside a transaction
+    /// (store, store_all, migration); fault-injection tests stop the process at a chosen row.
+    std::function<void(std::size_t rows_written)> after_row;
 };
 
 struct StoreOptions {
@@ -81,6 +90,10 @@ struct PatternQuery {
 struct DatabaseOpenReport {
     bool created = false;
     int version_before = 0, version_after = 0;
+    /// Read-only open of a WAL file whose shared-memory index (-shm) could be neither opened nor
+    /// created (a read-only directory, another user's file): opened as immutable, so changes
+    /// another process makes while this one reads are not seen.
+    bool immutable = false;
 };
 
 /// The per-user default location (XDG base directories). Throws InvalidInput when neither
@@ -266,14 +279,14 @@ inline std::int64_t write_pattern_row_v2(sqlite3* db, const std::string& where, 
 struct DatabaseMigration {
     int to_version;
     const char* what;
-    void (*apply)(sqlite3* db, const std::string& where, const CompressionOptions& compression);
+    void (*apply)(sqlite3* db, const std::string& where, const DatabaseOptions& options);
 };
 
 /// The schema history, oldest first; the last step's version is pattern_database_schema_version.
 inline const std::vector<DatabaseMigration>& pattern_database_migrations() {
     static const std::vector<DatabaseMigration> steps = {
         {1, "create the v1 table (plain JSON per pattern)",
-         [](sqlite3* db, const std::string& where, const CompressionOptions&) {
+         [](sqlite3* db, const std::string& where, const DatabaseOptions&) {
              internal::sql_exec(db, where,
                                 "CREATE TABLE patterns(id INTEGER PRIMARY KEY, "
                                 "name TEXT NOT NULL UNIQUE, designer TEXT NOT NULL DEFAULT '', "
@@ -282,7 +295,7 @@ inline const std::vector<DatabaseMigration>& pattern_database_migrations() {
                                 "json TEXT NOT NULL)");
          }},
         {2, "compressed geometry, tag table, search indexes",
-         [](sqlite3* db, const std::string& where, const CompressionOptions& compression) {
+         [](sqlite3* db, const std::string& where, const DatabaseOptions& options) {
              using internal::sql_exec;
              sql_exec(db, where, "ALTER TABLE patterns RENAME TO patterns_v1");
              sql_exec(db, where,
@@ -303,6 +316,7 @@ inline const std::vector<DatabaseMigration>& pattern_database_migrations() {
              internal::SqlStatement rows(
                  db, where,
                  "SELECT name, designer, garment_type, size, tags, json FROM patterns_v1");
+             std::size_t written = 0;
              while (rows.step()) {
                  const std::string name = rows.text(0);
                  const std::string row = where + ": v1 pattern '" + name + "'";
@@ -324,8 +338,11 @@ inline const std::vector<DatabaseMigration>& pattern_database_migrations() {
                      p.tags.push_back(t.get<std::string>());
                  }
                  const std::size_t json_bytes = to_json(p).dump().size();
-                 internal::write_pattern_row_v2(db, where, p, compress_pattern(p, compression),
-                                                json_bytes, 0);
+                 internal::write_pattern_row_v2(
+                     db, where, p, compress_pattern(p, options.compression), json_bytes, 0);
+                 if (options.after_row) {
+                     options.after_row(++written);
+                 }
              }
              sql_exec(db, where, "DROP TABLE patterns_v1");
          }},
@@ -355,27 +372,55 @@ public:
     /// Stores `p` under its name. A missing name, or an existing name without
     /// `options.replace`, is an InvalidInput.
     StoreReport store(const Pattern& p, const StoreOptions& options = {}) {
+        return store_all({p}, options).front();
+    }
+
+    /// Stores every pattern in one transaction: all of them or, after any refusal, an error or
+    /// a killed process, none. Two patterns of one batch with the same name are refused.
+    std::vector<StoreReport> store_all(const std::vector<Pattern>& patterns,
+                                       const StoreOptions& options = {}) {
         using namespace internal;
         const auto t0 = std::chrono::steady_clock::now();
-        if (p.name.empty()) {
-            throw InvalidInput(path_ +
-                               ": cannot store a pattern without a name (set Pattern::name)");
+        std::set<std::string> names;
+        for (const Pattern& p : patterns) {
+            if (p.name.empty()) {
+                throw InvalidInput(path_ +
+                                   ": cannot store a pattern without a name (set Pattern::name)");
+            }
+            if (!names.insert(p.name).second) {
+                throw InvalidInput(path_ + ": two patterns of the batch are named '" + p.name +
+                                   "'; nothing was stored");
+            }
+            require_writable("store pattern '" + p.name + "'");
         }
-        require_writable("store pattern '" + p.name + "'");
-        StoreReport rep;
-        const std::vector<std::uint8_t> blob =
-            compress_pattern(p, options_.compression, &rep.compression);
+        std::vector<StoreReport> reports(patterns.size());
+        std::vector<std::vector<std::uint8_t>> blobs;
+        for (std::size_t i = 0; i < patterns.size(); ++i) {
+            blobs.push_back(
+                compress_pattern(patterns[i], options_.compression, &reports[i].compression));
+        }
         SqlTransaction tx(db_, path_);
-        const std::int64_t id = row_id(p.name);
-        if (id > 0 && !options.replace) {
-            throw InvalidInput(path_ + ": a pattern named '" + p.name +
-                               "' is already stored (store with replace to overwrite it)");
+        for (std::size_t i = 0; i < patterns.size(); ++i) {
+            const Pattern& p = patterns[i];
+            const std::int64_t id = row_id(p.name);
+            if (id > 0 && !options.replace) {
+                throw InvalidInput(path_ + ": a pattern named '" + p.name +
+                                   "' is already stored (store with replace to overwrite it)" +
+                                   (patterns.size() > 1 ? "; nothing was stored" : ""));
+            }
+            reports[i].replaced = id > 0;
+            write_pattern_row_v2(db_, path_, p, blobs[i], reports[i].compression.json_bytes, id);
+            if (options_.after_row) {
+                options_.after_row(i + 1);
+            }
         }
-        rep.replaced = id > 0;
-        write_pattern_row_v2(db_, path_, p, blob, rep.compression.json_bytes, id);
         tx.commit();
-        rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        return rep;
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        for (StoreReport& r : reports) {
+            r.seconds = seconds;
+        }
+        return reports;
     }
 
     /// The pattern named `name`, or nullopt.
@@ -538,23 +583,84 @@ private:
                                    ec.message());
             }
         }
-        const int flags =
-            options_.read_only ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
-        if (sqlite3_open_v2(path_.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) !=
+        if (options_.read_only) {
+            open_read_only();
+        } else {
+            connect(path_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+        }
+        try {
+            migrate(existed);
+        } catch (...) {
+            sqlite3_close_v2(db_);
+            db_ = nullptr;
+            throw;
+        }
+    }
+
+    void connect(const std::string& name, int flags) {
+        using namespace internal;
+        if (sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) !=
             SQLITE_OK) {
             const std::string m = db_ ? sqlite_message(db_) : "out of memory";
             sqlite3_close_v2(db_);
             db_ = nullptr;
             throw InvalidInput(path_ + ": cannot open the pattern database: " + m);
         }
-        try {
-            sqlite3_busy_timeout(db_, options_.busy_timeout_ms);
-            sqlite3_extended_result_codes(db_, 0);
-            migrate(existed);
-        } catch (...) {
+        sqlite3_busy_timeout(db_, options_.busy_timeout_ms);
+        sqlite3_extended_result_codes(db_, 0);
+    }
+
+    /// `mode=ro` never writes the file; a WAL file also needs its -shm index, which a reader
+    /// creates beside the file when absent. Where that is impossible (read-only directory,
+    /// another user's file), the file is opened `immutable` and the report says so.
+    void open_read_only() {
+        std::string uri = "file:";
+        for (const char c : path_) {
+            if (c == '%' || c == '?' || c == '#' || static_cast<unsigned char>(c) < 0x20) {
+                static const char hex[] = "0123456789ABCDEF";
+                uri += '%';
+                uri += hex[static_cast<unsigned char>(c) >> 4];
+                uri += hex[static_cast<unsigned char>(c) & 15];
+            } else {
+                uri += c;
+            }
+        }
+        const int flags = SQLITE_OPEN_READONLY | SQLITE_OPEN_URI;
+        connect(uri + "?mode=ro", flags);
+        sqlite3_stmt* probe = nullptr;
+        int rc = sqlite3_prepare_v2(db_, "SELECT count(*) FROM sqlite_master", -1, &probe, nullptr);
+        if (rc == SQLITE_OK) {
+            rc = sqlite3_step(probe);
+        }
+        sqlite3_finalize(probe);
+        if (rc == SQLITE_CANTOPEN || rc == SQLITE_READONLY) {
             sqlite3_close_v2(db_);
             db_ = nullptr;
-            throw;
+            connect(uri + "?mode=ro&immutable=1", flags);
+            open_report_.immutable = true;
+        }
+    }
+
+    /// SQLite does not call the busy handler for a change of journal mode, which needs the file
+    /// to itself; processes opening a new file at once wait here instead of failing.
+    void set_wal_mode() {
+        using namespace internal;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int attempt = 0;; ++attempt) {
+            char* err = nullptr;
+            const int rc = sqlite3_exec(db_, "PRAGMA journal_mode=WAL", nullptr, nullptr, &err);
+            sqlite3_free(err);
+            const double waited_ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count();
+            if ((rc != SQLITE_BUSY && rc != SQLITE_LOCKED) ||
+                waited_ms > options_.busy_timeout_ms) {
+                if (rc != SQLITE_OK) {
+                    sql_exec(db_, path_, "PRAGMA journal_mode=WAL");  // throws with the message
+                }
+                return;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(std::min(1 + attempt, 20)));
         }
     }
 
@@ -585,9 +691,16 @@ private:
 
     void migrate(bool existed) {
         using namespace internal;
-        // The first read also tells a damaged or foreign file (SQLITE_NOTADB) apart.
-        int version = int(sql_integer(db_, path_, "PRAGMA user_version"));
-        check_identity(version);
+        int version = 0;
+        {
+            // One snapshot: another process creating the schema between two separate reads
+            // would show tables without a version. The first read also tells a damaged or
+            // foreign file (SQLITE_NOTADB) apart.
+            SqlTransaction snapshot(db_, path_, "BEGIN");
+            version = int(sql_integer(db_, path_, "PRAGMA user_version"));
+            check_identity(version);
+            snapshot.commit();
+        }
         open_report_.created = !existed;
         open_report_.version_before = version;
         if (options_.read_only) {
@@ -600,7 +713,7 @@ private:
             open_report_.version_after = version;
             return;
         }
-        sql_exec(db_, path_, "PRAGMA journal_mode=WAL");
+        set_wal_mode();
         sql_exec(
             db_, path_,
             options_.synchronous_full ? "PRAGMA synchronous=FULL" : "PRAGMA synchronous=NORMAL");
@@ -611,7 +724,7 @@ private:
             check_identity(version);
             for (const DatabaseMigration& m : pattern_database_migrations()) {
                 if (m.to_version > version) {
-                    m.apply(db_, path_, options_.compression);
+                    m.apply(db_, path_, options_);
                     version = m.to_version;
                 }
             }

@@ -10,6 +10,8 @@
 // boxes; outlines here have a few hundred segments, so a sweep would not pay off.
 #pragma once
 
+#include <tapeline/core/vec2.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,45 +24,14 @@
 
 namespace tapeline::pattern {
 
-struct Point2 {
-    double x = 0;
-    double y = 0;
-};
-
-inline bool operator==(const Point2& a, const Point2& b) {
-    return a.x == b.x && a.y == b.y;
-}
-inline bool operator!=(const Point2& a, const Point2& b) {
-    return !(a == b);
-}
-inline Point2 operator+(const Point2& a, const Point2& b) {
-    return {a.x + b.x, a.y + b.y};
-}
-inline Point2 operator-(const Point2& a, const Point2& b) {
-    return {a.x - b.x, a.y - b.y};
-}
-inline Point2 operator*(double s, const Point2& a) {
-    return {s * a.x, s * a.y};
-}
-inline double dot(const Point2& a, const Point2& b) {
-    return a.x * b.x + a.y * b.y;
-}
-inline double cross(const Point2& a, const Point2& b) {
-    return a.x * b.y - a.y * b.x;
-}
-inline double norm(const Point2& a) {
-    return std::hypot(a.x, a.y);
-}
-inline double distance(const Point2& a, const Point2& b) {
-    return norm(b - a);
-}
-/// `a` turned a quarter turn counter-clockwise (to the left of the direction `a`, y up).
-inline Point2 left_normal(const Point2& a) {
-    return {-a.y, a.x};
-}
-inline bool is_finite(const Point2& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y);
-}
+/// A point or vector of the plane, in millimetres (y up): core's Vec2 under the pattern's name.
+using Point2 = tapeline::Vec2;
+using tapeline::cross;
+using tapeline::distance;
+using tapeline::dot;
+using tapeline::is_finite;
+using tapeline::left_normal;
+using tapeline::norm;
 
 /// Straight segment from `a` to `b`.
 struct Line {
@@ -349,15 +320,7 @@ inline double parameter_at_length(const Curve& curve, double s) {
 
 namespace internal {
 
-inline double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
-    const Point2 d = b - a;
-    const double len2 = dot(d, d);
-    if (len2 == 0) {
-        return distance(p, a);
-    }
-    const double t = std::clamp(dot(p - a, d) / len2, 0.0, 1.0);
-    return distance(p, a + t * d);
-}
+using tapeline::distance_to_segment;
 
 inline void flatten(const CubicBezier& c, double tolerance, int depth, std::vector<Point2>& out) {
     const double flat =

@@ -13,11 +13,14 @@
 //                          waist, ...) whose ends are named points → measurement bindings, the
 //                          ease being what the draft realises (count 2 on pieces cut on the fold)
 // Pieces without a seam path (FreeSewing's `has_seam_path: false`, e.g. Simon's plackets, which
-// are drawn on other pieces) are skipped and noted. FreeSewing exports no seams.
+// are drawn on other pieces) are skipped and noted.
+//   (no seams in the file) → the seams of the design (freesewing_designs.h) that hold one edge
+//                          range per side; a seam rule whose points this draft lacks is noted
 #pragma once
 
 #include <tapeline/core/errors.h>
-#include <tapeline/pattern/internal/json_read.h>
+#include <tapeline/pattern/freesewing_designs.h>
+#include <tapeline/pattern/internal/json_helpers.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <cctype>
@@ -313,6 +316,12 @@ inline Pattern freesewing_from_json(const nlohmann::json& doc, const std::string
         }
         b.ease_mm = total - pat.measurements_used.at(m);
         pat.bindings.push_back(std::move(b));
+    }
+    std::vector<std::string> skipped;
+    rep.seams += add_freesewing_seams(pat, &skipped);
+    for (const std::string& rule : skipped) {
+        rep.notes.push_back("seam '" + rule + "' not derived: a chain end is not an outline " +
+                            "vertex of this draft");
     }
     return pat;
 }

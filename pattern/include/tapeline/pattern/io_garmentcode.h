@@ -15,7 +15,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
-#include <tapeline/pattern/internal/json_read.h>
+#include <tapeline/pattern/internal/json_helpers.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <algorithm>

@@ -13,7 +13,8 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/pattern/internal/json_read.h>
+#include <tapeline/core/units.h>
+#include <tapeline/pattern/internal/json_helpers.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <nlohmann/json.hpp>
@@ -116,21 +117,10 @@ inline std::string opt_string(const Json& j, const char* key, const Where& w) {
     return f ? string(*f, w.key(key)) : std::string();
 }
 
-/// Millimetres per unit, or 0 for a unit we do not know.
+/// Millimetres per unit (tapeline/core/units.h), or 0 for a unit we do not know.
 inline double unit_scale(const std::string& u) {
-    if (u == "mm") {
-        return 1;
-    }
-    if (u == "cm") {
-        return 10;
-    }
-    if (u == "m") {
-        return 1000;
-    }
-    if (u == "in" || u == "inch") {
-        return 25.4;
-    }
-    return 0;
+    const auto unit = length_unit(u);
+    return unit ? millimetres_per(*unit) : 0;
 }
 
 }  // namespace internal
@@ -242,7 +232,7 @@ inline Pattern from_json(const nlohmann::json& j, const std::string& source) {
     const double s = unit_scale(units);
     if (s == 0) {
         throw InvalidInput(top.key("units").str() + ": unknown unit '" + units +
-                           "' (expected mm, cm, m or in)");
+                           "' (expected mm, cm, dm, m or in)");
     }
     const ModelReader rd{s};
     Pattern p;

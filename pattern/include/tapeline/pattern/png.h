@@ -5,8 +5,8 @@
 // internal lines (grey, dashed), darts, fold lines (blue, dashed), grain lines with arrowheads,
 // notches, seam-mark ticks (red), the scale bar, and the SVG's text — piece names, cut counts,
 // seam names (red, as the seam-mark ticks), the scale bar's label — at the SVG's positions,
-// anchors and font sizes, in the built-in 5 × 8 bitmap font (internal/bitmap_font.h; no font
-// library; the canvas, font and encoder are core's, core/raster.h). Glyphs are scaled to the
+// anchors and font sizes, in the built-in 5 × 8 bitmap font (the canvas, font and encoder are the
+// drawing module's: draw/canvas.h, draw/png.h). Glyphs are scaled to the
 // font-size (one font pixel = a tenth of the em, capitals 0.7 em) and box-filtered: a pixel's
 // coverage is the area of it that font pixels cover. At 2 px/mm all text is legible; at 1 px/mm the
 // 10 mm names are, the 5–6 mm labels blur. Characters outside printable ASCII are drawn as a hollow
@@ -21,9 +21,8 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/core/png_encode.h>
-#include <tapeline/core/raster.h>
-#include <tapeline/pattern/internal/bitmap_font.h>
+#include <tapeline/draw/canvas.h>
+#include <tapeline/draw/png.h>
 #include <tapeline/pattern/pattern.h>
 #include <tapeline/pattern/svg.h>
 
@@ -45,7 +44,7 @@ struct PngOptions {
     bool draw_text = true;                // names, cut counts, seam names, scale-bar label
 };
 
-using RgbaImage = raster::RgbaImage;  // the canvas and encoder live in core/raster.h
+using RgbaImage = draw::RgbaImage;
 
 struct PngReport {
     std::size_t width_px = 0, height_px = 0;
@@ -54,51 +53,16 @@ struct PngReport {
     std::size_t png_bytes = 0;
 };
 
-namespace internal {
-
-using Rgb = raster::Rgb;
-using TextAnchor = raster::TextAnchor;
-
-/// core's raster::Canvas in pattern's Point2 (page millimetres, y down).
-class Canvas {
-public:
-    Canvas(RgbaImage& img, double ppmm) : c_(img, ppmm) {}
-
-    void segment(Point2 a, Point2 b, double width_mm, Rgb c) {
-        c_.segment(p(a), p(b), width_mm, c);
-    }
-
-    void polyline(const std::vector<Point2>& pts, double width_mm, Rgb c, double dash_mm = 0,
-                  double gap_mm = 0) {
-        std::vector<raster::Point> q;
-        q.reserve(pts.size());
-        for (const Point2& x : pts) {
-            q.push_back(p(x));
-        }
-        c_.polyline(q, width_mm, c, dash_mm, gap_mm);
-    }
-
-    void fill_rect(Point2 a, Point2 b, Rgb c) { c_.fill_rect(p(a), p(b), c); }
-
-    void text(const std::string& s, Point2 at, double font_size_mm, TextAnchor anchor, Rgb c) {
-        c_.text(s, p(at), font_size_mm, anchor, c);
-    }
-
-private:
-    static raster::Point p(const Point2& x) { return {x.x, x.y}; }
-    raster::Canvas c_;
-};
-
-}  // namespace internal
-
 /// PNG bytes of an RGBA image; `pixels_per_mm` goes into the pHYs chunk.
-using raster::encode_png;
+using draw::encode_png;
 
 /// The drawing as an RGBA image (see the file comment). Throws InvalidInput for a resolution that
 /// is not positive or would exceed `max_megapixels`.
 inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o = {},
                                    PngReport* report = nullptr) {
     using namespace internal;
+    using draw::Rgb;
+    using draw::TextAnchor;
     const double r = o.pixels_per_mm;
     if (!(r > 0) || !std::isfinite(r)) {
         throw InvalidInput("PNG export of '" + pattern.name + "': resolution " + std::to_string(r) +
@@ -114,11 +78,9 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
                            " pixels (" + std::to_string(w * h / 1e6) + " Mpx), over the limit of " +
                            std::to_string(o.max_megapixels) + " Mpx; lower the resolution");
     }
-    RgbaImage img;
-    img.width = std::size_t(w);
-    img.height = std::size_t(h);
-    img.rgba.assign(4 * img.width * img.height, o.transparent_background ? 0 : 255);
-    Canvas cv(img, r);
+    RgbaImage img =
+        RgbaImage::filled(std::size_t(w), std::size_t(h), o.transparent_background ? 0 : 255);
+    draw::Canvas cv(img, r);
     const double tol = 0.25 / r;  // quarter of a pixel, in mm
     const Rgb black{0, 0, 0}, grey{0.4, 0.4, 0.4}, blue{0, 0.4, 0.8}, red{0.8, 0, 0};
 
@@ -194,15 +156,8 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
                 b.add({0, 0});
             }
             const Point2 centre = map({0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)});
-            std::string cut = "cut " + std::to_string(piece.cut_count);
-            if (piece.fold) {
-                cut += " on fold";
-            }
-            if (piece.mirrored) {
-                cut += " (mirrored pair)";
-            }
             cv.text(piece.name, centre, 10, TextAnchor::middle, black);
-            cv.text(cut, {centre.x, centre.y + 8}, 6, TextAnchor::middle, black);
+            cv.text(cut_text(piece), {centre.x, centre.y + 8}, 6, TextAnchor::middle, black);
         }
     }
     const double bar_y = lay.height_mm - o.layout.margin_mm - 12;
@@ -225,10 +180,7 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
 /// Writes the PNG to `out`.
 inline PngReport write_png(const Pattern& pattern, std::ostream& out, const PngOptions& o = {}) {
     PngReport rep;
-    const RgbaImage img = rasterise_pattern(pattern, o, &rep);
-    const std::vector<std::uint8_t> bytes = encode_png(img, o.pixels_per_mm);
-    out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    rep.png_bytes = bytes.size();
+    rep.png_bytes = draw::write_png(out, rasterise_pattern(pattern, o, &rep), o.pixels_per_mm);
     return rep;
 }
 

@@ -9,7 +9,7 @@
 #pragma once
 
 #include <tapeline/core/atomic_write.h>
-#include <tapeline/core/xml_escape.h>
+#include <tapeline/draw/svg.h>
 #include <tapeline/pattern/pattern.h>
 
 #include <algorithm>
@@ -42,20 +42,21 @@ struct SvgReport {
 
 namespace internal {
 
-inline std::string svg_escape(const std::string& text) {
-    return xml_escape(text);
+/// A number for the drawing's attributes: to the micrometre, trailing zeros dropped.
+inline std::string num(double v) {
+    return draw::svg_number(v, 3);
 }
 
-inline std::string num(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
-    std::string s = buf;
-    // Trim trailing zeros: smaller files, same values to the micrometre.
-    s.erase(s.find_last_not_of('0') + 1);
-    if (!s.empty() && s.back() == '.') {
-        s.pop_back();
+/// "cut 2 on fold (mirrored pair)": how many to cut, written under the piece's name.
+inline std::string cut_text(const Piece& piece) {
+    std::string cut = "cut " + std::to_string(piece.cut_count);
+    if (piece.fold) {
+        cut += " on fold";
     }
-    return s == "-0" ? "0" : s;
+    if (piece.mirrored) {
+        cut += " (mirrored pair)";
+    }
+    return cut;
 }
 
 struct SvgMap {
@@ -164,11 +165,8 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
         std::max(width, options.margin_mm + options.scale_bar_mm + 40) + options.margin_mm;
     rep.height_mm = bar_y + 12 + options.margin_mm;
 
-    out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        << "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" << num(rep.width_mm)
-        << "mm\" height=\"" << num(rep.height_mm) << "mm\" viewBox=\"0 0 " << num(rep.width_mm)
-        << " " << num(rep.height_mm) << "\">\n"
-        << "<title>" << svg_escape(pattern.name) << "</title>\n"
+    draw::svg_open(out, num(rep.width_mm), num(rep.height_mm), "mm", " version=\"1.1\"");
+    out << "<title>" << xml_escape(pattern.name) << "</title>\n"
         << "<defs><marker id=\"arrow\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" "
            "markerWidth=\"6\" markerHeight=\"6\" orient=\"auto-start-reverse\">"
            "<path d=\"M 0 0 L 10 5 L 0 10 z\"/></marker></defs>\n"
@@ -183,17 +181,17 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
         const Piece& piece = pattern.pieces[i];
         const SvgMap m{rep.piece_offsets[i]};
         const Box& b = boxes[i];
-        out << "<g class=\"piece\" id=\"piece-" << i << "\" data-name=\"" << svg_escape(piece.name)
+        out << "<g class=\"piece\" id=\"piece-" << i << "\" data-name=\"" << xml_escape(piece.name)
             << "\">\n<path class=\"outline\" d=\"";
         path_data(piece.outline.edges, m, true, out);
         out << "\"/>\n";
         for (const InternalLine& l : piece.internal_lines) {
-            out << "<path class=\"internal\" data-name=\"" << svg_escape(l.name) << "\" d=\"";
+            out << "<path class=\"internal\" data-name=\"" << xml_escape(l.name) << "\" d=\"";
             path_data(l.edges, m, false, out);
             out << "\"/>\n";
         }
         for (const Dart& d : piece.darts) {
-            out << "<path class=\"dart\" data-name=\"" << svg_escape(d.name) << "\" d=\"";
+            out << "<path class=\"dart\" data-name=\"" << xml_escape(d.name) << "\" d=\"";
             path_data(d.edges, m, false, out);
             out << "\"/>\n";
         }
@@ -218,7 +216,7 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
             const auto [p, q] = notch_mark(piece.outline.edges[n.edge].curve, n.offset, inward,
                                            options.notch_length_mm);
             const Point2 a = m(p), e = m(q);
-            out << "<line class=\"notch\" data-name=\"" << svg_escape(n.name) << "\" x1=\""
+            out << "<line class=\"notch\" data-name=\"" << xml_escape(n.name) << "\" x1=\""
                 << num(a.x) << "\" y1=\"" << num(a.y) << "\" x2=\"" << num(e.x) << "\" y2=\""
                 << num(e.y) << "\"/>\n";
         }
@@ -239,23 +237,16 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
                         << num(a.x) << "\" y1=\"" << num(a.y) << "\" x2=\"" << num(d.x)
                         << "\" y2=\"" << num(d.y) << "\"/><text x=\"" << num(lab.x) << "\" y=\""
                         << num(lab.y) << "\" font-size=\"5\" text-anchor=\"middle\">"
-                        << svg_escape(name) << "</text></g>\n";
+                        << xml_escape(name) << "</text></g>\n";
                 }
             }
         }
         const Point2 centre = m({0.5 * (b.x0 + b.x1), 0.5 * (b.y0 + b.y1)});
-        std::string cut = "cut " + std::to_string(piece.cut_count);
-        if (piece.fold) {
-            cut += " on fold";
-        }
-        if (piece.mirrored) {
-            cut += " (mirrored pair)";
-        }
         out << "<text class=\"piece-name\" x=\"" << num(centre.x) << "\" y=\"" << num(centre.y)
-            << "\" font-size=\"10\" text-anchor=\"middle\">" << svg_escape(piece.name)
+            << "\" font-size=\"10\" text-anchor=\"middle\">" << xml_escape(piece.name)
             << "</text>\n<text class=\"piece-cut\" x=\"" << num(centre.x) << "\" y=\""
-            << num(centre.y + 8) << "\" font-size=\"6\" text-anchor=\"middle\">" << svg_escape(cut)
-            << "</text>\n</g>\n";
+            << num(centre.y + 8) << "\" font-size=\"6\" text-anchor=\"middle\">"
+            << xml_escape(cut_text(piece)) << "</text>\n</g>\n";
     }
     out << "<g id=\"scale-bar\"><rect class=\"scale-bar\" x=\"" << num(options.margin_mm)
         << "\" y=\"" << num(bar_y) << "\" width=\"" << num(options.scale_bar_mm)

@@ -11,6 +11,7 @@
 #include <tapeline/core/errors.h>
 #include <tapeline/pattern/pattern.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -28,6 +29,10 @@ struct ValidationOptions {
     double seam_length_tolerance_mm = 0.5;
     double seam_length_relative_tolerance = 0.0;
     double min_edge_length_mm = 1e-6;  // shorter edges are reported as degenerate (warning)
+    /// Largest |coordinate| of an edge end: 10 km. Beyond it a pattern is a unit error, and
+    /// sampling its curves at sample_tolerance_mm would not end.
+    double max_coordinate_mm = 1e7;
+    double min_piece_area_mm2 = 1.0;  // outlines enclosing less are reported (error)
 };
 
 struct ValidationIssue {
@@ -50,7 +55,7 @@ namespace internal {
 
 inline std::string fmt_mm(double v) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.3f", v);
+    std::snprintf(buf, sizeof buf, std::abs(v) < 1e9 ? "%.3f" : "%.3g", v);
     return buf;
 }
 
@@ -167,6 +172,9 @@ inline ValidationReport validate(const Pattern& pattern, const ValidationOptions
         }
     }
 
+    if (pattern.pieces.empty()) {
+        error("no_pieces", "", std::nullopt, "pattern '" + pattern.name + "' has no pieces");
+    }
     std::set<std::string> names;
     for (const Piece& piece : pattern.pieces) {
         ++rep.pieces_checked;
@@ -188,6 +196,18 @@ inline ValidationReport validate(const Pattern& pattern, const ValidationOptions
                 error("non_finite", piece.name, i,
                       where + ": edge " + std::to_string(i) + " has a NaN or infinite coordinate");
                 finite = false;
+            } else {
+                for (const Point2& p : {start_point(edges[i]), end_point(edges[i])}) {
+                    const double m = std::max(std::abs(p.x), std::abs(p.y));
+                    if (finite && m > options.max_coordinate_mm) {
+                        error("out_of_range", piece.name, i,
+                              where + ": edge " + std::to_string(i) + " reaches " + fmt_mm(m) +
+                                  " mm from the origin, beyond the " +
+                                  fmt_mm(options.max_coordinate_mm) +
+                                  " mm a pattern may span (wrong units?)");
+                        finite = false;
+                    }
+                }
             }
         }
         for (const auto& [pname, p] : piece.points) {
@@ -257,14 +277,24 @@ inline ValidationReport validate(const Pattern& pattern, const ValidationOptions
                             fmt_mm(length(edges[i])) + " mm");
             }
         }
-        if (closed && options.check_self_intersection) {
-            const OutlinePolyline poly = sample(piece.outline, options.sample_tolerance_mm);
+        if (!closed) {
+            continue;
+        }
+        const OutlinePolyline poly = sample(piece.outline, options.sample_tolerance_mm);
+        if (options.check_self_intersection) {
             if (const auto x = internal::first_crossing(poly)) {
                 error("self_intersection", piece.name, x->edge_a,
                       where + ": outline crosses itself: edge " + std::to_string(x->edge_a) +
                           " meets edge " + std::to_string(x->edge_b) + " near " +
                           fmt_point(x->where) + " mm");
+                continue;  // the lobes' signed areas cancel: the area says nothing more
             }
+        }
+        const double area = std::abs(signed_area(poly.points));
+        if (area < options.min_piece_area_mm2) {
+            error("zero_area", piece.name, std::nullopt,
+                  where + ": outline encloses " + fmt_mm(area) + " mm2, less than " +
+                      fmt_mm(options.min_piece_area_mm2) + " mm2");
         }
     }
 

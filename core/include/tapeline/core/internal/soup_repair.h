@@ -6,6 +6,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/internal/coordinate_range.h>
 #include <tapeline/core/internal/read_stl.h>  // ExactPointHash
 #include <tapeline/core/internal/text_scan.h>
 #include <tapeline/core/mesh_io_types.h>
@@ -67,6 +68,10 @@ inline void validate_soup(const PolygonSoup& soup) {
         if (const char* bad = non_finite_kind(p[0], p[1], p[2]); *bad) {
             throw InvalidInput(name.file() + name.vertex(i) + " has " + bad);
         }
+    }
+    if (!soup.points.empty()) {
+        check_coordinate_range(soup.file, soup.points.front().data(), soup.points.size(), 3,
+                               "vertex");
     }
     const std::size_t n = soup.points.size();
     for (std::size_t f = 0; f < soup.faces.size(); ++f) {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <string_view>
@@ -19,8 +20,31 @@
 
 namespace tapeline::internal {
 
+/// Largest mesh or point file read: the soup and the mesh built from it take several times the
+/// file in memory, and line numbers are 32-bit.
+inline constexpr std::uintmax_t max_mesh_file_bytes = std::uintmax_t(2) << 30;
+
+/// Refuses a directory, and a regular file larger than `max_bytes` (`what`: "a mesh file", ...),
+/// before anything is read.
+inline void check_input_file(const std::string& path, std::uintmax_t max_bytes, const char* what) {
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (std::filesystem::is_directory(status)) {
+        throw InvalidInput(path + ": is a directory, not a file");
+    }
+    if (std::filesystem::is_regular_file(status)) {
+        const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+        if (!ec && bytes > max_bytes) {
+            throw InvalidInput(path + ": " + std::to_string(bytes >> 20) +
+                               " MiB is larger than the " + std::to_string(max_bytes >> 20) +
+                               " MiB " + what + " may have");
+        }
+    }
+}
+
 /// The whole file as bytes; a missing or unreadable file is InvalidInput naming the path.
 inline std::string load_file(const std::string& path) {
+    check_input_file(path, max_mesh_file_bytes, "a mesh or point file");
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         const std::error_code ec(errno, std::generic_category());

@@ -2,6 +2,8 @@
 // (gcf_distances.h) and on point clouds (gcf_points.h); no CGAL.
 #pragma once
 
+#include <tapeline/core/progress.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <functional>
@@ -42,13 +44,13 @@ double shortest_edge(const std::vector<std::uint32_t>& adj_start,
 /// visited set, in parallel (TBB), and may only read shared state; commit(node, Solved&) then
 /// runs one after another in queue order, marks the node visited and relaxes its neighbours. So
 /// the result does not depend on the number of threads. Stale entries (visited, or above the
-/// node's current tentative distance) are skipped.
+/// node's current tentative distance) are skipped. `progress` (optional) advances per batch.
 template <class Solved, class Solve, class Commit>
 void propagate_in_batches(MinQueue& q, const std::vector<double>& tentative,
                           const std::vector<char>& visited,
                           const std::vector<std::uint32_t>& adj_start,
                           const std::vector<std::uint32_t>& adj, double band, const Solve& solve,
-                          const Commit& commit) {
+                          const Commit& commit, Progress* progress = nullptr) {
     std::vector<char> in_batch(tentative.size(), 0);
     std::vector<std::uint32_t> batch;
     std::vector<QueueItem> deferred;
@@ -96,6 +98,8 @@ void propagate_in_batches(MinQueue& q, const std::vector<double>& tentative,
             in_batch[batch[i]] = 0;
             commit(batch[i], solved[i]);
         }
+        if (progress)
+            progress->advance(batch.size());
     }
 }
 

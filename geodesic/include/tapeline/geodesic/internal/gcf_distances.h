@@ -1,12 +1,13 @@
 // Single-source distances by geodesic curvature flow (curvature_flow.h, gcf_distances): the
-// ring-by-ring propagation of the thesis' Algorithms 1 and 2 on the plain arrays of gcf_engine.h.
-// Reuses the flow of gcf_engine.h (flow_step, curvature); no CGAL.
+// ring-by-ring propagation of the thesis' Algorithms 1 and 2 over the vertices of the mesh arrays
+// of gcf_engine.h (the propagation of gcf_wavefront.h with the flow of gcf_engine.h); no CGAL.
 #pragma once
 
 #include <tapeline/geodesic/curvature_flow_types.h>
 #include <tapeline/geodesic/internal/gcf_batches.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
 #include <tapeline/geodesic/internal/gcf_trace.h>
+#include <tapeline/geodesic/internal/gcf_wavefront.h>
 #include <tapeline/geodesic/internal/unfold_engine.h>
 
 #include <algorithm>
@@ -65,33 +66,10 @@ inline std::size_t flow_to_convergence(const Mesh& m, std::vector<Sample>& s,
     return it;
 }
 
-/// Outcomes of flows, summed.
-struct FlowCounts {
-    std::size_t iterations = 0, flows = 0, converged = 0, stalled = 0, max_iterations = 0,
-                failed = 0;
-    void add(const std::string& status, std::size_t its) {
-        iterations += its;
-        ++flows;
-        if (status == "converged")
-            ++converged;
-        else if (status == "stalled")
-            ++stalled;
-        else if (status == "max_iterations")
-            ++max_iterations;
-        else
-            ++failed;
-    }
-};
-
 /// Result of the propagation, per vertex of the compact mesh.
 struct DistanceField {
     std::vector<double> d;
-    std::size_t iterations = 0;
-    std::size_t flows = 0;
-    std::size_t converged = 0;
-    std::size_t stalled = 0;
-    std::size_t max_iterations = 0;
-    std::size_t failed = 0;
+    FlowCounts counts;
     std::size_t stored_samples = 0;  ///< samples kept at the end (memory)
     double epsilon = 0;              ///< largest anchor kink excess / mean edge (windowed flows)
     std::size_t max_faces = 0;       ///< largest number of faces holding samples of one path
@@ -222,15 +200,17 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         pp.near_source_samples > 0 ? pp.near_source_samples : 2 * window + 1;
     const double inf = std::numeric_limits<double>::infinity();
     DistanceField out;
-    out.d.assign(n, inf);
     // Per visited vertex: the kept tail of its polyline (last window + 1 samples, all for
     // window 0 or near the source with a field anchor), the (lifted) length of the fixed prefix
     // before tail[0] (prefix anchor) and the unit direction the path arrives in (field anchor).
-    std::vector<std::vector<Sample>> tail(n);
-    std::vector<double> prefix(n, 0.0);
-    std::vector<Vec3> arrival(n, Vec3::Zero());
-    std::vector<char> visited(n, 0);
-    std::vector<char> whole_path(n, 0);  // tail[v] starts at the source
+    auto position = [&m](std::uint32_t v) -> const Vec3& { return m.xyz[v]; };
+    Wavefront<Sample, Vec3, decltype(position)> wf(m.vv_start, m.vv, position, Vec3::Zero());
+    std::vector<double>& d = wf.d;
+    std::vector<std::vector<Sample>>& tail = wf.tail;
+    std::vector<double>& prefix = wf.prefix;
+    std::vector<Vec3>& arrival = wf.arrival;
+    std::vector<char>& visited = wf.visited;
+    std::vector<char>& whole_path = wf.whole_path;
     // Faces holding samples of the path before tail[0] (runs of one face counted once), for m.
     std::vector<std::uint32_t> faces_before(n, 0);
     auto face_runs = [](const std::vector<Sample>& c, std::size_t from, std::size_t to) {
@@ -299,43 +279,25 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         }
         c.push_back(vertex_sample(w));
     };
-    // Stores c as the path of w. d: its distance when already known (field anchor), else the
+    // Stores c as the path of w. dist: its distance when already known (field anchor), else the
     // prefix `pre` before c[0] plus the length of c.
-    auto keep = [&](std::uint32_t w, std::vector<Sample>& c, double pre, double d, bool whole,
+    auto keep = [&](std::uint32_t w, std::vector<Sample>& c, double pre, double dist, bool whole,
                     std::size_t faces_pre) {
-        std::size_t first = 0;
         whole = whole && field_anchor;
         whole_path[w] = whole ? 1 : 0;
-        if (window > 0 && !whole && c.size() > window + 1)
-            first = c.size() - (window + 1);
+        const std::size_t first = window_start(c.size(), window, whole);
         prefix[w] = pre + (first > 0 ? length_of(c, 0, first) : 0.0);
         faces_before[w] = static_cast<std::uint32_t>(faces_pre + face_runs(c, 0, first));
         out.max_faces = std::max(out.max_faces, faces_pre + face_runs(c, 0, c.size()));
-        out.d[w] = std::isfinite(d) ? d : prefix[w] + measure(c, first, c.size() - 1);
+        d[w] = std::isfinite(dist) ? dist : prefix[w] + measure(c, first, c.size() - 1);
         if (c.size() >= 2)
             arrival[w] = tangent(w, c.back().p - c[c.size() - 2].p);
-        tail[w].assign(c.begin() + static_cast<std::ptrdiff_t>(first), c.end());
-        tail[w].shrink_to_fit();
-        visited[w] = 1;
+        wf.store(w, c, first);
     };
 
-    MinQueue q;
-    std::vector<double> tentative(n, inf);
-    auto relax = [&](std::uint32_t u) {
-        for (std::uint32_t k = m.vv_start[u]; k < m.vv_start[u + 1]; ++k) {
-            const std::uint32_t w = m.vv[k];
-            if (visited[w])
-                continue;
-            const double t = out.d[u] + (m.xyz[w] - m.xyz[u]).norm();
-            if (t < tentative[w]) {
-                tentative[w] = t;
-                q.push({t, w});
-            }
-        }
-    };
     // Source and its 1-ring: straight edges.
     visited[src] = 1;
-    out.d[src] = 0;
+    d[src] = 0;
     tail[src] = {vertex_sample(src)};
     for (std::uint32_t k = m.vv_start[src]; k < m.vv_start[src + 1]; ++k) {
         const std::uint32_t w = m.vv[k];
@@ -345,9 +307,9 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         append_edge(c, w);
         keep(w, c, 0.0, (m.xyz[w] - m.xyz[src]).norm(), true, 0);  // straight edge, exactly
     }
-    relax(src);
+    wf.relax(src);
     for (std::uint32_t k = m.vv_start[src]; k < m.vv_start[src + 1]; ++k)
-        relax(m.vv[k]);
+        wf.relax(m.vv[k]);
 
     // Flows the part of c from `start` on (c[start] and c.back() fixed).
     auto flow_part = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
@@ -362,7 +324,7 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
     // its face has no visited corner).
     auto slide_anchor = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
         Vec3 grad;
-        double da = field_at(m, c[start].face, c[start].p, out.d, arrival, visited, &grad);
+        double da = field_at(m, c[start].face, c[start].p, d, arrival, visited, &grad);
         if (!std::isfinite(da))
             return da;
         // Every anchor A gives d(w) <= D(A) + |window|: a slide is kept only when it lowers that
@@ -389,7 +351,7 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             project_around(m, a);
             flow_part(c, start, counts);
             Vec3 g2;
-            const double d2 = field_at(m, c[start].face, c[start].p, out.d, arrival, visited, &g2);
+            const double d2 = field_at(m, c[start].face, c[start].p, d, arrival, visited, &g2);
             const double total = d2 + length_of(c, start, c.size() - 1);
             if (std::isfinite(d2) && total < best) {
                 best = total;
@@ -414,7 +376,7 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         Vec3 p = c[start - 1].p;
         if (field_anchor) {
             Vec3 grad;
-            const double da = field_at(m, c[start].face, a, out.d, arrival, visited, &grad);
+            const double da = field_at(m, c[start].face, a, d, arrival, visited, &grad);
             const Vec3 t_in = tangent(c[start].vertex, grad);
             if (!std::isfinite(da) || t_in.squaredNorm() == 0)
                 return 0.0;
@@ -435,61 +397,20 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
         FlowCounts counts;
     };
     auto solve = [&](std::uint32_t w, Solved& r) {
-        // Candidate parents: the straightest continuation among the visited neighbours, or
-        // (shortest_parent) every visited neighbour, keeping the shortest flowed result.
-        std::uint32_t best_u = kNone;
-        double best_cos = -inf;
-        std::vector<std::uint32_t> parents;
-        for (std::uint32_t k = m.vv_start[w]; k < m.vv_start[w + 1]; ++k) {
-            const std::uint32_t u = m.vv[k];
-            if (!visited[u] || u == src)
-                continue;
-            parents.push_back(u);
-            const auto& tu = tail[u];
-            const Vec3 e = (m.xyz[w] - m.xyz[u]).normalized();
-            Vec3 dir = Vec3::Zero();
-            for (std::size_t i = tu.size(); i-- > 1;) {
-                dir = tu.back().p - tu[i - 1].p;
-                if (dir.norm() > 0)
-                    break;
-            }
-            const double cs = dir.norm() > 0 ? dir.normalized().dot(e) : -1.0;
-            if (cs > best_cos) {
-                best_cos = cs;
-                best_u = u;
-            }
-        }
+        // Candidate parents: the straightest continuation among the visited neighbours (with
+        // the cut-locus guard's), or (shortest_parent) every visited neighbour, keeping the
+        // shortest flowed result.
+        std::vector<std::uint32_t> parents = wf.visited_neighbours(w, src);
+        const std::uint32_t best_u = wf.straightest(w, parents);
         if (best_u == kNone) {  // only the source is visited around w (cannot happen past ring 1)
             r.c.assign(1, vertex_sample(src));
             append_edge(r.c, w);
             r.chosen = kNone;
             return;
         }
-        if (!pp.shortest_parent) {
-            // Cut-locus guard: where two wavefronts meet, the straightest continuation may come
-            // from the longer side (or the wrong side of a handle); the neighbour that gives the
-            // smallest tentative distance and those whose geodesics arrive from a clearly
-            // different direction (over 60 degrees) are continued too, the shortest kept.
-            std::vector<std::uint32_t> others;
-            if (pp.cut_locus_guard) {
-                std::uint32_t nearest = kNone;
-                double nearest_t = inf;
-                for (const std::uint32_t u : parents) {
-                    const double t = out.d[u] + (m.xyz[w] - m.xyz[u]).norm();
-                    if (t < nearest_t) {
-                        nearest_t = t;
-                        nearest = u;
-                    }
-                    if (u != best_u && arrival[u].dot(arrival[best_u]) < 0.5)
-                        others.push_back(u);
-                }
-                if (nearest != best_u &&
-                    std::find(others.begin(), others.end(), nearest) == others.end())
-                    others.push_back(nearest);
-            }
-            parents.assign(1, best_u);
-            parents.insert(parents.end(), others.begin(), others.end());
-        }
+        if (!pp.shortest_parent)
+            parents = pp.cut_locus_guard ? wf.guarded(w, best_u, parents)
+                                         : std::vector<std::uint32_t>{best_u};
         r.len = inf;
         std::vector<Sample> c;
         for (const std::uint32_t u : parents) {
@@ -501,10 +422,8 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             if (!pp.smooth && pp.straighten)
                 unflowed = c;
             // Flow the last `window` samples (all for window 0); the sample before them is fixed.
-            std::size_t start = 0;
             const bool whole = field_anchor && whole_path[u] && c.size() <= near_source;
-            if (window > 0 && !whole && c.size() > window + 1)
-                start = c.size() - (window + 1);
+            const std::size_t start = window_start(c.size(), window, whole);
             flow_part(c, start, r.counts);
             double len;
             double excess = 0;
@@ -525,9 +444,9 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
                 // 3 mean edges short, 47 %). The parent's path with the edge to w appended lies on
                 // the surface; its straightened length is an upper bound.
                 c.swap(unflowed);
-                const double da = field_anchor && start > 0 ? field_at(m, c[start].face, c[start].p,
-                                                                       out.d, arrival, visited)
-                                                            : inf;
+                const double da = field_anchor && start > 0
+                                      ? field_at(m, c[start].face, c[start].p, d, arrival, visited)
+                                      : inf;
                 len = std::isfinite(da) ? da + measure(c, start, c.size() - 1)
                                         : prefix[u] + measure(c, 0, c.size() - 1);
                 excess = start > 0 ? kink_excess(c, start) : 0.0;
@@ -560,27 +479,19 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
             if (r.start > 0)
                 out.epsilon = std::max(out.epsilon, r.excess / m.mean_edge);
         }
-        const FlowCounts& k = r.counts;
-        out.iterations += k.iterations;
-        out.flows += k.flows;
-        out.converged += k.converged;
-        out.stalled += k.stalled;
-        out.max_iterations += k.max_iterations;
-        out.failed += k.failed;
-        relax(w);
+        out.counts.add(r.counts);
+        wf.relax(w);
     };
 
-    // Causal batches (gcf_batches.h), band = the shortest edge.
-    const double band = shortest_edge(m.vv_start, m.vv, [&](std::uint32_t v, std::uint32_t u) {
-        return (m.xyz[u] - m.xyz[v]).norm();
-    });
     for (std::size_t v = 0; v < n; ++v)  // fill the frame cache before threads read it
         m.frame(static_cast<std::uint32_t>(v));
-    propagate_in_batches<Solved>(q, tentative, visited, m.vv_start, m.vv, band, solve, commit);
+    Progress progress("gcf distances: vertices", n);
+    wf.run<Solved>(solve, commit, progress);
     for (std::size_t v = 0; v < n; ++v)
         out.stored_samples += tail[v].size();
     if (pp.diagnostics)
         out.tails = std::move(tail);
+    out.d = std::move(d);
     return out;
 }
 

@@ -7,7 +7,9 @@
 // and are projected back onto the faces around their nearest vertex after each step.
 #pragma once
 
+#include <tapeline/core/compact_mesh_types.h>
 #include <tapeline/geodesic/curvature_flow_types.h>
+#include <tapeline/geodesic/internal/gcf_wavefront.h>
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
@@ -88,7 +90,9 @@ private:
     mutable std::vector<T> values_;
 };
 
-/// Compact triangle mesh: corners in the PMP Face_location order, per-corner opposite face.
+/// The flow's view of the compact mesh (core/compact_mesh_types.h, whose corner order it keeps):
+/// Eigen positions, the face across each edge, vertex-to-face and vertex-to-vertex tables, unit
+/// face normals and the lazily computed vertex frames.
 struct Mesh {
     std::vector<Vec3> xyz;
     std::vector<std::uint32_t> corner;    ///< 3 per face
@@ -102,6 +106,30 @@ struct Mesh {
 
     std::size_t vertex_count() const { return xyz.size(); }
     std::size_t face_count() const { return corner.size() / 3; }
+
+    Mesh() = default;
+    explicit Mesh(const tapeline::CompactMesh& c) {
+        const std::size_t nv = c.vertex_count();
+        xyz.resize(nv);
+        for (std::size_t i = 0; i < nv; ++i)
+            xyz[i] = Vec3(c.xyz[3 * i], c.xyz[3 * i + 1], c.xyz[3 * i + 2]);
+        corner = c.corner;
+        across.resize(c.twin.size());
+        for (std::size_t h = 0; h < c.twin.size(); ++h)
+            across[h] = c.twin[h] == tapeline::CompactMesh::kNone ? kNone : c.twin[h] / 3;
+        vf_start = c.vstart;
+        vf.resize(c.vcorners.size());
+        for (std::size_t k = 0; k < vf.size(); ++k)
+            vf[k] = c.vcorners[k] / 3;
+        vv_start = c.nstart;
+        vv = c.neighbours;
+        double edge_sum = 0;
+        for (std::size_t i = 0; i < nv; ++i)
+            for (std::uint32_t k = vv_start[i]; k < vv_start[i + 1]; ++k)
+                edge_sum += (xyz[vv[k]] - xyz[i]).norm();
+        mean_edge = vv.empty() ? 0.0 : edge_sum / static_cast<double>(vv.size());
+        finish();
+    }
 
     void finish() {
         const std::size_t nf = face_count();
@@ -241,30 +269,12 @@ inline void project_around(const Mesh& m, Sample& s) {
 
 /// Dijkstra on the edge graph; the vertex sequence from a to b, empty if unreachable.
 inline std::vector<std::uint32_t> edge_path(const Mesh& m, std::uint32_t a, std::uint32_t b) {
-    const std::size_t n = m.vertex_count();
-    std::vector<double> dist(n, std::numeric_limits<double>::infinity());
-    std::vector<std::uint32_t> pred(n, kNone);
-    using Item = std::pair<double, std::uint32_t>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> q;
-    dist[a] = 0;
-    q.push({0.0, a});
-    while (!q.empty()) {
-        const auto [d, v] = q.top();
-        q.pop();
-        if (d > dist[v])
-            continue;
-        if (v == b)
-            break;
-        for (std::uint32_t k = m.vv_start[v]; k < m.vv_start[v + 1]; ++k) {
-            const std::uint32_t w = m.vv[k];
-            const double nd = d + (m.xyz[w] - m.xyz[v]).norm();
-            if (nd < dist[w]) {
-                dist[w] = nd;
-                pred[w] = v;
-                q.push({nd, w});
-            }
-        }
-    }
+    std::vector<double> dist;
+    std::vector<std::uint32_t> pred;
+    dijkstra_to(
+        m.vv_start, m.vv, a, b,
+        [&m](std::uint32_t v, std::uint32_t w) { return (m.xyz[w] - m.xyz[v]).norm(); }, dist,
+        pred);
     std::vector<std::uint32_t> path;
     if (!(dist[b] < std::numeric_limits<double>::infinity()))
         return path;

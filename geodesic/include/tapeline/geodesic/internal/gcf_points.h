@@ -23,6 +23,7 @@
 #include <tapeline/geodesic/internal/gcf_batches.h>
 #include <tapeline/geodesic/internal/gcf_engine.h>
 #include <tapeline/geodesic/internal/gcf_knn.h>
+#include <tapeline/geodesic/internal/gcf_wavefront.h>
 #include <tapeline/geodesic/point_cloud_types.h>
 
 #include <Eigen/Dense>
@@ -34,6 +35,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <numeric>
 #include <queue>
 #include <string>
 #include <unordered_map>
@@ -233,6 +235,17 @@ inline void prepare(Prepared& pr, const PointCloudDistanceOptions& o, const char
             pr.origin[c] = std::min(pr.origin[c], pr.xyz[D * i + c]);
             hi[c] = std::max(hi[c], pr.xyz[D * i + c]);
         }
+    if (o.cell_size > 0) {
+        double diagonal2 = 0;
+        for (std::size_t c = 0; c < D; ++c)
+            diagonal2 += (hi[c] - pr.origin[c]) * (hi[c] - pr.origin[c]);
+        // Fewer than ~10 cells across leaves paths no room to bend: the distances would be
+        // straight chords through the shape.
+        if (pr.cell > 0.1 * std::sqrt(diagonal2))
+            bad("cell size " + std::to_string(pr.cell) + " is more than a tenth of the extent of " +
+                "the points (bounding-box diagonal " + std::to_string(std::sqrt(diagonal2)) +
+                "): distances would be straight chords; give a smaller cell or 0 (automatic)");
+    }
     // Mixed-radix key of the integer cell coordinates: exact (no collisions) while the grid has
     // fewer than 2^62 cells.
     std::vector<std::uint64_t> radix(D), stride(D);
@@ -305,6 +318,68 @@ inline void prepare(Prepared& pr, const PointCloudDistanceOptions& o, const char
         }
         std::sort(adj[v].begin(), adj[v].end());
     }
+    // Components of the node graph.
+    std::vector<std::uint32_t> component(nodes, kNone);
+    auto label_components = [&] {
+        component.assign(nodes, kNone);
+        std::uint32_t label = 0;
+        std::vector<std::uint32_t> stack;
+        for (std::size_t s = 0; s < nodes; ++s) {
+            if (component[s] != kNone)
+                continue;
+            stack.assign(1, static_cast<std::uint32_t>(s));
+            component[s] = label;
+            while (!stack.empty()) {
+                const std::uint32_t v = stack.back();
+                stack.pop_back();
+                for (const std::uint32_t w : adj[v])
+                    if (component[w] == kNone) {
+                        component[w] = label;
+                        stack.push_back(w);
+                    }
+            }
+            ++label;
+        }
+        return label;
+    };
+    // Where sampling is sparser than the cell size (the cell is a median spacing), a connected
+    // surface can leave cells with no non-empty cell around them. The k-nearest-neighbour graph
+    // still joins them: its shortest pairs between different grid components become node edges
+    // (Kruskal over the components, so a grid graph that is already connected is unchanged and
+    // only truly separate pieces stay separate).
+    if (label_components() > 1) {
+        struct Pair {
+            double d2;
+            std::uint32_t a, b;
+        };
+        std::vector<Pair> pairs;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 1; j < pr.d; ++j) {
+                const std::uint32_t q = pr.knn[i * pr.d + j];
+                const std::uint32_t a = pr.point_node[i], b = pr.point_node[q];
+                if (component[a] != component[b])
+                    pairs.push_back({d2[i * pr.d + j], a, b});
+            }
+        std::sort(pairs.begin(), pairs.end(),
+                  [](const Pair& x, const Pair& y) { return x.d2 < y.d2; });
+        std::vector<std::uint32_t> parent(nodes);
+        std::iota(parent.begin(), parent.end(), 0u);
+        auto find = [&](std::uint32_t c) {
+            while (parent[c] != c)
+                c = parent[c] = parent[parent[c]];
+            return c;
+        };
+        for (const Pair& e : pairs) {
+            const std::uint32_t ca = find(component[e.a]), cb = find(component[e.b]);
+            if (ca == cb)
+                continue;
+            parent[ca] = cb;
+            adj[e.a].insert(std::lower_bound(adj[e.a].begin(), adj[e.a].end(), e.b), e.b);
+            adj[e.b].insert(std::lower_bound(adj[e.b].begin(), adj[e.b].end(), e.a), e.a);
+            ++r.bridged_components;
+        }
+        label_components();
+    }
     pr.adj_start.assign(nodes + 1, 0);
     for (std::size_t v = 0; v < nodes; ++v)
         pr.adj_start[v + 1] = pr.adj_start[v] + static_cast<std::uint32_t>(adj[v].size());
@@ -312,52 +387,19 @@ inline void prepare(Prepared& pr, const PointCloudDistanceOptions& o, const char
     pr.adj.reserve(pr.adj_start[nodes]);
     for (auto& a : adj)
         pr.adj.insert(pr.adj.end(), a.begin(), a.end());
-    // Components of the node graph.
-    pr.component.assign(nodes, kNone);
-    std::uint32_t label = 0;
-    std::vector<std::uint32_t> stack;
-    for (std::size_t s = 0; s < nodes; ++s) {
-        if (pr.component[s] != kNone)
-            continue;
-        stack.assign(1, static_cast<std::uint32_t>(s));
-        pr.component[s] = label;
-        while (!stack.empty()) {
-            const std::uint32_t v = stack.back();
-            stack.pop_back();
-            for (std::uint32_t j = pr.adj_start[v]; j < pr.adj_start[v + 1]; ++j)
-                if (pr.component[pr.adj[j]] == kNone) {
-                    pr.component[pr.adj[j]] = label;
-                    stack.push_back(pr.adj[j]);
-                }
-        }
-        ++label;
-    }
+    pr.component = std::move(component);
     r.nodes = nodes;
     r.node_edges = pr.adj.size() / 2;
     r.grid_seconds = since(tg);
     r.prepare_seconds = since(t0);
 }
 
-/// Outcome counts of flows.
-struct Counts {
-    std::size_t iterations = 0, flows = 0, converged = 0, stalled = 0, max_iterations = 0,
-                failed = 0;
-    void add(const Counts& c) {
-        iterations += c.iterations;
-        flows += c.flows;
-        converged += c.converged;
-        stalled += c.stalled;
-        max_iterations += c.max_iterations;
-        failed += c.failed;
-    }
-};
-
 /// What a query gives back: per-point distances (empty for paths), or a path.
 struct QueryResult {
     std::vector<double> d;
     std::vector<double> path;  ///< dim per sample
     double length = kInf;
-    Counts counts;
+    FlowCounts counts;
     std::size_t reached_nodes = 0;
     std::size_t charts = 0;
     double propagate_seconds = 0, interpolate_seconds = 0;
@@ -607,7 +649,7 @@ private:
 
     /// The flow of gcf_engine.h (solve_tangent_step) on s, endpoints fixed, until converged,
     /// stalled or max_iterations (as flow_to_convergence does on meshes).
-    void flow(std::vector<Sample>& s, Counts& counts, bool whole_path = false) const {
+    void flow(std::vector<Sample>& s, FlowCounts& counts, bool whole_path = false) const {
         ++counts.flows;
         if (s.size() < 3) {
             ++counts.converged;
@@ -701,28 +743,20 @@ QueryResult Engine<D, K>::distances(std::uint32_t src_point) const {
     project(source);
     auto node = [&](std::uint32_t v) -> const Sample& { return v == src ? source : node_[v]; };
 
-    std::vector<double> d(nodes, kInf), prefix(nodes, 0.0), tentative(nodes, kInf);
-    std::vector<Vec> arrival(nodes, Vec::Zero(dim_));
-    std::vector<std::vector<Sample>> tail(nodes);
-    std::vector<char> visited(nodes, 0), whole_path(nodes, 0);
-    MinQueue q;
-    auto relax = [&](std::uint32_t u) {
-        for (std::uint32_t j = pr.adj_start[u]; j < pr.adj_start[u + 1]; ++j) {
-            const std::uint32_t w = pr.adj[j];
-            if (visited[w])
-                continue;
-            const double t = d[u] + (node(w).p - node(u).p).norm();
-            if (t < tentative[w]) {
-                tentative[w] = t;
-                q.push({t, w});
-            }
-        }
-    };
+    auto position = [&node](std::uint32_t v) -> const Vec& { return node(v).p; };
+    Wavefront<Sample, Vec, decltype(position)> wf(pr.adj_start, pr.adj, position,
+                                                  Vec(Vec::Zero(dim_)));
+    std::vector<double>& d = wf.d;
+    std::vector<double>& prefix = wf.prefix;
+    std::vector<Vec>& arrival = wf.arrival;
+    std::vector<std::vector<Sample>>& tail = wf.tail;
+    std::vector<char>& visited = wf.visited;
+    std::vector<char>& whole_path = wf.whole_path;
     visited[src] = 1;
     d[src] = 0;
     whole_path[src] = 1;
     tail[src] = {source};
-    relax(src);
+    wf.relax(src);
 
     // Distance at x (a sample with its tangent basis) interpolated from the visited nodes of its
     // cell and the cells around: d_v + (g_v + g_x) . (x - v) / 2 (the trapezoid rule along the
@@ -768,14 +802,14 @@ QueryResult Engine<D, K>::distances(std::uint32_t src_point) const {
         return wsum > 0 ? sum / wsum : kInf;
     };
 
-    auto flow_part = [&](std::vector<Sample>& c, std::size_t start, Counts& counts) {
+    auto flow_part = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
         std::vector<Sample> part(c.begin() + static_cast<std::ptrdiff_t>(start), c.end());
         flow(part, counts);
         std::copy(part.begin(), part.end(), c.begin() + static_cast<std::ptrdiff_t>(start));
     };
     // The anchor c[start] slid sideways until the window leaves it in the field's direction (as on
     // meshes); returns its interpolated distance.
-    auto slide_anchor = [&](std::vector<Sample>& c, std::size_t start, Counts& counts) {
+    auto slide_anchor = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
         Sample& a = c[start];
         Vec t_in;
         double da = field_at(a, nullptr, &t_in);
@@ -803,56 +837,18 @@ QueryResult Engine<D, K>::distances(std::uint32_t src_point) const {
         double len = kInf;
         std::uint32_t chosen = kNone;
         bool whole = false;
-        Counts counts;
+        FlowCounts counts;
     };
     auto solve = [&](std::uint32_t w, Solved& r) {
-        std::vector<std::uint32_t> parents;
+        // The straightest continuation, plus the cut-locus guard, as on meshes.
         bool next_to_source = false;
-        for (std::uint32_t j = pr.adj_start[w]; j < pr.adj_start[w + 1]; ++j) {
-            const std::uint32_t u = pr.adj[j];
-            if (u == src)
-                next_to_source = true;
-            else if (visited[u])
-                parents.push_back(u);
-        }
+        std::vector<std::uint32_t> parents = wf.visited_neighbours(w, src, &next_to_source);
         if (next_to_source) {
             parents.assign(1, src);
         } else {
-            // The straightest continuation, plus the cut-locus guard of the mesh version.
-            std::uint32_t best_u = kNone;
-            double best_cos = -kInf;
-            for (const std::uint32_t u : parents) {
-                const auto& tu = tail[u];
-                const Vec e = (node(w).p - node(u).p).normalized();
-                Vec dir = Vec::Zero(dim_);
-                for (std::size_t i = tu.size(); i-- > 1;) {
-                    dir = tu.back().p - tu[i - 1].p;
-                    if (dir.norm() > 0)
-                        break;
-                }
-                const double cs = dir.norm() > 0 ? dir.normalized().dot(e) : -1.0;
-                if (cs > best_cos) {
-                    best_cos = cs;
-                    best_u = u;
-                }
-            }
-            std::vector<std::uint32_t> chosen{best_u};
-            if (o_.cut_locus_guard) {
-                std::uint32_t nearest = kNone;
-                double nearest_t = kInf;
-                for (const std::uint32_t u : parents) {
-                    const double t = d[u] + (node(w).p - node(u).p).norm();
-                    if (t < nearest_t) {
-                        nearest_t = t;
-                        nearest = u;
-                    }
-                    if (u != best_u && arrival[u].dot(arrival[best_u]) < 0.5)
-                        chosen.push_back(u);
-                }
-                if (std::find(chosen.begin(), chosen.end(), nearest) == chosen.end())
-                    chosen.push_back(nearest);
-            }
-            parents.swap(chosen);
+            const std::uint32_t best_u = wf.straightest(w, parents);
+            parents = o_.cut_locus_guard ? wf.guarded(w, best_u, parents)
+                                         : std::vector<std::uint32_t>{best_u};
         }
         std::vector<Sample> c;
         for (const std::uint32_t u : parents) {
@@ -879,25 +875,18 @@ QueryResult Engine<D, K>::distances(std::uint32_t src_point) const {
     };
     auto commit = [&](std::uint32_t w, Solved& r) {
         std::vector<Sample>& c = r.c;
-        std::size_t first = 0;
-        if (!r.whole && window > 0 && c.size() > window + 1)
-            first = c.size() - (window + 1);
+        const std::size_t first = window_start(c.size(), window, r.whole);
         prefix[w] = prefix[r.chosen] + (first > 0 ? length_of(c, 0, first) : 0.0);
         d[w] = r.len;
         whole_path[w] = r.whole ? 1 : 0;
         arrival[w] = tangent_dir(c.back(), c.back().p - c[c.size() - 2].p);
-        tail[w].assign(c.begin() + static_cast<std::ptrdiff_t>(first), c.end());
-        tail[w].shrink_to_fit();
-        visited[w] = 1;
+        wf.store(w, c, first);
         out.counts.add(r.counts);
-        relax(w);
+        wf.relax(w);
     };
 
-    // Causal batches, as on meshes (gcf_batches.h), band = the shortest edge.
-    const double band = shortest_edge(pr.adj_start, pr.adj, [&](std::uint32_t v, std::uint32_t u) {
-        return (node(u).p - node(v).p).norm();
-    });
-    propagate_in_batches<Solved>(q, tentative, visited, pr.adj_start, pr.adj, band, solve, commit);
+    Progress progress("gcf point-cloud distances: nodes", nodes);
+    wf.template run<Solved>(solve, commit, progress);
     out.propagate_seconds = since(t0);
     for (std::size_t v = 0; v < nodes; ++v)
         out.reached_nodes += std::isfinite(d[v]) ? 1 : 0;
@@ -940,29 +929,12 @@ QueryResult Engine<D, K>::path(std::uint32_t from, std::uint32_t to) const {
     b.point = to;
     project(b);
     // Dijkstra over the nodes for the initial polyline.
-    const std::size_t nodes = node_.size();
-    std::vector<double> dist(nodes, kInf);
-    std::vector<std::uint32_t> pred(nodes, kNone);
-    MinQueue q;
-    dist[na] = 0;
-    q.push({0.0, na});
-    while (!q.empty()) {
-        const auto [dv, v] = q.top();
-        q.pop();
-        if (dv > dist[v])
-            continue;
-        if (v == nb)
-            break;
-        for (std::uint32_t j = pr.adj_start[v]; j < pr.adj_start[v + 1]; ++j) {
-            const std::uint32_t w = pr.adj[j];
-            const double nd = dv + (node_[w].p - node_[v].p).norm();
-            if (nd < dist[w]) {
-                dist[w] = nd;
-                pred[w] = v;
-                q.push({nd, w});
-            }
-        }
-    }
+    std::vector<double> dist;
+    std::vector<std::uint32_t> pred;
+    dijkstra_to(
+        pr.adj_start, pr.adj, na, nb,
+        [this](std::uint32_t v, std::uint32_t w) { return (node_[w].p - node_[v].p).norm(); }, dist,
+        pred);
     std::vector<std::uint32_t> chain;
     for (std::uint32_t v = pred[nb]; v != kNone && v != na; v = pred[v])
         chain.push_back(v);

@@ -28,6 +28,7 @@
 // terminates; a hard cap on propagated windows turns a runaway into an error instead of a hang.
 #pragma once
 
+#include <tapeline/core/progress.h>
 #include <tapeline/geodesic/internal/mmp_mesh.h>
 
 #include <algorithm>
@@ -50,6 +51,8 @@ constexpr double kLenTol = 1e-12;
 constexpr double kVertexTol = 1e-9;
 /// Relative margin: a window must be shorter by more than this to replace another one.
 constexpr double kDistTol = 1e-12;
+/// Propagated windows per progress update (one atomic add per batch, not per window).
+constexpr std::size_t kProgressBatch = 4096;
 
 struct Window {
     double b0, b1, sx, sy, sigma;
@@ -216,7 +219,8 @@ public:
         }
     }
 
-    void run() {
+    /// Propagates every window; `progress` (optional) is advanced per batch of propagated windows.
+    void run(Progress* progress = nullptr) {
         // Seed the face sources.
         for (const auto& s : face_sources_) {
             const auto P = m_.layout(s.face, 0);
@@ -269,8 +273,9 @@ public:
             if (++stats_.propagated > max_propagated_)
                 throw SolverAbort("more than " + std::to_string(max_propagated_) +
                                   " windows propagated (runaway propagation)");
+            if (progress && stats_.propagated % kProgressBatch == 0)
+                progress->advance(kProgressBatch);
             propagate(top.id);
-            // The edge may be settled once the wave has passed this window's farthest point.
             // The edge may be settled once the wave has passed this window's farthest point;
             // one pending edge event per halfedge at a time.
             const Window& d = pool_[top.id];

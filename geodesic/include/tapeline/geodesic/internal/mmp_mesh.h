@@ -1,22 +1,21 @@
-// Compact triangle mesh of the MMP window propagation: plain arrays, no CGAL, so that the engine
+// The MMP window propagation's view of the compact mesh (core/compact_mesh.h): edge lengths,
+// planar face layouts and vertex flags on top of the shared arrays, so that the engine
 // (mmp_engine.h) is compiled once per translation unit whatever the input mesh type is.
-//
-// Face f has corners 3f, 3f+1, 3f+2 (PMP Face_location order: source(halfedge(f)),
-// target(halfedge(f)), target(next(halfedge(f)))). Halfedge 3f+k of face f runs from corner k to
-// corner k+1 (mod 3); twin[3f+k] is the halfedge of the neighbouring face on the same edge, or
-// kNone on the border.
 #pragma once
+
+#include <tapeline/core/compact_mesh_types.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace tapeline::geodesic::internal::mmp {
 
-constexpr std::uint32_t kNone = 0xffffffffu;
+constexpr std::uint32_t kNone = tapeline::CompactMesh::kNone;
 constexpr double kPi = 3.14159265358979323846;
 
 struct Vec2 {
@@ -39,10 +38,10 @@ inline double norm(Vec2 a) {
 }
 
 inline std::uint32_t next_he(std::uint32_t h) {
-    return h % 3 == 2 ? h - 2 : h + 1;
+    return tapeline::CompactMesh::next_halfedge(h);
 }
 inline std::uint32_t prev_he(std::uint32_t h) {
-    return h % 3 == 0 ? h + 2 : h - 1;
+    return tapeline::CompactMesh::prev_halfedge(h);
 }
 
 enum VertexFlag : std::uint8_t {
@@ -53,22 +52,13 @@ enum VertexFlag : std::uint8_t {
     kPseudoSource = kBorder | kSaddle | kNonManifold | kDegenerate,
 };
 
-struct CompactMesh {
-    std::vector<double> xyz;            ///< 3 per vertex
-    std::vector<std::uint32_t> corner;  ///< 3 per face: vertex index at each corner
-    std::vector<std::uint32_t> twin;    ///< 3 per face
-    std::vector<double> len;            ///< 3 per face: length of halfedge 3f+k
-    std::vector<Vec2> apex;             ///< 3 per face: corner k+2 in the frame of halfedge 3f+k
-    std::vector<std::uint32_t> vstart;  ///< CSR over vertices into vcorners
-    std::vector<std::uint32_t> vcorners;
+struct CompactMesh : tapeline::CompactMesh {
+    std::vector<double> len;  ///< 3 per face: length of halfedge 3f+k
+    std::vector<Vec2> apex;   ///< 3 per face: corner k+2 in the frame of halfedge 3f+k
     std::vector<std::uint8_t> vflags;
 
-    std::size_t vertex_count() const { return xyz.size() / 3; }
-    std::size_t face_count() const { return corner.size() / 3; }
-
-    std::array<double, 3> point(std::uint32_t v) const {
-        return {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
-    }
+    CompactMesh() = default;
+    explicit CompactMesh(tapeline::CompactMesh&& base) : tapeline::CompactMesh(std::move(base)) {}
 
     /// Planar layout of face f with corner k at the origin and corner k+1 on the positive x axis;
     /// the face lies in y >= 0 (counter-clockwise). The x axis carries the exact edge length, so
@@ -83,7 +73,7 @@ struct CompactMesh {
         return p;
     }
 
-    /// Computes lengths, the vertex-to-corner table and the vertex flags. `degenerate_slack`:
+    /// Computes lengths, layouts and the vertex flags. `degenerate_slack`:
     /// a face whose relative triangle-inequality slack is below it marks its corners kDegenerate.
     void finish(double degenerate_slack = 1e-12) {
         const std::size_t nf = face_count(), nv = vertex_count();
@@ -112,15 +102,6 @@ struct CompactMesh {
             apex[h] = {(u[0] * w[0] + u[1] * w[1] + u[2] * w[2]) / l,
                        std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]) / l};
         }
-        vstart.assign(nv + 1, 0);
-        for (std::uint32_t v : corner)
-            ++vstart[v + 1];
-        for (std::size_t v = 0; v < nv; ++v)
-            vstart[v + 1] += vstart[v];
-        vcorners.assign(corner.size(), 0);
-        std::vector<std::uint32_t> fill(vstart.begin(), vstart.end() - 1);
-        for (std::size_t c = 0; c < corner.size(); ++c)
-            vcorners[fill[corner[c]]++] = static_cast<std::uint32_t>(c);
 
         vflags.assign(nv, 0);
         std::vector<double> angle(nv, 0.0);

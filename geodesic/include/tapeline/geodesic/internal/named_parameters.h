@@ -24,7 +24,7 @@ struct MeshParameters {
         using CGAL::parameters::choose_parameter;
         using CGAL::parameters::get_parameter;
         return choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                get_const_property_map(CGAL::vertex_point, tm));
+                                CGAL::get_const_property_map(CGAL::vertex_point, tm));
     }
     static GeomTraits geom_traits(const NamedParameters& np) {
         using CGAL::parameters::choose_parameter;

@@ -6,8 +6,8 @@
 #include <tapeline/core/errors.h>
 #include <tapeline/grading/grading_types.h>
 #include <tapeline/grading/internal/terms.h>
-#include <tapeline/pattern/measurement_set.h>
 #include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <algorithm>
 #include <array>
@@ -240,8 +240,8 @@ public:
         t.items.push_back(item);
     }
 
-    void build_bindings(const tp::MeasurementSet& from, const tp::MeasurementSet& to, EaseMode ease,
-                        double weight, bool split_girths) {
+    void build_bindings(const sizes::MeasurementSet& from, const sizes::MeasurementSet& to,
+                        EaseMode ease, double weight, bool split_girths) {
         for (const tp::MeasurementBinding& b : p_.bindings) {
             LengthTerm t;
             t.weight = weight;
@@ -329,15 +329,22 @@ public:
         }
     }
 
-    /// Seams: the pattern's own and `extra`. Sides equal in the base draft (within `tolerance`)
-    /// are held equal; otherwise the base ratio a/b is kept (a deliberate difference such as
-    /// sleeve-cap ease). Residual w (len(a) − ratio · len(b)).
+    /// Seams: the pattern's own and those of `extra` the pattern does not hold (by name: an
+    /// imported FreeSewing pattern holds some of its design's seams already). Sides equal in the
+    /// base draft (within `tolerance`) are held equal; otherwise the base ratio a/b is kept (a
+    /// deliberate difference such as sleeve-cap ease). Residual w (len(a) − ratio · len(b)).
     void build_seams(double weight, double tolerance, const std::vector<SeamSpec>& extra) {
         std::vector<SeamSpec> all;
         for (const tp::Seam& s : p_.seams) {
             all.push_back({s.name.empty() ? s.a.piece + "/" + s.b.piece : s.name, {s.a}, {s.b}});
         }
-        all.insert(all.end(), extra.begin(), extra.end());
+        const std::size_t own = all.size();
+        for (const SeamSpec& s : extra) {
+            if (std::none_of(all.begin(), all.begin() + own,
+                             [&](const SeamSpec& q) { return q.name == s.name; })) {
+                all.push_back(s);
+            }
+        }
         for (const SeamSpec& s : all) {
             LengthTerm side[2];
             for (int k = 0; k < 2; ++k) {
@@ -517,8 +524,8 @@ private:
 };
 
 /// Builds the whole problem. Bindings must name measurements of `to` (InvalidInput otherwise).
-inline Model build_model(const tp::Pattern& p, const tp::MeasurementSet& from,
-                         const tp::MeasurementSet& to, const GradingOptions& o,
+inline Model build_model(const tp::Pattern& p, const sizes::MeasurementSet& from,
+                         const sizes::MeasurementSet& to, const GradingOptions& o,
                          const std::vector<SeamSpec>& seams = {}) {
     Model m;
     ModelBuilder b(p, m);

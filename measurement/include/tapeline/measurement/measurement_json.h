@@ -1,0 +1,129 @@
+// The measurement JSON of a measured body ("format": "tapeline-measurements", what `tapeline
+// measure --out` writes): the frame, each measurement — the catalogue's columns
+// (tapeline/sizes/json_formats.h) plus where it was taken (landmarks, tape loop or path, girth
+// plane) —, the measurements that could not be taken, the landmarks and the report. Points are
+// canonical millimetres rounded to 0.001 mm, far below any mesh's resolution. No CGAL.
+// tapeline::sizes::read_measurement_input reads it back as a measurement set.
+#pragma once
+
+#include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/measurement_types.h>
+#include <tapeline/sizes/json_formats.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace tapeline::measurement {
+
+namespace internal {
+
+inline nlohmann::ordered_json rounded_point(const Vec3& p) {
+    nlohmann::ordered_json a = nlohmann::ordered_json::array();
+    for (double x : p) {
+        a.push_back(std::round(x * 1000.0) / 1000.0);
+    }
+    return a;
+}
+
+}  // namespace internal
+
+inline nlohmann::ordered_json frame_json(const BodyFrame& f) {
+    using internal::rounded_point;
+    nlohmann::ordered_json j;
+    j["unit"] = to_string(f.unit);
+    j["unit_inferred"] = f.unit_inferred;
+    j["up"] = f.up.to_string();
+    j["front"] = f.front.to_string();
+    j["pose"] = to_string(f.pose);
+    j["millimetres_per_unit"] = f.scale;
+    j["height_mm"] = f.height;
+    j["floor_mm"] = f.floor;
+    j["points"] =
+        "canonical frame: millimetres, x to the body's left, y up, z to the front, floor at y = 0";
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const auto& r : f.rows) {
+        rows.push_back(rounded_point(r));
+    }
+    j["canonical_axes_in_input"] = rows;
+    return j;
+}
+
+inline nlohmann::ordered_json landmark_json(const Landmark& l, const BodyFrame& f) {
+    using internal::rounded_point;
+    nlohmann::ordered_json j;
+    j["name"] = l.name;
+    j["status"] = to_string(l.status);
+    if (l.available()) {
+        j["point"] = rounded_point(l.point);
+        j["point_input"] = rounded_point(f.to_input(l.point));
+    } else {
+        j["point"] = nullptr;
+        j["reason"] = l.reason;
+    }
+    return j;
+}
+
+inline nlohmann::ordered_json measurement_json(const Measurement& m) {
+    using internal::rounded_point;
+    nlohmann::ordered_json j = sizes::measurement_json_entry(m.name, to_string(m.kind), m.value);
+    j["landmarks"] = m.landmarks;
+    j["closed"] = m.closed;
+    if (m.kind == MeasurementKind::girth) {
+        j["plane"] = {{"point", rounded_point(m.plane_point)},
+                      {"normal", rounded_point(m.plane_normal)}};
+    }
+    nlohmann::ordered_json pts = nlohmann::ordered_json::array();
+    for (const auto& p : m.points) {
+        pts.push_back(rounded_point(p));
+    }
+    j["points"] = pts;
+    return j;
+}
+
+/// The whole document for `body` (the file name, say); the caller adds timings.
+inline nlohmann::ordered_json body_measurements_json(const std::string& body,
+                                                     const BodyFrame& frame,
+                                                     const MeasurementSet& set,
+                                                     const LandmarkSet& landmarks,
+                                                     const MeasureReport& report,
+                                                     const std::vector<CheckWarning>& warnings = {}) {
+    using Json = nlohmann::ordered_json;
+    Json j;
+    j["format"] = "tapeline-measurements";
+    j["version"] = 1;
+    j["body"] = body;
+    j["frame"] = frame_json(frame);
+    Json ms = Json::array();
+    for (const auto& m : set.measurements) {
+        ms.push_back(measurement_json(m));
+    }
+    j["measurements"] = ms;
+    Json missing = Json::array();
+    for (const auto& m : set.missing) {
+        missing.push_back({{"name", m.name}, {"reason", m.reason}});
+    }
+    j["missing"] = missing;
+    Json ls = Json::array();
+    for (const auto& l : landmarks.landmarks) {
+        ls.push_back(landmark_json(l, frame));
+    }
+    j["landmarks"] = ls;
+    Json checks = Json::array();  // broken self-check rules (self_checks.h)
+    for (const auto& w : warnings) {
+        checks.push_back({{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
+    }
+    j["warnings"] = checks;
+    j["report"] = {{"vertices", report.vertices},
+                   {"faces", report.faces},
+                   {"components", report.components},
+                   {"sections", report.sections},
+                   {"landmarks_found", report.landmarks_found},
+                   {"landmarks_missing", report.landmarks_missing},
+                   {"warnings", report.warnings}};
+    return j;
+}
+
+}  // namespace tapeline::measurement

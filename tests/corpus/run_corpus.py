@@ -1,0 +1,325 @@
+#!/usr/bin/python3
+"""Runs every `tapeline` command over the hostile-input corpus (tests/corpus/, plus large files
+generated here) under a time and memory limit, and checks each run: no crash (signal), no hang
+(timeout), a refusal is a non-zero exit with exactly one line on stderr, and a refused run leaves
+no file in its output directory. Named cases also check the message or the result.
+
+    run_corpus.py TAPELINE_BINARY SOURCE_DIR WORK_DIR [--summary FILE]
+"""
+import json
+import math
+import os
+import re
+import resource
+import shutil
+import signal
+import sqlite3
+import subprocess
+import sys
+from concurrent.futures import ThreadPoolExecutor
+
+TIME_LIMIT_S = 60
+MEMORY_LIMIT = 4 << 30  # address space per run
+
+binary, root, work = sys.argv[1], sys.argv[2], sys.argv[3]
+summary_path = sys.argv[5] if len(sys.argv) > 5 and sys.argv[4] == "--summary" else None
+corpus = os.path.join(root, "tests", "corpus")
+data = os.path.join(root, "data")
+spot = os.path.join(data, "spot.obj")
+demo = os.path.join(data, "patterns", "aaron_cisFemaleAdult36.json")
+demo_set = os.path.join(data, "patterns", "aaron_cisFemaleAdult36_measurements.json")
+shutil.rmtree(work, ignore_errors=True)
+gen = os.path.join(work, "generated")
+os.makedirs(gen)
+
+
+def write(name, text, mode="w"):
+    path = os.path.join(gen, name)
+    with open(path, mode) as f:
+        f.write(text)
+    return path
+
+
+# --- inputs too large to keep in the repository ---------------------------------------------------
+deep_json = write("deep_300000_levels.json", '{"chest": ' + "[" * 300000 + "]" * 300000 + "}")
+deep_vit = write("deep_30000_elements.vit",
+                 '<?xml version="1.0"?>\n<vit>' + "<e>" * 30000 + "</e>" * 30000 + "</vit>")
+deep_pattern = write("deep_pattern.json",
+                     '{"format": "tapeline-pattern", "x": ' + "{\"a\":" * 100000 + "1" +
+                     "}" * 100000 + "}")
+long_line = write("one_long_line.xyz", "1 " * 3000000 + "\n")
+huge_pattern = write("coordinates_1e308.json", json.dumps({
+    "format": "tapeline-pattern", "format_version": 1, "name": "huge", "units": "mm",
+    "pieces": [{"name": "a", "outline": [
+        {"type": "line", "a": [0, 0], "b": [1e308, 0]},
+        {"type": "line", "a": [1e308, 0], "b": [0, 1e308]},
+        {"type": "line", "a": [0, 1e308], "b": [0, 0]}]}], "seams": []}))
+# 400 points on a unit sphere (golden spiral): a cloud whose extent is 2.
+sphere_points = write("sphere_400.xyz", "".join(
+    "%.9f %.9f %.9f\n" % (math.sqrt(1 - (1 - 2 * (i + 0.5) / 400) ** 2) * math.cos(2.399963 * i),
+                         math.sqrt(1 - (1 - 2 * (i + 0.5) / 400) ** 2) * math.sin(2.399963 * i),
+                         1 - 2 * (i + 0.5) / 400) for i in range(400)))
+directory_input = os.path.join(gen, "a_directory.obj")
+os.makedirs(directory_input)
+foreign_db = os.path.join(gen, "foreign.sqlite")
+with sqlite3.connect(foreign_db) as c:
+    c.execute("CREATE TABLE contacts(name TEXT)")
+future_db = os.path.join(gen, "future.sqlite")
+with sqlite3.connect(future_db) as c:
+    c.execute("PRAGMA application_id=1414548558")
+    c.execute("CREATE TABLE patterns(x)")
+    c.execute("PRAGMA user_version=99")
+truncated_db = os.path.join(gen, "truncated.sqlite")
+with sqlite3.connect(truncated_db) as c:
+    c.execute("CREATE TABLE t(x)")
+    c.executemany("INSERT INTO t VALUES(?)", [("x" * 1000,)] * 200)
+os.truncate(truncated_db, os.path.getsize(truncated_db) // 3)
+
+inputs = {}
+for sub in sorted(os.listdir(corpus)):
+    d = os.path.join(corpus, sub)
+    if os.path.isdir(d):
+        for name in sorted(os.listdir(d)):
+            inputs[sub + "/" + name] = os.path.join(d, name)
+for path in [deep_json, deep_vit, deep_pattern, long_line, huge_pattern, directory_input,
+             foreign_db, future_db, truncated_db]:
+    inputs["generated/" + os.path.basename(path)] = path
+
+# --- the commands; {in} is the hostile input, {out} a fresh output directory -----------------------
+commands = {
+    "mesh check": ["mesh", "check", "{in}"],
+    "distances exact-mmp": ["geodesic", "distances", "{in}", "--source", "0", "--out", "{out}/d.txt"],
+    "distances heat": ["geodesic", "distances", "{in}", "--source", "0", "--method", "heat",
+                       "--out", "{out}/d.ply"],
+    "distances gcf-window": ["geodesic", "distances", "{in}", "--source", "0", "--method",
+                             "gcf-window", "--out", "{out}/d.txt"],
+    "distances dijkstra": ["geodesic", "distances", "{in}", "--source", "1", "--method", "dijkstra",
+                           "--out", "{out}/d.txt"],
+    "path": ["geodesic", "path", "{in}", "--from", "0", "--to", "1", "--out", "{out}/p.json",
+             "--svg", "{out}/p.svg"],
+    "point cloud": ["geodesic", "distances", "{in}", "--point-cloud", "--source", "0",
+                    "--out", "{out}/d.txt"],
+    "pattern validate": ["pattern", "validate", "{in}"],
+    "pattern show": ["pattern", "show", "{in}", "--db", "{out}/none.sqlite"],
+    "pattern export": ["pattern", "export", "{in}", "--db", "{out}/none.sqlite", "--svg",
+                       "{out}/a.svg", "--png", "{out}/a.png", "--json", "{out}/a.json"],
+    "pattern import": ["pattern", "import", "{in}", "--db", "{out}/db.sqlite"],
+    "pattern list": ["pattern", "list", "--db", "{in}"],
+    "grade --to": ["grade", demo, "--from", demo_set, "--to", "{in}", "--out", "{out}/g.json",
+                   "--svg", "{out}/g.svg", "--generations", "0"],
+    "grade --from": ["grade", demo, "--from", "{in}", "--to", demo_set, "--out", "{out}/g.json"],
+    "measure": ["measure", "{in}", "--out", "{out}/m.json", "--vit", "{out}/m.vit"],
+}
+
+# Inputs a command may accept: they are hostile to other readers only.
+accepted = {
+    ("mesh check", "mesh/nonmanifold_edge.off"),  # repaired (split) and reported
+    ("distances exact-mmp", "mesh/nonmanifold_edge.off"),
+    ("distances heat", "mesh/nonmanifold_edge.off"),
+    ("distances dijkstra", "mesh/nonmanifold_edge.off"),
+    ("path", "mesh/nonmanifold_edge.off"),
+    # `pattern show` inspects: it prints the pattern with its validation errors; `validate` and
+    # every writer refuse the same files (named cases below).
+    ("pattern show", "pattern/no_pieces.json"),
+    ("pattern show", "generated/coordinates_1e308.json"),
+}
+
+
+def limits():
+    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+
+
+run_counter = [0]
+
+
+def run(argv, out, time_limit=TIME_LIMIT_S):
+    os.makedirs(out, exist_ok=True)
+    try:
+        p = subprocess.run([binary] + argv, cwd=out, stdin=subprocess.DEVNULL,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=limits,
+                           timeout=time_limit)
+        return p.returncode, p.stdout.decode(errors="replace"), p.stderr.decode(errors="replace")
+    except subprocess.TimeoutExpired:
+        return "timeout", "", ""
+
+
+results = {"runs": 0, "refused": 0, "accepted": 0, "crashes": 0, "hangs": 0, "files_left": 0,
+           "failures": []}
+
+
+def record_failure(name, why):
+    results["failures"].append(name + ": " + why)
+
+
+def check_refusal(name, argv, out, pattern=None, allow_success=False, time_limit=TIME_LIMIT_S):
+    rc, stdout, stderr = run(argv, out, time_limit)
+    results["runs"] += 1
+    left = sorted(os.listdir(out))
+    if rc == "timeout":
+        results["hangs"] += 1
+        record_failure(name, "no answer within %d s" % time_limit)
+        return rc, stderr
+    if rc < 0 or rc >= 128:
+        results["crashes"] += 1
+        record_failure(name, "crashed (exit %s) %s" % (rc, stderr[-300:]))
+        return rc, stderr
+    if rc == 0:
+        results["accepted"] += 1
+        if not allow_success:
+            record_failure(name, "accepted (exit 0): " + stdout[:200])
+        return rc, stderr
+    results["refused"] += 1
+    # Warnings about the input may come first; the refusal itself is exactly one line.
+    lines = [l for l in stderr.splitlines() if not l.startswith("tapeline: warning: ")]
+    if len(lines) != 1 or not lines[0].startswith("tapeline: "):
+        record_failure(name, "stderr is not one line: %r" % stderr[:400])
+    if pattern and not re.search(pattern, stderr):
+        record_failure(name, "message %r does not match %r" % (stderr.strip(), pattern))
+    if left:
+        results["files_left"] += 1
+        record_failure(name, "left files behind: %s" % left)
+    return rc, stderr
+
+
+jobs = []
+for cname, template in commands.items():
+    for iname, path in inputs.items():
+        argv_base = [a.replace("{in}", path) for a in template]
+        jobs.append((cname + " <- " + iname, argv_base, (cname, iname) in accepted))
+
+
+def do(job_index):
+    name, argv_base, ok = jobs[job_index]
+    out = os.path.join(work, "runs", str(job_index))
+    argv = [a.replace("{out}", out) for a in argv_base]
+    check_refusal(name, argv, out, allow_success=ok)
+
+
+with ThreadPoolExecutor(max_workers=2) as pool:
+    list(pool.map(do, range(len(jobs))))
+sweep_runs = results["runs"]
+
+# --- named cases: the message or the result ------------------------------------------------------
+case_dir = os.path.join(work, "cases")
+
+
+def case(name, argv, pattern, **kw):
+    out = os.path.join(case_dir, re.sub(r"[^a-z0-9]+", "_", name.lower()))
+    argv = [a.replace("{out}", out) for a in argv]
+    return check_refusal("case " + name, argv, out, pattern, **kw), out
+
+
+case("unknown command", ["frobnicate"], r"unknown command 'frobnicate' \(expected one of: mesh")
+case("unknown subcommand", ["pattern", "frobnicate"], r"unknown command 'pattern frobnicate'")
+case("empty --source", ["geodesic", "distances", spot, "--source", "", "--out", "{out}/d.txt"],
+     r"--source.*empty value")
+case("JSON 300000 levels deep (grade --to)",
+     ["grade", demo, "--from", demo_set, "--to", deep_json, "--out", "{out}/g.json"],
+     r"deep_300000_levels\.json: JSON nested deeper than 256 levels at byte 265")
+case("XML 30000 elements deep (grade --to)",
+     ["grade", demo, "--from", demo_set, "--to", deep_vit, "--out", "{out}/g.json"],
+     r"deep_30000_elements\.vit:2:.*nested deeper than 256 levels")
+case("gcf-window on a tetrahedron at 1e300",
+     ["geodesic", "distances", inputs["mesh/tetra_1e300.off"], "--source", "0", "--method",
+      "gcf-window", "--out", "{out}/d.txt"],
+     r"vertex 1 has coordinate 1e\+300, outside the supported range \|x\| <= 1e\+15")
+case("exact-mmp on a tetrahedron at 1e-300",
+     ["geodesic", "distances", inputs["mesh/tetra_1e-300.off"], "--source", "0",
+      "--out", "{out}/d.txt"], r"span only 1\.73e-300")
+case("point cloud at 1e300",
+     ["geodesic", "distances", inputs["points/coordinates_1e300.xyz"], "--point-cloud",
+      "--source", "0", "--out", "{out}/d.txt"], r"point 1 has coordinate 1e\+300")
+case("directory as mesh", ["geodesic", "distances", directory_input, "--source", "0",
+                           "--out", "{out}/d.txt"], r"a_directory\.obj: is a directory")
+case("directory as pattern", ["pattern", "validate", directory_input], r"is a directory")
+case("grade output in a missing directory",
+     ["grade", demo, "--from", demo_set, "--to", demo_set, "--out", "{out}/g.json",
+      "--svg", "{out}/nodir/x.svg"], r"nodir/x\.svg: directory .*nodir does not exist")
+case("export output in a missing directory",
+     ["pattern", "export", demo, "--svg", "{out}/a.svg", "--png", "{out}/nodir/x.png"],
+     r"nodir/x\.png: directory .*nodir does not exist")
+case("one output given twice",
+     ["pattern", "export", demo, "--svg", "{out}/a.svg", "--json", "{out}/./a.svg"],
+     r"given as two different outputs")
+case("pattern with no pieces", ["pattern", "validate", inputs["pattern/no_pieces.json"]],
+     r"has no pieces")
+case("pattern at 1e308", ["pattern", "export", huge_pattern, "--svg", "{out}/a.svg"],
+     r"beyond the 10000000\.000 mm a pattern may span")
+case("single-point outline", ["pattern", "validate", inputs["pattern/garmentcode_single_point.json"]],
+     r".")
+case("--cell larger than the cloud",
+     ["geodesic", "distances", sphere_points, "--point-cloud", "--source", "0", "--cell", "100",
+      "--out", "{out}/d.txt"], r"cell size 100.* more than a tenth of the extent")
+case("foreign database", ["pattern", "list", "--db", foreign_db], r"not a Tapeline pattern database")
+case("database from the future", ["pattern", "list", "--db", future_db], r"schema version 99")
+
+# A 252-byte output name: the temporary name beside it stays short.
+(rc, _), out = case("252-byte output name",
+                    ["pattern", "export", demo, "--json", "{out}/" + "n" * 247 + ".json"], None,
+                    allow_success=True)
+if rc != 0 or os.listdir(out) != ["n" * 247 + ".json"]:
+    record_failure("case 252-byte output name", "exit %s, files %s" % (rc, os.listdir(out)))
+
+# Temporaries of a killed process (PID not running) are removed by the next write there.
+stale_dir = os.path.join(case_dir, "stale")
+os.makedirs(stale_dir)
+dead = subprocess.Popen(["true"])
+dead.wait()
+stale = os.path.join(stale_dir, ".tapeline-tmp-%d-0.json" % dead.pid)
+open(stale, "w").write("half")
+(rc, _), out = case("stale temporaries", ["pattern", "export", demo, "--json",
+                                          os.path.join(stale_dir, "a.json")], None,
+                    allow_success=True)
+if rc != 0 or sorted(os.listdir(stale_dir)) != ["a.json"]:
+    record_failure("case stale temporaries", "files %s" % os.listdir(stale_dir))
+
+# A pattern database in a directory its reader cannot write (as another user when run as root).
+ro_dir = os.path.join(case_dir, "read_only_db")
+os.makedirs(ro_dir)
+ro_db = os.path.join(ro_dir, "patterns.sqlite")
+rc, _, err = run(["pattern", "import", demo, "--db", ro_db], ro_dir)
+os.chmod(ro_dir, 0o555)
+for p in (gen, case_dir, work):
+    os.chmod(p, 0o755)
+demote = None
+if os.geteuid() == 0:
+    def demote():
+        os.setgid(65534)
+        os.setuid(65534)
+        limits()
+p = subprocess.run([binary, "pattern", "list", "--db", ro_db], stdout=subprocess.PIPE,
+                   stderr=subprocess.PIPE, preexec_fn=demote or limits, timeout=TIME_LIMIT_S)
+results["runs"] += 1
+if p.returncode != 0 or b"opened immutable" not in p.stderr or b"aaron" not in p.stdout.lower():
+    record_failure("case read-only database", "exit %d: %r" % (p.returncode, p.stderr[:300]))
+os.chmod(ro_dir, 0o755)
+
+# A dense sample of a closed surface: every point gets a distance.
+cloud = os.path.join(gen, "ellipsoid_50k.xyz")
+subprocess.run([sys.executable, os.path.join(corpus, "make_ellipsoid.py"), cloud, "50000"], check=True)
+(rc, _), out = case("50k-point ellipsoid, default --cell and --neighbours",
+                    ["geodesic", "distances", cloud, "--point-cloud", "--source", "0",
+                     "--out", "{out}/d.txt"], None, allow_success=True, time_limit=900)
+if rc == 0:
+    values = open(os.path.join(out, "d.txt")).read().split()
+    unreached = sum(1 for v in values if v == "inf")
+    if len(values) != 50000 or unreached:
+        record_failure("case ellipsoid 50k", "%d values, %d inf" % (len(values), unreached))
+else:
+    record_failure("case ellipsoid 50k", "exit %s" % rc)
+
+# --- summary -------------------------------------------------------------------------------------
+results["corpus_files"] = len(inputs)
+results["commands"] = len(commands)
+results["sweep_runs"] = sweep_runs
+for f in results["failures"]:
+    print("FAIL - " + f)
+print("corpus: %d inputs x %d commands = %d runs, %d named-case runs; refused %d, accepted %d, "
+      "crashes %d, hangs %d, runs leaving files %d; %d failures"
+      % (len(inputs), len(commands), sweep_runs, results["runs"] - sweep_runs, results["refused"],
+         results["accepted"], results["crashes"], results["hangs"], results["files_left"],
+         len(results["failures"])))
+if summary_path:
+    json.dump(results, open(summary_path, "w"), indent=1)
+sys.exit(1 if results["failures"] else 0)
