@@ -122,6 +122,11 @@ void run_measure(const MeasureArgs& a) {
     for (const auto& w : r.warnings) {
         std::cerr << "tapeline: warning: " << w.rule << ": " << w.message << '\n';
     }
+    if (a.strict && !r.warnings.empty()) {
+        throw InvalidInput(a.body + ": " + std::to_string(r.warnings.size()) +
+                           " self-check warning(s) with --strict (nothing written); the first: " +
+                           r.warnings.front().message);
+    }
     const std::string text = j.dump(1) + "\n";
     if (!a.pictures.empty()) {
         tm::PictureOptions po;
@@ -143,11 +148,6 @@ void run_measure(const MeasureArgs& a) {
               << r.landmarks.landmarks.size() << " landmarks (unit " << tm::to_string(r.frame.unit)
               << (r.frame.unit_inferred ? ", inferred" : "") << ", height " << std::fixed
               << std::setprecision(1) << r.frame.height << " mm)\n";
-    if (a.strict && !r.warnings.empty()) {
-        throw InvalidInput(a.body + ": " + std::to_string(r.warnings.size()) +
-                           " self-check warning(s) with --strict; the first: " +
-                           r.warnings.front().message);
-    }
 }
 
 }  // namespace
