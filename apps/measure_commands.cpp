@@ -47,6 +47,7 @@ struct MeasureArgs {
     std::string landmarks;
     std::string vit;
     std::vector<std::string> pictures;
+    bool strict = false;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -106,7 +107,8 @@ void run_measure(const MeasureArgs& a) {
         tm::measure_skin_lengths(loaded.mesh, r.frame, r.landmarks, r.measurements);
     const auto t2 = Clock::now();
 
-    Json j = tm::body_measurements_json(a.body, r.frame, r.measurements, r.landmarks, r.report);
+    Json j = tm::body_measurements_json(a.body, r.frame, r.measurements, r.landmarks, r.report,
+                                        r.warnings);
     j["timings_seconds"] = {{"load", std::chrono::duration<double>(t1 - t0).count()},
                             {"frame", r.report.frame_seconds},
                             {"landmarks", r.report.landmark_seconds},
@@ -116,6 +118,14 @@ void run_measure(const MeasureArgs& a) {
 
     for (const auto& w : r.report.warnings) {
         std::cerr << "tapeline: warning: " << w << '\n';
+    }
+    for (const auto& w : r.warnings) {
+        std::cerr << "tapeline: warning: " << w.rule << ": " << w.message << '\n';
+    }
+    if (a.strict && !r.warnings.empty()) {
+        throw InvalidInput(a.body + ": " + std::to_string(r.warnings.size()) +
+                           " self-check warning(s) with --strict (nothing written); the first: " +
+                           r.warnings.front().message);
     }
     const std::string text = j.dump(1) + "\n";
     if (!a.pictures.empty()) {
@@ -164,6 +174,8 @@ void register_measure_commands(CLI::App& app) {
                     "be given more than once)")
         ->expected(1)
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    cmd->add_flag("--strict", args->strict,
+                  "Exit non-zero when a self-check warns (the JSON's \"warnings\")");
     cmd->callback([args] { run_measure(*args); });
 }
 

@@ -93,15 +93,14 @@ TEST(MeasurementInput, UnitsAreInferredOnlyWhenTheHeightIsUnambiguous) {
                                {"tall.obj", "height 40", "pass --units"}, "pipeline");
 }
 
-TEST(MeasurementInput, TinyBodyStillGivesAReportWithReasons) {
-    // Nothing of a body is there, but the call completes: every landmark not found has a reason.
+TEST(MeasurementInput, ShapeWithoutLegsArmsOrNeckIsNotABody) {
+    // A human height, upright, but nothing of a body: refused, naming what was looked for.
     BodyOptions o;
     o.unit = LengthUnit::m;
-    const Result r = measure_mesh(octahedron(), octahedron_faces(), o);
-    EXPECT_TRUE(r.landmarks.find("top_of_head")->available());
-    EXPECT_FALSE(r.landmarks.find("crotch")->available());
-    EXPECT_NE(r.landmarks.find("crotch")->reason.find("crotch: "), std::string::npos);
-    EXPECT_FALSE(r.measurements.missing.empty());
+    o.name = "octa.obj";
+    expect_error<InvalidInput>([&] { measure_mesh(octahedron(), octahedron_faces(), o); },
+                               {"octa.obj", "does not look like a body", "crotch", "armpits"},
+                               "octahedron");
 }
 
 TEST(MeasurementInput, BadOverrideFilesAreRejected) {

@@ -24,6 +24,7 @@ struct Result {
     LandmarkSet landmarks;
     MeasurementSet measurements;
     MeasureReport report;
+    std::vector<CheckWarning> warnings;  ///< self-checks
     double seconds = 0;  ///< wall clock of the whole call (load excluded)
 };
 
@@ -36,6 +37,7 @@ Result to_result(BodyMeasurements&& m, double seconds) {
     r.landmarks = std::move(m.landmarks);
     r.measurements = std::move(m.measurements);
     r.report = std::move(m.report);
+    r.warnings = std::move(m.warnings);
     r.seconds = seconds;
     return r;
 }

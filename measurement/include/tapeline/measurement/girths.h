@@ -316,6 +316,11 @@ private:
                 at = y;
             }
         }
+        // A flat chest has no fold under it: ISO's "just below the breasts" is then just below
+        // the chest's prominence, 2.5% of the height under the bust points.
+        if (best < 0.002 * height_) {
+            at = y1 - 0.025 * height_;
+        }
         record("underbust_girth", horizontal_torso(at), deps);
     }
 

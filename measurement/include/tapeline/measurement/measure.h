@@ -4,9 +4,11 @@
 #pragma once
 
 #include <tapeline/measurement/body.h>
+#include <tapeline/measurement/body_checks.h>
 #include <tapeline/measurement/girths.h>
 #include <tapeline/measurement/landmarks.h>
 #include <tapeline/measurement/measurement_types.h>
+#include <tapeline/measurement/self_checks.h>
 
 #include <chrono>
 
@@ -18,9 +20,12 @@ struct BodyMeasurements {
     LandmarkSet landmarks;
     MeasurementSet measurements;
     MeasureReport report;
+    /// Broken self-check rules (self_checks.h); empty on a plausible result.
+    std::vector<CheckWarning> warnings;
 };
 
-/// Landmarks (with overrides) and girths of a prepared body.
+/// Landmarks (with overrides), girths and self-checks of a prepared body. A mesh that is not one
+/// upright human body is refused (InvalidInput, body_checks.h) before anything is measured.
 inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& options = {},
                                      const LandmarkOverrides& overrides = {}) {
     using Clock = std::chrono::steady_clock;
@@ -30,12 +35,15 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     out.report.faces = body.mesh.triangles.size();
     out.report.components = body.mesh.components;
     const auto t0 = Clock::now();
+    check_body_shape(body);
     LandmarkReport lr;
     out.landmarks = find_landmarks(body, options, overrides, &lr);
+    check_body_proportions(body, out.landmarks);
     const auto t1 = Clock::now();
     std::size_t cuts = 0;
     out.measurements = measure_girths(body, out.landmarks, options, &cuts);
     apply_catalogue(out.measurements);
+    out.warnings = self_check(body, out.landmarks, out.measurements);
     const auto t2 = Clock::now();
     out.report.landmark_seconds = std::chrono::duration<double>(t1 - t0).count();
     out.report.girth_seconds = std::chrono::duration<double>(t2 - t1).count();

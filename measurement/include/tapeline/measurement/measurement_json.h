@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace tapeline::measurement {
 
@@ -92,7 +93,8 @@ inline nlohmann::ordered_json body_measurements_json(const std::string& body,
                                                      const BodyFrame& frame,
                                                      const MeasurementSet& set,
                                                      const LandmarkSet& landmarks,
-                                                     const MeasureReport& report) {
+                                                     const MeasureReport& report,
+                                                     const std::vector<CheckWarning>& warnings = {}) {
     using Json = nlohmann::ordered_json;
     Json j;
     j["format"] = "tapeline-measurements";
@@ -114,6 +116,11 @@ inline nlohmann::ordered_json body_measurements_json(const std::string& body,
         ls.push_back(landmark_json(l, frame));
     }
     j["landmarks"] = ls;
+    Json checks = Json::array();  // broken self-check rules (self_checks.h)
+    for (const auto& w : warnings) {
+        checks.push_back({{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
+    }
+    j["warnings"] = checks;
     j["report"] = {{"vertices", report.vertices},
                    {"faces", report.faces},
                    {"components", report.components},

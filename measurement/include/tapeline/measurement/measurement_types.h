@@ -171,6 +171,14 @@ private:
     }
 };
 
+/// One broken self-check rule (self_checks.h).
+struct CheckWarning {
+    std::string measurement;  ///< the measurement or landmark it concerns
+    /// left_right, bust_underbust, wrist_elbow, landmark_height, segment_length,
+    /// loop_around_part
+    std::string rule;
+    std::string message;  ///< one line naming both
+};
 /// Sets iso_clause, iso_number and freesewing of a measurement from the catalogue (left as they
 /// are when the catalogue does not know its name). The _left/_right variants of a sided
 /// measurement are its ISO item taken on that side, without FreeSewing name.

@@ -146,6 +146,13 @@ private:
     std::optional<Vec3> fingertip_[2];  // T-pose: the farthest point out on each side
     double x_mid_ = 0;
 
+    /// Nipple level below the armpit on a chest without a prominence, as a fraction of the
+    /// height.
+    static constexpr double kNippleDrop = 0.05;
+    /// Waist level on a torso without a waist indentation, as a fraction of the way from the
+    /// crotch to the armpit.
+    static constexpr double kWaistFraction = 0.57;
+
     static double side_sign(int s) { return s == 0 ? 1.0 : -1.0; }
     static const char* side_name(int s) { return s == 0 ? "left" : "right"; }
     double y_of(double fraction) const { return m_.min_y + fraction * height_; }
@@ -519,7 +526,14 @@ private:
         };
         const double lo = c + 0.3 * (a - c), hi = c + 0.85 * (a - c);
         const int samples = std::max(8, static_cast<int>((hi - lo) / step_));
-        const auto [wy, wg] = scan_minimum(girth, lo, hi, samples, options_.level_tolerance);
+        auto [wy, wg] = scan_minimum(girth, lo, hi, samples, options_.level_tolerance);
+        // No waist indentation (a belly or a straight torso): the smallest girth sits at an end
+        // of the band. The waist is then at its usual place between crotch and armpit
+        // (kWaistFraction of the way, the population's median where a waist is found).
+        if (std::isfinite(wg) && (wy < lo + 2 * step_ || wy > hi - 2 * step_)) {
+            wy = c + kWaistFraction * (a - c);
+            wg = girth(wy);
+        }
         if (!std::isfinite(wg)) {
             set_missing("waist_front", "no torso section between crotch and armpits");
             set_missing("waist_back", "no torso section between crotch and armpits");
@@ -773,6 +787,13 @@ private:
         set_found("front_neck", {x_mid_, at.first, at.second});
     }
 
+    /// Bust point: the chest's most prominent point at nipple level, from the torso's front
+    /// profile between the armpit and the waist (the most forward section point 10-80% of the
+    /// half-width off the midline, per scan level). The level is the highest local maximum of
+    /// that profile (over 1.5% of the height each way) below the armpit: a breast's apex, or a
+    /// flat chest's pectoral prominence; a belly further forward lower down is not the chest.
+    /// A chest with no prominence of its own (the profile only grows towards the belly) takes
+    /// the level `kNippleDrop` of the height below the armpit.
     void find_bust() {
         if (!crotch_y_) {
             set_missing("bust_left", "needs the crotch");
@@ -780,18 +801,20 @@ private:
             return;
         }
         const double a = armpit_level();
-        const double lo = a - 0.12 * height_, hi = a;
+        const double w = waist_y_ ? *waist_y_ : *crotch_y_ + 0.6 * (a - *crotch_y_);
+        const double lo = std::max(w, a - 0.12 * height_), hi = a;
         for (int s = 0; s < 2; ++s) {
             const double sg = side_sign(s);
-            double best = -std::numeric_limits<double>::infinity();
-            Vec3 at{0, 0, 0};
-            for (std::size_t k = 0; k < levels_.size(); ++k) {
+            std::vector<std::pair<double, Vec3>> profile;  // (y, most forward point), top down
+            for (std::size_t k = levels_.size(); k-- > 0;) {
                 if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
                     continue;
                 }
                 const PlaneSection& ps = levels_[k].ps;
                 const Section& sec = ps.sections[static_cast<std::size_t>(levels_[k].torso)];
                 const double half = sg > 0 ? sec.hi[0] - x_mid_ : x_mid_ - sec.lo[0];
+                double best = -std::numeric_limits<double>::infinity();
+                Vec3 at{0, 0, 0};
                 for (std::size_t l : sec.loops) {
                     for (const auto& p : ps.loops[l].points) {
                         const double off = sg * (p[0] - x_mid_);
@@ -801,13 +824,42 @@ private:
                         }
                     }
                 }
+                if (std::isfinite(best)) {
+                    profile.emplace_back(levels_[k].y, at);
+                }
             }
             const std::string name = std::string("bust_") + side_name(s);
-            if (!std::isfinite(best)) {
+            if (profile.empty()) {
                 set_missing(name, "no torso front found below the armpits");
-            } else {
-                set_found(name, at);
+                continue;
             }
+            const double window = 0.015 * height_;
+            std::optional<std::size_t> apex;
+            for (std::size_t i = 0; i < profile.size() && !apex; ++i) {
+                const double y = profile[i].first;
+                if (y < lo + window || y > hi - 0.01 * height_) {
+                    continue;
+                }
+                bool peak = true;
+                for (std::size_t j = 0; j < profile.size() && peak; ++j) {
+                    peak = std::abs(profile[j].first - y) > window ||
+                           profile[j].second[2] <= profile[i].second[2];
+                }
+                if (peak) {
+                    apex = i;
+                }
+            }
+            if (!apex) {
+                const double y = std::max(lo, a - kNippleDrop * height_);
+                std::size_t near = 0;
+                for (std::size_t i = 1; i < profile.size(); ++i) {
+                    if (std::abs(profile[i].first - y) < std::abs(profile[near].first - y)) {
+                        near = i;
+                    }
+                }
+                apex = near;
+            }
+            set_found(name, profile[*apex].second);
         }
     }
 
@@ -1096,7 +1148,26 @@ private:
             }
             const auto em = local_extremum(prof, from, false, 0.01);
             const auto fm = em ? local_extremum(prof, *em, true, 0.01) : std::nullopt;
-            const auto wm = fm ? local_extremum(prof, *fm, false, 0.01) : std::nullopt;
+            auto wm = fm ? local_extremum(prof, *fm, false, 0.01) : std::nullopt;
+            // The hand (wrist to fingertip) is 0.108 of the height (Drillis & Contini 1966, in
+            // Winter 2009, Fig. 4.1). A narrowing that leaves a hand far from that is a dip of
+            // the forearm's profile (one arm found mid-forearm while the other was right): the
+            // wrist is then the narrowest section where a hand of 0.07-0.15 of the height ends.
+            if (!wm || total - prof[*wm].t < 0.07 * height_ ||
+                total - prof[*wm].t > 0.15 * height_) {
+                std::optional<std::size_t> narrow;
+                for (std::size_t i = 0; i < prof.size(); ++i) {
+                    const double hand = total - prof[i].t;
+                    if (hand >= 0.07 * height_ && hand <= 0.15 * height_ &&
+                        std::isfinite(prof[i].perimeter) &&
+                        (!narrow || prof[i].perimeter < prof[*narrow].perimeter)) {
+                        narrow = i;
+                    }
+                }
+                if (narrow) {
+                    wm = narrow;
+                }
+            }
             if (!wm || prof[*wm].t > 0.95 * total) {
                 set_missing(wrist, "no narrowing of the arm after the forearm");
             } else {
@@ -1134,6 +1205,23 @@ private:
                     e = bend;
                     convex = sub(normalized(sub(prof[e].centre, ca)),
                                  normalized(sub(cw, prof[e].centre)));
+                } else if (prof[*wm].t - prof[e].t < 0.10 * height_) {
+                    // A straight arm whose first narrowing leaves a forearm shorter than 0.10 of
+                    // the height (0.146 in Drillis & Contini 1966) found a dip of the forearm:
+                    // the elbow is the narrowest section 0.11-0.20 of the height before the
+                    // wrist.
+                    std::optional<std::size_t> narrow;
+                    for (std::size_t i = 0; i < *wm; ++i) {
+                        const double fore = prof[*wm].t - prof[i].t;
+                        if (fore >= 0.11 * height_ && fore <= 0.20 * height_ &&
+                            std::isfinite(prof[i].perimeter) &&
+                            (!narrow || prof[i].perimeter < prof[*narrow].perimeter)) {
+                            narrow = i;
+                        }
+                    }
+                    if (narrow) {
+                        e = *narrow;
+                    }
                 }
             }
             const LimbSample& es = prof[e];
@@ -1237,11 +1325,26 @@ private:
             set_found(ankle, as.outer, &as.centre);
             // Calf: the first local maximum above the ankle; knee: the first local minimum above
             // the calf (extrema over a window of 2% of the height each way).
-            const auto c = local_extremum(prof, static_cast<std::size_t>(a), true);
-            const auto k = c ? local_extremum(prof, *c, false) : std::nullopt;
+            auto c = local_extremum(prof, static_cast<std::size_t>(a), true);
+            auto k = c ? local_extremum(prof, *c, false) : std::nullopt;
             if (!k || prof[*k].t > *crotch_y_ - 0.05 * height_) {
-                set_missing(knee, "no narrowing of the leg between the calf and the thigh");
-                continue;
+                // No narrowing of its own (a full calf running into the thigh): the narrowest
+                // section where knees are, 0.24-0.33 of the height (0.285 in Drillis & Contini
+                // 1966, in Winter 2009, Fig. 4.1).
+                k.reset();
+                for (std::size_t i = static_cast<std::size_t>(a); i < prof.size(); ++i) {
+                    if (prof[i].t >= y_of(0.24) && prof[i].t <= y_of(0.33) &&
+                        (!k || prof[i].perimeter < prof[*k].perimeter)) {
+                        k = i;
+                    }
+                }
+                if (!k) {
+                    set_missing(knee, "no narrowing of the leg between the calf and the thigh");
+                    continue;
+                }
+                if (!c || *c > *k) {
+                    c = static_cast<std::size_t>(a);
+                }
             }
             // The smallest girth is a flat minimum: its level moved by 8-9 mm between a body and
             // its retriangulated proxy (and the mid-thigh level, halfway up to the crotch, with

@@ -1,0 +1,140 @@
+#!/usr/bin/python3
+"""Runs `tapeline measure` on the MakeHuman population and the bundled bodies and writes a table:
+per body, landmarks found, missing measurements, self-check warnings, each girth against
+MakeHuman's ruler (difference in mm; MakeHuman's ruler is a vertex loop on the base mesh, a sanity
+band, not truth) and the time.
+
+usage: measure_population.py TAPELINE DATA_DIR OUT.md [--bodies dev|holdout|all] [--json OUT.json]
+  dev:     bundled bodies and mh_pop_000 ... mh_pop_029 (the part used while developing)
+  holdout: mh_pop_030 ... mh_pop_039 only
+  all:     both
+"""
+import argparse
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+# MakeHuman ruler name -> our girth name.
+RULERS = [("neck_circ", "neck_girth"), ("bust_circ", "bust_girth"),
+          ("underbust_circ", "underbust_girth"), ("waist_circ", "waist_girth"),
+          ("hips_circ", "hip_girth"), ("upperarm_circ", "upper_arm_girth"),
+          ("wrist_circ", "wrist_girth"), ("thigh_circ", "thigh_girth"),
+          ("knee_circ", "knee_girth"), ("calf_circ", "calf_girth"),
+          ("ankle_circ", "ankle_girth")]
+HOLDOUT = range(30, 40)
+
+
+def bodies(data, which):
+    out = []
+    if which in ("dev", "all"):
+        bundled = json.load(open(os.path.join(data, "measurements.json")))["bodies"]
+        for f in sorted(os.listdir(data)):
+            if not f.endswith(".obj"):
+                continue
+            name = f[:-4]
+            base = name.replace("_female_generic", "").replace("_male_generic", "")
+            ruler = bundled.get(base, {}).get("makehuman_ruler_cm", {})
+            out.append((name, os.path.join(data, f), ruler))
+    pop = json.load(open(os.path.join(data, "population", "population.json")))["bodies"]
+    for i in range(40):
+        held = i in HOLDOUT
+        if (which == "dev" and held) or (which == "holdout" and not held):
+            continue
+        name = "mh_pop_%03d" % i
+        out.append((name, os.path.join(data, "population", name + ".ply"),
+                    pop[name]["makehuman_ruler_cm"]))
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("tapeline")
+    ap.add_argument("data")
+    ap.add_argument("out")
+    ap.add_argument("--bodies", default="dev", choices=["dev", "holdout", "all"])
+    ap.add_argument("--json")
+    a = ap.parse_args()
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for name, path, ruler in bodies(a.data, a.bodies):
+            out = os.path.join(work, name + ".json")
+            t0 = time.monotonic()
+            p = subprocess.run([a.tapeline, "measure", path, "--units", "dm", "--out", out],
+                               capture_output=True, text=True)
+            wall = time.monotonic() - t0
+            row = {"body": name, "exit": p.returncode, "wall": wall}
+            if p.returncode != 0 or not os.path.exists(out):
+                row["error"] = (p.stderr.strip().splitlines() or ["?"])[-1]
+                rows.append(row)
+                continue
+            j = json.load(open(out))
+            vals = {m["name"]: m["value_mm"] for m in j["measurements"]}
+            row.update({
+                "vertices": j["report"]["vertices"],
+                "landmarks": "%d/%d" % (j["report"]["landmarks_found"], len(j["landmarks"])),
+                "landmarks_found": j["report"]["landmarks_found"],
+                "landmarks_total": len(j["landmarks"]),
+                "missing": [m["name"] for m in j["missing"]],
+                "warnings": ["%s: %s" % (w["rule"], w["message"]) for w in j.get("warnings", [])],
+                "time": j["timings_seconds"]["total"],
+                "diff": {},
+            })
+            for mh, ours in RULERS:
+                if mh in ruler and ours in vals:
+                    row["diff"][ours] = vals[ours] - 10.0 * ruler[mh]
+            rows.append(row)
+            print("%-36s %s" % (name, row.get("landmarks", row.get("error"))), file=sys.stderr)
+    if a.json:
+        json.dump(rows, open(a.json, "w"), indent=1)
+    write_table(rows, a)
+
+
+def write_table(rows, a):
+    names = [g for _, g in RULERS]
+    short = {g: g.replace("_girth", "") for g in names}
+    ok = [r for r in rows if "error" not in r]
+    full = sum(1 for r in ok if r["landmarks_found"] == r["landmarks_total"])
+    nwarn = sum(len(r["warnings"]) for r in ok)
+    times = [r["time"] for r in ok]
+    L = ["# Body measurement on a population of bodies", "",
+         "`%s` (bodies: %s). Girth columns: our value minus MakeHuman's ruler, mm (the ruler is "
+         "a fixed vertex loop on MakeHuman's base mesh: a sanity band, not truth). `time`: the "
+         "CLI's total seconds (load, landmarks, girths, lengths along the skin) on a shared, "
+         "loaded machine." % (" ".join(["benchmarks/scripts/measure_population.py",
+                                         "build/apps/tapeline", "../shared/data/bodies", "OUT.md",
+                                         "--bodies", a.bodies]), a.bodies), "",
+         "Bodies measured: %d of %d; all landmarks found on %d; self-check warnings: %d; "
+         "bodies with a missing measurement: %d; time median %.2f s, max %.2f s." % (
+             len(ok), len(rows), full, nwarn, sum(1 for r in ok if r["missing"]),
+             statistics.median(times) if times else 0, max(times) if times else 0), "",
+         "| girth | n | mean diff mm | mean abs mm | worst mm (body) |",
+         "|---|---|---|---|---|"]
+    for g in names:
+        d = [(r["diff"][g], r["body"]) for r in ok if g in r["diff"]]
+        if not d:
+            continue
+        worst = max(d, key=lambda x: abs(x[0]))
+        L.append("| %s | %d | %+.1f | %.1f | %+.1f (%s) |" % (
+            g, len(d), statistics.mean(x for x, _ in d), statistics.mean(abs(x) for x, _ in d),
+            worst[0], worst[1]))
+    L += ["", "| body | landmarks | missing | warnings | " +
+          " | ".join(short[g] for g in names) + " | time s |",
+          "|---|---|---|---|" + "---|" * len(names) + "---|"]
+    for r in rows:
+        if "error" in r:
+            L.append("| %s | refused: %s |" % (r["body"], r["error"].replace("|", "/")) +
+                     " |" * (len(names) + 3))
+            continue
+        cells = ["%+.0f" % r["diff"][g] if g in r["diff"] else "–" for g in names]
+        L.append("| %s | %s | %s | %s | %s | %.2f |" % (
+            r["body"], r["landmarks"], ", ".join(r["missing"]) or "–",
+            "; ".join(r["warnings"]).replace("|", "/") or "–", " | ".join(cells), r["time"]))
+    open(a.out, "w").write("\n".join(L) + "\n")
+
+
+if __name__ == "__main__":
+    main()

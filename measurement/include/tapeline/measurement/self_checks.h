@@ -1,0 +1,270 @@
+// Self-checks on a measured body: rules every plausible result obeys, each broken rule a warning
+// naming the measurement (or landmark) and the rule. `tapeline measure` writes them to the JSON's
+// "warnings" and exits non-zero on any with --strict.
+//
+// Landmark height bands are fractions of stature H around the means of Drillis & Contini (1966),
+// "Body segment parameters", Report 1166-03, New York University, as tabulated in D. A. Winter,
+// "Biomechanics and Motor Control of Human Movement", 4th ed. (2009), Fig. 4.1: shoulder
+// (acromion) 0.818 H, chin 0.870 H, chest (nipple) 0.720 H, hip (greater trochanter) 0.530 H,
+// knee 0.285 H, ankle 0.039 H; upper arm 0.186 H, forearm 0.146 H. Landmarks without a value
+// there (crotch, waist, buttock, armpit, side neck point) get a band between their neighbours'.
+// The bands are about ±0.05 H wide: wider than the adult spread, narrow enough to catch a bust
+// point at waist height (0.1 H lower) or a wrist mid-forearm (0.07 H short of the wrist).
+#pragma once
+
+#include <tapeline/measurement/body.h>
+#include <tapeline/measurement/internal/sections.h>
+#include <tapeline/measurement/measurement_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace tapeline::measurement {
+
+/// A landmark's accepted height (fraction of stature), see the top of this file.
+struct HeightBand {
+    const char* landmark;
+    double lo, hi;
+};
+
+inline const std::vector<HeightBand>& landmark_height_bands() {
+    static const std::vector<HeightBand> bands = {
+        {"ankle_left", 0.015, 0.09},    {"ankle_right", 0.015, 0.09},
+        {"knee_left", 0.23, 0.34},      {"knee_right", 0.23, 0.34},
+        {"crotch", 0.40, 0.53},         {"hip_back", 0.42, 0.58},
+        {"waist_front", 0.53, 0.70},    {"waist_back", 0.53, 0.70},
+        {"bust_left", 0.64, 0.78},      {"bust_right", 0.64, 0.78},
+        {"armpit_left", 0.67, 0.80},    {"armpit_right", 0.67, 0.80},
+        {"acromion_left", 0.76, 0.87},  {"acromion_right", 0.76, 0.87},
+        {"side_neck_left", 0.78, 0.90}, {"side_neck_right", 0.78, 0.90},
+        {"cervicale", 0.78, 0.90},      {"front_neck", 0.76, 0.88},
+    };
+    return bands;
+}
+
+namespace internal {
+
+inline std::string fmt_num(const char* f, double a, double b = 0, double c = 0, double d = 0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, f, a, b, c, d);
+    return buf;
+}
+
+/// Whether the mesh mirrors itself across the plane x = x_mid: every vertex's mirror image has
+/// a vertex within `tolerance` (nearest neighbour on a uniform grid of that cell size), for all
+/// but 1% of the vertices.
+inline bool mirror_symmetric(const BodyMesh& m, double x_mid, double tolerance) {
+    auto key = [tolerance](const Vec3& p) {
+        const auto c = [tolerance](double v) {
+            return static_cast<std::int64_t>(std::floor(v / tolerance)) & 0x1fffff;
+        };
+        return (c(p[0]) << 42) | (c(p[1]) << 21) | c(p[2]);
+    };
+    std::unordered_multimap<std::int64_t, std::uint32_t> grid;
+    grid.reserve(m.points.size());
+    for (std::uint32_t v = 0; v < m.points.size(); ++v) {
+        grid.emplace(key(m.points[v]), v);
+    }
+    std::size_t far = 0;
+    for (const auto& p : m.points) {
+        const Vec3 q{2 * x_mid - p[0], p[1], p[2]};
+        bool near = false;
+        for (int dx = -1; dx <= 1 && !near; ++dx) {
+            for (int dy = -1; dy <= 1 && !near; ++dy) {
+                for (int dz = -1; dz <= 1 && !near; ++dz) {
+                    const Vec3 c{q[0] + dx * tolerance, q[1] + dy * tolerance,
+                                 q[2] + dz * tolerance};
+                    const auto range = grid.equal_range(key(c));
+                    for (auto it = range.first; it != range.second && !near; ++it) {
+                        near = dist(m.points[it->second], q) <= tolerance;
+                    }
+                }
+            }
+        }
+        far += near ? 0 : 1;
+    }
+    return far <= m.points.size() / 100;
+}
+
+/// Whether the 2D point (in the girth plane) lies inside the closed loop `pts`.
+inline bool loop_contains(const std::vector<Vec3>& pts, const Vec3& plane_point,
+                          const Vec3& normal, const Vec3& p) {
+    const Plane plane = Plane::make(plane_point, normal, {1, 0, 0});
+    const Vec2 q = plane.to2(p);
+    bool in = false;
+    for (std::size_t i = 0, j = pts.size() - 1; i < pts.size(); j = i++) {
+        const Vec2 a = plane.to2(pts[j]), b = plane.to2(pts[i]);
+        if ((a[1] > q[1]) != (b[1] > q[1]) &&
+            q[0] < a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1])) {
+            in = !in;
+        }
+    }
+    return in;
+}
+
+}  // namespace internal
+
+/// Every self-check rule on a measured body (landmarks and girths in the canonical frame).
+inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet& landmarks,
+                                            const MeasurementSet& set) {
+    using internal::fmt_num;
+    std::vector<CheckWarning> out;
+    const double h = body.frame.height;
+    double lo = body.mesh.points.front()[0], hi = lo;
+    for (const auto& p : body.mesh.points) {
+        lo = std::min(lo, p[0]);
+        hi = std::max(hi, p[0]);
+    }
+    const auto crotch = landmarks.point("crotch");
+    const double x_mid = crotch ? (*crotch)[0] : 0.5 * (lo + hi);
+
+    // Left and right agree on a body whose halves mirror each other (within 0.3% of the height:
+    // 5 mm on a 1.7 m body, the size of a scan's noise).
+    if (internal::mirror_symmetric(body.mesh, 0.5 * (lo + hi), 0.003 * h)) {
+        for (const auto& m : set.measurements) {
+            const std::string suffix = "_left";
+            if (m.name.size() <= suffix.size() ||
+                m.name.compare(m.name.size() - suffix.size(), suffix.size(), suffix) != 0) {
+                continue;
+            }
+            const std::string right = m.name.substr(0, m.name.size() - suffix.size()) + "_right";
+            const auto r = set.value(right);
+            if (r && std::abs(m.value - *r) > 0.05 * std::max(m.value, *r)) {
+                out.push_back({m.name, "left_right",
+                               m.name + fmt_num(" %.1f and ", m.value) + right +
+                                   fmt_num(" %.1f differ by more than 5%% on a mirror-symmetric "
+                                           "body",
+                                           *r)});
+            }
+        }
+        for (const auto& l : landmarks.landmarks) {
+            const std::string suffix = "_left";
+            if (l.name.size() <= suffix.size() || !l.available() ||
+                l.name.compare(l.name.size() - suffix.size(), suffix.size(), suffix) != 0) {
+                continue;
+            }
+            const std::string right = l.name.substr(0, l.name.size() - suffix.size()) + "_right";
+            const auto r = landmarks.point(right);
+            if (r && std::abs(l.point[1] - (*r)[1]) > 0.02 * h) {
+                out.push_back({l.name, "left_right",
+                               l.name + fmt_num(" at %.0f mm and ", l.point[1]) + right +
+                                   fmt_num(" at %.0f mm height differ by more than 2%% of the "
+                                           "stature on a mirror-symmetric body",
+                                           (*r)[1])});
+            }
+        }
+    }
+    const auto bust = set.value("bust_girth"), under = set.value("underbust_girth");
+    if (bust && under && *bust < *under) {
+        out.push_back({"bust_girth", "bust_underbust",
+                       fmt_num("bust_girth %.1f mm is smaller than underbust_girth %.1f mm", *bust,
+                               *under)});
+    }
+    for (const char* side : {"", "_left", "_right"}) {
+        const auto w = set.value(std::string("wrist_girth") + side);
+        const auto e = set.value(std::string("elbow_girth") + side);
+        if (w && e && *w > *e) {
+            out.push_back({std::string("wrist_girth") + side, "wrist_elbow",
+                           "wrist_girth" + std::string(side) +
+                               fmt_num(" %.1f mm is larger than ", *w) + "elbow_girth" + side +
+                               fmt_num(" %.1f mm", *e)});
+        }
+    }
+    for (const auto& b : landmark_height_bands()) {
+        const auto p = landmarks.point(b.landmark);
+        if (p && ((*p)[1] < b.lo * h || (*p)[1] > b.hi * h)) {
+            out.push_back({b.landmark, "landmark_height",
+                           std::string(b.landmark) +
+                               fmt_num(" at %.3f of the stature, outside %.2f-%.2f (Drillis & "
+                                       "Contini 1966)",
+                                       (*p)[1] / h, b.lo, b.hi)});
+        }
+    }
+    for (const char* side : {"left", "right"}) {
+        const auto ac = landmarks.point(std::string("acromion_") + side);
+        const auto el = landmarks.find(std::string("elbow_") + side);
+        const auto wr = landmarks.find(std::string("wrist_") + side);
+        if (ac && el && el->available()) {
+            const double f = internal::dist(*ac, el->axis_point) / h;
+            if (f < 0.12 || f > 0.25) {
+                out.push_back({el->name, "segment_length",
+                               std::string("acromion_") + side + " to " + el->name +
+                                   fmt_num(" is %.3f of the stature, outside 0.12-0.25 (upper arm "
+                                           "0.186, Drillis & Contini 1966)",
+                                           f)});
+            }
+        }
+        if (el && wr && el->available() && wr->available()) {
+            const double f = internal::dist(el->axis_point, wr->axis_point) / h;
+            if (f < 0.10 || f > 0.20) {
+                out.push_back({wr->name, "segment_length",
+                               el->name + " to " + wr->name +
+                                   fmt_num(" is %.3f of the stature, outside 0.10-0.20 (forearm "
+                                           "0.146, Drillis & Contini 1966)",
+                                           f)});
+            }
+        }
+    }
+    // A girth's loop goes around the part it names: a torso girth around the body's midline, a
+    // limb girth around its landmark's axis point and not around the midline.
+    static const char* torso[] = {"bust_girth",     "high_bust_girth", "underbust_girth",
+                                  "waist_girth",    "high_hip_girth",  "hip_girth",
+                                  "neck_base_girth"};
+    for (const auto& m : set.measurements) {
+        if (m.kind != MeasurementKind::girth || m.points.size() < 3) {
+            continue;
+        }
+        Vec3 c{0, 0, 0};
+        for (const auto& p : m.points) {
+            c = internal::add(c, p);
+        }
+        c = internal::mul(c, 1.0 / static_cast<double>(m.points.size()));
+        // The midline point in the girth's plane at the loop centre's height and depth.
+        Vec3 mid{x_mid, c[1], c[2]};
+        const double off = internal::dot(internal::sub(mid, m.plane_point), m.plane_normal);
+        mid = internal::sub(mid, internal::mul(m.plane_normal, off));
+        const bool around_mid = internal::loop_contains(m.points, m.plane_point, m.plane_normal,
+                                                        mid);
+        const bool is_torso =
+            std::find_if(std::begin(torso), std::end(torso),
+                         [&m](const char* t) { return m.name == t; }) != std::end(torso);
+        if (is_torso && !around_mid) {
+            out.push_back({m.name, "loop_around_part",
+                           m.name + " loop does not go around the body's midline"});
+            continue;
+        }
+        for (const auto& name : m.landmarks) {
+            const Landmark* l = landmarks.find(name);
+            const bool limb = name.rfind("elbow_", 0) == 0 || name.rfind("wrist_", 0) == 0 ||
+                              name.rfind("knee_", 0) == 0 || name.rfind("ankle_", 0) == 0;
+            if (is_torso || !limb || !l || !l->available()) {
+                continue;
+            }
+            const std::string stem = name.substr(0, name.find('_'));
+            if (m.name.rfind(stem + "_girth", 0) == 0) {
+                const double d =
+                    internal::dot(internal::sub(l->axis_point, m.plane_point), m.plane_normal);
+                const Vec3 a = internal::sub(l->axis_point, internal::mul(m.plane_normal, d));
+                if (!internal::loop_contains(m.points, m.plane_point, m.plane_normal, a)) {
+                    out.push_back({m.name, "loop_around_part",
+                                   m.name + " loop does not go around the " + name +
+                                       " limb section's centre"});
+                    break;
+                }
+            }
+            if (around_mid) {
+                out.push_back({m.name, "loop_around_part",
+                               m.name + " loop goes around the body's midline, not the limb"});
+                break;
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace tapeline::measurement

@@ -1,0 +1,184 @@
+// What is not one upright human body is refused with one line saying what looks wrong and what
+// to try; a plausible body passes every self-check, and a landmark put in the wrong place breaks
+// the rule that names it.
+#include <tapeline/core/errors.h>
+#include <tapeline_test/expect.h>
+#include <tapeline_test/measurement.h>
+#include <tapeline_test/measurement_checks.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+using namespace tapeline_test::measurement;
+using tapeline::InvalidInput;
+using tapeline_test::expect_error;
+
+const std::string kPopulation = std::string(TAPELINE_SHARED_DATA_DIR) + "/bodies/population/";
+const std::string kBundled = std::string(TAPELINE_DATA_DIR) + "/bodies/mh_female_average.obj";
+
+bool have_population() {
+    return std::ifstream(kPopulation + "mh_pop_000.ply").good();
+}
+
+BodyOptions decimetres(const std::string& name) {
+    BodyOptions o;
+    o.unit = LengthUnit::dm;
+    o.name = name;
+    return o;
+}
+
+TEST(BodyChecks, DecimetreBodyMeasuredInMetresIsRefusedNamingUnits) {
+    const Soup s = read_body_soup(kBundled);
+    BodyOptions o = decimetres("body.obj");
+    o.unit = LengthUnit::m;
+    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
+                               {"body.obj", "stature 16", "not a human height", "--units"},
+                               "metres");
+    o.unit = LengthUnit::cm;
+    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
+                               {"body.obj", "stature 0.16", "--units"}, "centimetres");
+}
+
+TEST(BodyChecks, TwoBodiesSideBySideAreRefused) {
+    Soup s = read_body_soup(kBundled);
+    const std::size_t n = s.points.size(), nt = s.triangles.size();
+    for (std::size_t v = 0; v < n; ++v) {
+        s.points.push_back({s.points[v][0] + 12.0, s.points[v][1], s.points[v][2]});
+    }
+    for (std::size_t f = 0; f < nt; ++f) {
+        const auto& t = s.triangles[f];
+        s.triangles.push_back({static_cast<std::uint32_t>(t[0] + n),
+                               static_cast<std::uint32_t>(t[1] + n),
+                               static_cast<std::uint32_t>(t[2] + n)});
+    }
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(s.points, s.triangles, decimetres("two.obj")); },
+        {"two.obj", "not one body", "2 separate parts", "one body per file"}, "two bodies");
+}
+
+TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
+    Soup s = read_body_soup(kBundled);
+    for (auto& p : s.points) {
+        p = {-p[1], p[0], p[2]};  // a quarter turn about z: the body's up is now -X
+    }
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(s.points, s.triangles, decimetres("side.obj")); },
+        {"side.obj", "not upright", "tall along the up axis +Y", "--up"}, "on its side");
+    BodyOptions o = decimetres("side.obj");
+    o.up = Axis::parse("-X", "--up");
+    const Result r = measure_mesh(s.points, s.triangles, o);
+    EXPECT_EQ(r.landmarks.available_count(), r.landmarks.landmarks.size());
+}
+
+TEST(BodyChecks, UpsideDownBodyIsRefusedNamingUp) {
+    Soup s = read_body_soup(kBundled);
+    for (auto& p : s.points) {
+        p = {-p[0], -p[1], p[2]};  // half a turn about the front axis
+    }
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(s.points, s.triangles, decimetres("flip.obj")); },
+        {"flip.obj", "upside down", "--up"}, "upside down");
+}
+
+TEST(BodyChecks, EllipsoidIsNotABody) {
+    const Soup s = ellipsoid({0, 0.85, 0}, {0.22, 0.85, 0.15});
+    BodyOptions o;
+    o.unit = LengthUnit::m;
+    o.name = "egg.obj";
+    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
+                               {"egg.obj", "does not look like a body", "no legs"}, "ellipsoid");
+}
+
+TEST(BodyChecks, ArmadilloIsNotABody) {
+    const std::string path = std::string(TAPELINE_SHARED_DATA_DIR) + "/meshes/armadillo.obj";
+    if (!std::ifstream(path).good()) {
+        GTEST_SKIP() << "no " << path;
+    }
+    const Soup s = read_body_soup(path);
+    BodyOptions o;
+    o.unit = LengthUnit::m;  // 1.0 units tall
+    o.name = "armadillo.obj";
+    // Whichever check catches it first, the message names the mesh and says what to try.
+    try {
+        measure_mesh(s.points, s.triangles, o);
+        ADD_FAILURE() << "the armadillo was measured";
+    } catch (const InvalidInput& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("armadillo.obj: "), std::string::npos) << what;
+        EXPECT_TRUE(what.find("does not look like a body") != std::string::npos ||
+                    what.find("implausible proportions") != std::string::npos ||
+                    what.find("not upright") != std::string::npos ||
+                    what.find("upside down") != std::string::npos)
+            << what;
+        EXPECT_NE(what.find("--"), std::string::npos) << what;
+    }
+}
+
+TEST(SelfChecks, PlausibleBodyHasNoWarnings) {
+    BodyOptions o = decimetres("mh_female_average.obj");
+    const Result r = measure_file(kBundled, o);
+    for (const auto& w : r.warnings) {
+        ADD_FAILURE() << w.rule << ": " << w.message;
+    }
+}
+
+std::string write_overrides(const std::string& name, const std::string& landmarks) {
+    const std::string path = ::testing::TempDir() + name;
+    std::ofstream(path) << "{\"frame\": \"canonical\", \"landmarks\": {" << landmarks << "}}";
+    return path;
+}
+
+std::string point_json(const Vec3& p) {
+    char b[96];
+    std::snprintf(b, sizeof b, "[%.3f, %.3f, %.3f]", p[0], p[1], p[2]);
+    return b;
+}
+
+bool has_warning(const Result& r, const std::string& measurement, const std::string& rule) {
+    for (const auto& w : r.warnings) {
+        if (w.measurement == measurement && w.rule == rule &&
+            w.message.find(measurement) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+TEST(SelfChecks, WristMidForearmBreaksSymmetryAndForearmLength) {
+    const BodyOptions o = decimetres("mh_female_average.obj");
+    const Result base = measure_file(kBundled, o);
+    const Landmark* elbow = base.landmarks.find("elbow_right");
+    const Landmark* wrist = base.landmarks.find("wrist_right");
+    ASSERT_TRUE(elbow->available() && wrist->available());
+    const Vec3 mid{0.5 * (elbow->point[0] + wrist->point[0]),
+                   0.5 * (elbow->point[1] + wrist->point[1]),
+                   0.5 * (elbow->point[2] + wrist->point[2])};
+    const Result r = measure_file(kBundled, o,
+                                  write_overrides("wrist.json", "\"wrist_right\": " +
+                                                                    point_json(mid)));
+    EXPECT_TRUE(has_warning(r, "wrist_left", "left_right"));
+    EXPECT_TRUE(has_warning(r, "wrist_right", "segment_length"));
+}
+
+TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
+    const BodyOptions o = decimetres("mh_female_average.obj");
+    const Result base = measure_file(kBundled, o);
+    const auto waist = base.landmarks.point("waist_front");
+    const auto bl = base.landmarks.point("bust_left");
+    const auto br = base.landmarks.point("bust_right");
+    ASSERT_TRUE(waist && bl && br);
+    const Vec3 l{(*bl)[0], (*waist)[1], (*waist)[2]}, rr{(*br)[0], (*waist)[1], (*waist)[2]};
+    const Result r = measure_file(
+        kBundled, o,
+        write_overrides("bust.json",
+                        "\"bust_left\": " + point_json(l) + ", \"bust_right\": " + point_json(rr)));
+    EXPECT_TRUE(has_warning(r, "bust_left", "landmark_height"));
+    EXPECT_TRUE(has_warning(r, "bust_right", "landmark_height"));
+}
+
+}  // namespace
