@@ -8,8 +8,6 @@
 #include <tapeline/draw/png.h>
 #include <tapeline/grading/grade.h>
 #include <tapeline/grading/grading_json.h>
-#include <tapeline/pattern/internal/bitmap_font.h>
-#include <tapeline/pattern/png.h>
 
 #include <nlohmann/json.hpp>
 
