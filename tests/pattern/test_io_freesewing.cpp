@@ -29,7 +29,7 @@ std::vector<std::string> pattern_files() {
     return out;
 }
 
-std::string bundled() {
+std::string bundled_freesewing() {
     return std::string(TAPELINE_DATA_DIR) + "/patterns/aaron_cisFemaleAdult36.json";
 }
 
@@ -174,10 +174,10 @@ TEST(PatternFreeSewing, PiecesWithoutSeamPathAreSkippedAndNoted) {
 // The bundled copy (always present): every piece's outline is as long as the seam path
 // FreeSewing measured (length_mm, rounded to 0.001 mm; 0.01 mm as for the shared drafts).
 TEST(PatternFreeSewing, BundledCopyImports) {
-    const Pattern p = read_freesewing(bundled());
+    const Pattern p = read_freesewing(bundled_freesewing());
     EXPECT_EQ(p.pieces.size(), 4u);
     EXPECT_TRUE(validate(p).ok());
-    const nlohmann::json doc = nlohmann::json::parse(tapeline_test::slurp(bundled()));
+    const nlohmann::json doc = nlohmann::json::parse(tapeline_test::slurp(bundled_freesewing()));
     std::size_t checked = 0;
     for (const auto& jp : doc["pieces"]) {
         const std::string name = jp["name"];
@@ -193,7 +193,7 @@ TEST(PatternFreeSewing, BundledCopyImports) {
 TEST(PatternFreeSewing, MalformedInputIsRejectedWithItsLocation) {
     // Truncated file.
     tapeline_test::TempDir dir;
-    const std::string text = tapeline_test::slurp(bundled());
+    const std::string text = tapeline_test::slurp(bundled_freesewing());
     const std::string cut = dir.file("truncated.json");
     tapeline_test::write_text(cut, text.substr(0, text.size() / 2));
     try {

@@ -21,7 +21,7 @@ std::vector<std::string> garmentcode_files() {
     return tapeline_test::files_ending(shared_patterns_dir() + "/garmentcode", ".json");
 }
 
-std::string bundled() {
+std::string bundled_garmentcode() {
     return std::string(TAPELINE_DATA_DIR) + "/patterns/shirt_mean_specification.json";
 }
 
@@ -140,7 +140,7 @@ TEST(PatternGarmentCode, StitchedEdgesHaveMatchingLengths) {
 }
 
 TEST(PatternGarmentCode, ControlPointsBendNecklinesIntoTheBodice) {
-    const Pattern p = read_garmentcode(bundled());
+    const Pattern p = read_garmentcode(bundled_garmentcode());
     // Front torso, edge 5: the quadratic neckline from the shoulder to the centre front.
     const Piece* front = find_piece(p, "left_ftorso");
     ASSERT_TRUE(front);
@@ -181,7 +181,7 @@ TEST(PatternGarmentCode, ArcsAndSeamDirections) {
 TEST(PatternGarmentCode, SideSeamsRunInOppositeDirections) {
     // Shirt: the front's side edge 1 runs up (hem to armhole), the back's edge 5 runs down; both
     // panels face the same way in 3D, so the seam joins start to end.
-    const Pattern p = read_garmentcode(bundled());
+    const Pattern p = read_garmentcode(bundled_garmentcode());
     const auto it = std::find_if(p.seams.begin(), p.seams.end(), [](const Seam& s) {
         return s.a.piece == "left_ftorso" && s.a.first_edge == 1;
     });
@@ -203,7 +203,7 @@ TEST(PatternGarmentCode, SideSeamsRunInOppositeDirections) {
 }
 
 TEST(PatternGarmentCode, MalformedSpecificationsAreRejected) {
-    const nlohmann::json good = nlohmann::json::parse(tapeline_test::slurp(bundled()));
+    const nlohmann::json good = nlohmann::json::parse(tapeline_test::slurp(bundled_garmentcode()));
     EXPECT_NO_THROW(garmentcode_from_json(good, "gc.json"));
 
     nlohmann::json d = good;
@@ -232,7 +232,7 @@ TEST(PatternGarmentCode, MalformedSpecificationsAreRejected) {
     expect_invalid(d, {"curvature_coords", "'absolute'"});
 
     tapeline_test::TempDir dir;
-    const std::string text = tapeline_test::slurp(bundled());
+    const std::string text = tapeline_test::slurp(bundled_garmentcode());
     const std::string cut = dir.file("cut_specification.json");
     tapeline_test::write_text(cut, text.substr(0, 1000));
     try {
