@@ -29,6 +29,21 @@ namespace tapeline::geodesic {
 
 /// Dijkstra distances on the edge graph from a source set into `distances` (+infinity when
 /// unreachable). report.query_seconds is the whole run; there is no pre-computation.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+///         value double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+/// \throws InvalidInput also when `sources` is empty or holds a vertex or face location that
+///         is not on the mesh.
+/// \throws SolverFailure when a distance is NaN; `distances` is left untouched then.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 DistanceReport dijkstra_distances(const TriangleMesh& tm, const SourceSet<TriangleMesh>& sources,
@@ -117,6 +132,7 @@ DistanceReport dijkstra_distances(const TriangleMesh& tm, const SourceSet<Triang
     return report;
 }
 
+/// Dijkstra distances from one vertex; as the source-set overload.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 DistanceReport dijkstra_distances(

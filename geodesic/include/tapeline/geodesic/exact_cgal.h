@@ -37,6 +37,14 @@ namespace tapeline::geodesic {
 
 /// Exact distances from one source set; the sequence tree is built once in the constructor and
 /// then answers distance and path queries to any vertex or face location.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `HalfedgeListGraph`, `VertexListGraph`
+///         and `EdgeListGraph` (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a
+///         triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map`, `halfedge_index_map` and `face_index_map`
+///         (`ReadablePropertyMap`s onto [0, n)), `geom_traits` (a CGAL kernel).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class ExactCgalSolver {
     using P = internal::MeshParameters<TriangleMesh, NamedParameters>;
@@ -51,11 +59,22 @@ class ExactCgalSolver {
         internal::MeshIndex<TriangleMesh, typename P::VertexIndexMap, typename P::FaceIndexMap>;
 
 public:
-    using vertex_descriptor = typename GT::vertex_descriptor;
-    using face_descriptor = typename GT::face_descriptor;
-    using Point_3 = typename Kernel::Point_3;
-    using Path = GeodesicPath<Point_3>;
+    using vertex_descriptor = typename GT::vertex_descriptor;  ///< a vertex of the mesh
+    using face_descriptor = typename GT::face_descriptor;      ///< a face of the mesh
+    using Point_3 = typename Kernel::Point_3;                  ///< point type of the kernel
+    using Path = GeodesicPath<Point_3>;                        ///< a polyline and its length
 
+    /// Checks the mesh and the sources, then builds the sequence tree.
+    ///
+    /// \param tm the mesh; it must outlive the solver and stay unchanged.
+    /// \param sources vertices and face locations of `tm`.
+    /// \param np the named parameters listed with the class.
+    /// \throws TopologyError when a face is not a triangle.
+    /// \throws InvalidInput on a non-finite coordinate or a vertex, halfedge or face index map
+    ///         that is not a bijection onto [0, n) (a Surface_mesh with removed elements needs
+    ///         collect_garbage()).
+    /// \throws InvalidInput also when `sources` is empty or holds a vertex or face location
+    ///         that is not on the mesh.
     ExactCgalSolver(const TriangleMesh& tm, const SourceSet<TriangleMesh>& sources,
                     const ExactCgalOptions& options = {},
                     const NamedParameters& np = CGAL::parameters::default_values())
@@ -118,6 +137,7 @@ public:
         report_.seconds = report_.prepare_seconds + report_.query_seconds;
     }
 
+    /// Single-vertex source; throws as the source-set constructor.
     ExactCgalSolver(const TriangleMesh& tm, vertex_descriptor source,
                     const ExactCgalOptions& options = {},
                     const NamedParameters& np = CGAL::parameters::default_values())
@@ -125,6 +145,10 @@ public:
 
     /// Writes the exact distance of every vertex (+infinity when unreachable) into `distances`.
     /// report().query_seconds = sequence tree + this reading.
+    ///
+    /// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+    ///         value double.
+    /// \throws SolverFailure when a distance is NaN; `distances` is left untouched then.
     template <class VertexDistanceMap>
     DistanceReport distances(VertexDistanceMap distances) {
         const auto t0 = internal::Clock::now();
@@ -138,6 +162,8 @@ public:
     }
 
     /// Exact distance from the source set to a vertex or face location (+infinity if unreachable).
+    ///
+    /// \throws InvalidInput when `target` is not a vertex or face location of the mesh.
     double distance_to(const SurfacePoint<TriangleMesh>& target) const {
         const auto t = resolve(target);
         if (t.vertex != GT::null_vertex())
@@ -151,6 +177,8 @@ public:
 
     /// Shortest path from the nearest source to `target`, as a polyline from the source point to
     /// the target; length is the polyline length. Unreachable: no points, length +infinity.
+    ///
+    /// \throws InvalidInput when `target` is not a vertex or face location of the mesh.
     Path path_to(const SurfacePoint<TriangleMesh>& target) const {
         const auto t = resolve(target);
         Path path;
@@ -185,7 +213,9 @@ public:
         return path;
     }
 
+    /// Sizes, unreachable count and timings.
     const DistanceReport& report() const { return report_; }
+    /// The options the solver runs with.
     const ExactCgalOptions& options() const { return options_; }
 
 private:
@@ -264,6 +294,23 @@ private:
 };
 
 /// One-shot exact distances from a source set into `distances` (+infinity when unreachable).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `HalfedgeListGraph`, `VertexListGraph`
+///         and `EdgeListGraph` (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a
+///         triangle.
+/// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+///         value double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map`, `halfedge_index_map` and `face_index_map`
+///         (`ReadablePropertyMap`s onto [0, n)), `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or a vertex, halfedge or face index map
+///         that is not a bijection onto [0, n) (a Surface_mesh with removed elements needs
+///         collect_garbage()).
+/// \throws InvalidInput also when `sources` is empty or holds a vertex or face location
+///         that is not on the mesh.
+/// \throws SolverFailure when a distance is NaN; `distances` is left untouched then.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 DistanceReport exact_cgal_distances(
@@ -274,7 +321,7 @@ DistanceReport exact_cgal_distances(
     return solver.distances(distances);
 }
 
-/// One-shot exact distances from one vertex.
+/// One-shot exact distances from one vertex; as the source-set overload.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 DistanceReport exact_cgal_distances(
@@ -285,7 +332,20 @@ DistanceReport exact_cgal_distances(
 }
 
 /// Exact shortest path between two surface points (vertices or face locations), as a polyline
-/// from `from` to `to`.
+/// from `from` to `to` (no points and length +infinity when `to` is unreachable).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `HalfedgeListGraph`, `VertexListGraph`
+///         and `EdgeListGraph` (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a
+///         triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map`, `halfedge_index_map` and `face_index_map`
+///         (`ReadablePropertyMap`s onto [0, n)), `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or a vertex, halfedge or face index map
+///         that is not a bijection onto [0, n) (a Surface_mesh with removed elements needs
+///         collect_garbage()).
+/// \throws InvalidInput also when `from` or `to` is not a vertex or face location of the mesh.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 typename ExactCgalSolver<TriangleMesh, NamedParameters>::Path exact_cgal_path(
     const TriangleMesh& tm, const SurfacePoint<TriangleMesh>& from,

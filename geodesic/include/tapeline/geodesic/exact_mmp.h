@@ -165,6 +165,13 @@ std::unique_ptr<mmp::Engine> run_mmp(const Prepared& prep,
 
 /// Exact distances from one source set. The windows are kept after the propagation, so that
 /// distance_to() answers for any face location and path_to() back-traces shortest paths.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class ExactMmpSolver {
     using Prepared = internal::MmpPrepared<TriangleMesh, NamedParameters>;
@@ -172,11 +179,23 @@ class ExactMmpSolver {
     using Kernel = typename Prepared::P::GeomTraits;
 
 public:
-    using vertex_descriptor = typename GT::vertex_descriptor;
-    using face_descriptor = typename GT::face_descriptor;
-    using Point_3 = typename Kernel::Point_3;
-    using Path = GeodesicPath<Point_3>;
+    using vertex_descriptor = typename GT::vertex_descriptor;  ///< a vertex of the mesh
+    using face_descriptor = typename GT::face_descriptor;      ///< a face of the mesh
+    using Point_3 = typename Kernel::Point_3;                  ///< point type of the kernel
+    using Path = GeodesicPath<Point_3>;                        ///< a polyline and its length
 
+    /// Checks the mesh and the sources, then runs the propagation from `sources`.
+    ///
+    /// \param tm the mesh; it must outlive the solver and stay unchanged.
+    /// \param sources vertices and face locations of `tm`.
+    /// \param options stop distance, targets, pruning and the window cap.
+    /// \param np the named parameters listed with the class.
+    /// \throws TopologyError when a face is not a triangle.
+    /// \throws InvalidInput on a non-finite coordinate, an index map that is not a bijection
+    ///         onto [0, n) (a Surface_mesh with removed elements), a mesh beyond 32-bit
+    ///         indices, an empty source set, a source that is not on the mesh, a negative
+    ///         `options.max_distance` or an out-of-range `options.target_vertices` entry.
+    /// \throws SolverFailure when the propagation exceeds `options.max_propagated_windows`.
     ExactMmpSolver(const TriangleMesh& tm, const SourceSet<TriangleMesh>& sources,
                    const ExactMmpOptions& options = {},
                    const NamedParameters& np = CGAL::parameters::default_values())
@@ -184,13 +203,18 @@ public:
         init(sources);
     }
 
+    /// Single-vertex source; throws as the source-set constructor.
     ExactMmpSolver(const TriangleMesh& tm, vertex_descriptor source,
                    const ExactMmpOptions& options = {},
                    const NamedParameters& np = CGAL::parameters::default_values())
         : ExactMmpSolver(tm, SourceSet<TriangleMesh>(source), options, np) {}
 
     /// Writes the exact distance of every vertex into `distances` (+infinity when unreachable or
-    /// beyond the stop distance of the options).
+    /// beyond the stop distance of the options); returns the report with the unreachable count.
+    ///
+    /// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+    ///         value double.
+    /// \throws SolverFailure when a distance is NaN (nothing is written then).
     template <class VertexDistanceMap>
     ExactMmpReport distances(VertexDistanceMap distances) const {
         const auto t0 = internal::Clock::now();
@@ -207,6 +231,10 @@ public:
 
     /// Exact distance from the source set to a vertex or a face location (+infinity if
     /// unreachable or beyond the stop distance).
+    ///
+    /// \throws InvalidInput when `target` is not a vertex or face location of the mesh.
+    /// \throws SolverFailure when the propagation that keeps the windows (run once here without
+    ///         `options.keep_windows`) exceeds the window cap.
     double distance_to(const SurfacePoint<TriangleMesh>& target) const {
         const auto t = prep_->checked(target, "target");
         if (t.vertex != internal::mmp::kNone)
@@ -217,6 +245,8 @@ public:
     /// Shortest path from the nearest source to `target`: a polyline from the source point to
     /// the target, straight inside every face it crosses (a valid unfolding). Unreachable: no
     /// points, length +infinity.
+    ///
+    /// \throws InvalidInput and SolverFailure as distance_to().
     Path path_to(const SurfacePoint<TriangleMesh>& target) const {
         const auto t = prep_->checked(target, "target");
         const auto trace = query_engine().trace(t.face, t.bary, t.vertex);
@@ -235,7 +265,9 @@ public:
         return path;
     }
 
+    /// Sizes, window counts, timings and status of the propagation.
     const ExactMmpReport& report() const { return report_; }
+    /// The options the solver runs with.
     const ExactMmpOptions& options() const { return options_; }
 
 private:
@@ -305,6 +337,23 @@ private:
 };
 
 /// One-shot exact distances from a source set into `distances` (+infinity when unreachable).
+/// The windows are dropped as the propagation goes, so the peak memory is lower than with
+/// ExactMmpSolver.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+///         value double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate, an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements), a mesh beyond 32-bit
+///         indices, an empty source set, a source that is not on the mesh, a negative
+///         `options.max_distance` or an out-of-range `options.target_vertices` entry.
+/// \throws SolverFailure when the propagation exceeds `options.max_propagated_windows`.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 ExactMmpReport exact_mmp_distances(const TriangleMesh& tm, const SourceSet<TriangleMesh>& sources,
@@ -316,7 +365,8 @@ ExactMmpReport exact_mmp_distances(const TriangleMesh& tm, const SourceSet<Trian
     return solver.distances(distances);
 }
 
-/// One-shot exact distances from one vertex.
+/// One-shot exact distances from one vertex; template parameters and exceptions as the
+/// source-set overload.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 ExactMmpReport exact_mmp_distances(
@@ -326,7 +376,22 @@ ExactMmpReport exact_mmp_distances(
     return exact_mmp_distances(tm, SourceSet<TriangleMesh>(source), distances, options, np);
 }
 
-/// Exact shortest path between two surface points, as a polyline from `from` to `to`.
+/// Exact shortest path between two surface points, as a polyline from `from` to `to` (no points
+/// and length +infinity when `to` is unreachable).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate, an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements), a mesh beyond 32-bit
+///         indices, an empty source set, a source that is not on the mesh, a negative
+///         `options.max_distance` or an out-of-range `options.target_vertices` entry.
+/// \throws SolverFailure when the propagation exceeds `options.max_propagated_windows`.
+/// \throws InvalidInput also when `to` is not a vertex or face location of the mesh.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 typename ExactMmpSolver<TriangleMesh, NamedParameters>::Path exact_mmp_path(
     const TriangleMesh& tm, const SurfacePoint<TriangleMesh>& from,
@@ -342,6 +407,21 @@ typename ExactMmpSolver<TriangleMesh, NamedParameters>::Path exact_mmp_path(
 /// propagation per task on a shared read-only compact mesh: tbb::parallel_for when CGAL is linked
 /// with TBB (CGAL_LINKED_WITH_TBB, i.e. CGAL::TBB_support), std::thread otherwise.
 /// `threads` = 0 uses every hardware thread (ignored with TBB, which uses its own arena).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate, an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements), a mesh beyond 32-bit
+///         indices, a source that is not on the mesh, a negative
+///         `options.max_distance` or an out-of-range `options.target_vertices` entry.
+/// \throws SolverFailure when the propagation exceeds `options.max_propagated_windows`.
+///         Every source is checked before any propagation starts; the first failing row's
+///         exception is rethrown after the others finish.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<std::vector<double>> exact_mmp_distance_matrix(
     const TriangleMesh& tm, const std::vector<SurfacePoint<TriangleMesh>>& sources,

@@ -110,6 +110,14 @@ void HeatComponent<Kernel>::solve(const std::vector<std::size_t>& local_sources,
 
 /// Prefactored heat method: the constructor does the source-independent work (copy and Cholesky
 /// factorisations, report().prepare_seconds); each distances() call does the solves.
+/// Each connected component gets its own factorisation.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class HeatDistanceSolver {
     using P = internal::MeshParameters<TriangleMesh, NamedParameters>;
@@ -121,8 +129,21 @@ class HeatDistanceSolver {
     static constexpr std::size_t npos = std::numeric_limits<std::size_t>::max();
 
 public:
-    using vertex_descriptor = typename GT::vertex_descriptor;
+    using vertex_descriptor = typename GT::vertex_descriptor;  ///< a vertex of the mesh
 
+    /// Checks the mesh, copies each component and factorises its operators.
+    ///
+    /// \param tm the mesh; it must outlive the solver and stay unchanged.
+    /// \param options intrinsic Delaunay, time step, multi-source mode, degenerate-face check.
+    /// \param np the named parameters listed with the class.
+    /// \throws TopologyError when a face is not a triangle.
+    /// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+    ///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+    /// \throws InvalidInput also on a degenerate face when `options.intrinsic_delaunay` or
+    ///         `options.reject_degenerate_faces` is set.
+    /// \throws TopologyError also when a face cannot be copied into its component's mesh
+    ///         (non-manifold input).
+    /// \throws SolverFailure when CGAL's Heat_method_3 fails to factorise.
     explicit HeatDistanceSolver(const TriangleMesh& tm, const HeatOptions& options = {},
                                 const NamedParameters& np = CGAL::parameters::default_values())
         : tm_(tm),
@@ -186,6 +207,13 @@ public:
 
     /// Heat distances from vertex sources into `distances` (+infinity on components without a
     /// source). A face-location source is rejected with InvalidInput.
+    ///
+    /// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+    ///         value double.
+    /// \throws InvalidInput when `sources` is empty, holds a face location, or a vertex that is
+    ///         not on the mesh.
+    /// \throws SolverFailure when a solve fails or yields NaN (a vanishing heat gradient on a
+    ///         coarse or symmetric mesh); `distances` is left untouched then.
     template <class VertexDistanceMap>
     DistanceReport distances(const SourceSet<TriangleMesh>& sources, VertexDistanceMap distances) {
         const char* w = where(options_);
@@ -257,6 +285,7 @@ public:
         return report;
     }
 
+    /// Heat distances from one vertex; as the source-set overload.
     template <class VertexDistanceMap>
     DistanceReport distances(vertex_descriptor source, VertexDistanceMap distances) {
         return this->distances(SourceSet<TriangleMesh>(source), distances);
@@ -264,6 +293,7 @@ public:
 
     /// Sizes and pre-computation time of the factorisation.
     const DistanceReport& report() const { return report_; }
+    /// The options the solver runs with.
     const HeatOptions& options() const { return options_; }
 
 private:
@@ -300,6 +330,27 @@ private:
 };
 
 /// One-shot heat distances (factorise + one query).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+///         value double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+/// \throws InvalidInput also on a degenerate face when `options.intrinsic_delaunay` or
+///         `options.reject_degenerate_faces` is set.
+/// \throws TopologyError also when a face cannot be copied into its component's mesh
+///         (non-manifold input).
+/// \throws SolverFailure when CGAL's Heat_method_3 fails to factorise.
+/// \throws InvalidInput when `sources` is empty, holds a face location, or a vertex that is
+///         not on the mesh.
+/// \throws SolverFailure when a solve fails or yields NaN (a vanishing heat gradient on a
+///         coarse or symmetric mesh); `distances` is left untouched then.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 DistanceReport heat_distances(const TriangleMesh& tm, const SourceSet<TriangleMesh>& sources,
@@ -309,6 +360,7 @@ DistanceReport heat_distances(const TriangleMesh& tm, const SourceSet<TriangleMe
     return solver.distances(sources, distances);
 }
 
+/// One-shot heat distances from one vertex; as the source-set overload.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 DistanceReport heat_distances(const TriangleMesh& tm,

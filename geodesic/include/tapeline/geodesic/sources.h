@@ -16,6 +16,7 @@
 
 namespace tapeline::geodesic {
 
+/// A point inside a face: the face and its barycentric coordinates (PMP convention).
 template <class TriangleMesh>
 using FaceLocation = CGAL::Polygon_mesh_processing::Face_location<TriangleMesh, double>;
 
@@ -25,28 +26,39 @@ using SurfacePoint = std::variant<typename boost::graph_traits<TriangleMesh>::ve
                                   FaceLocation<TriangleMesh>>;
 
 /// The sources of a distance field: vertices and face locations (the field is the minimum of the
-/// single-source fields). Duplicates are harmless.
+/// single-source fields). Duplicates are harmless. The solvers check every source against the
+/// mesh when they start (InvalidInput on a stale descriptor or bad barycentric coordinates).
+///
+/// \tparam TriangleMesh a model of `FaceGraph`; its vertex_descriptor and face_descriptor name
+///         the sources.
 template <class TriangleMesh>
 struct SourceSet {
     using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-    using Location = FaceLocation<TriangleMesh>;
+    using Location = FaceLocation<TriangleMesh>;  ///< a face and barycentric coordinates
 
-    std::vector<vertex_descriptor> vertices;
-    std::vector<Location> locations;
+    std::vector<vertex_descriptor> vertices;  ///< vertex sources
+    std::vector<Location> locations;          ///< sources inside faces
 
+    /// An empty set (the solvers reject it: add at least one source).
     SourceSet() = default;
+    /// One vertex source.
     explicit SourceSet(vertex_descriptor v) { vertices.push_back(v); }
+    /// One face-location source.
     explicit SourceSet(const Location& l) { locations.push_back(l); }
+    /// One source, vertex or face location.
     explicit SourceSet(const SurfacePoint<TriangleMesh>& p) { add(p); }
 
+    /// Adds a vertex source; returns `*this` for chaining.
     SourceSet& add(vertex_descriptor v) {
         vertices.push_back(v);
         return *this;
     }
+    /// Adds a face-location source; returns `*this` for chaining.
     SourceSet& add(const Location& l) {
         locations.push_back(l);
         return *this;
     }
+    /// Adds a vertex or face-location source; returns `*this` for chaining.
     SourceSet& add(const SurfacePoint<TriangleMesh>& p) {
         if (const auto* v = std::get_if<vertex_descriptor>(&p))
             vertices.push_back(*v);
@@ -55,7 +67,9 @@ struct SourceSet {
         return *this;
     }
 
+    /// Number of sources (vertices and face locations).
     std::size_t size() const { return vertices.size() + locations.size(); }
+    /// True when the set holds no source.
     bool empty() const { return size() == 0; }
 };
 
