@@ -48,11 +48,14 @@
 
 namespace tapeline::geodesic {
 
+/// Result of a curvature-flow path query: the path in two forms and how the flow went.
+///
+/// \tparam Point the kernel's `Point_3` (of the mesh's vertex point map).
 template <class Point>
 struct CurvatureFlowPath {
     GeodesicPath<Point> smooth;   ///< samples lifted towards the smooth surface
     GeodesicPath<Point> on_mesh;  ///< samples on the faces, traced across the faces
-    CurvatureFlowReport report;
+    CurvatureFlowReport report;   ///< iterations, status, residuals, timings
 };
 
 namespace internal {
@@ -351,13 +354,28 @@ CurvatureFlowPath<Point> run_flow(const Setup& setup, const gcf::Sample& a, cons
 /// Reusable part of the flow: the checked index maps, the compact mesh arrays, the components and
 /// the vertex frames (computed on first use and kept). Build once, query many pairs: a query then
 /// costs one Dijkstra run and the iterations. Queries may run concurrently (see paths()).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class GeodesicPathSolver {
 public:
-    using Setup = internal::GcfSetup<TriangleMesh, NamedParameters>;
-    using Point_3 = typename Setup::Point_3;
-    using Result = CurvatureFlowPath<Point_3>;
+    using Setup = internal::GcfSetup<TriangleMesh, NamedParameters>;  ///< the prepared mesh
+    using Point_3 = typename Setup::Point_3;  ///< point type of the vertex point map
+    using Result = CurvatureFlowPath<Point_3>;  ///< a path query's answer
 
+    /// Checks the mesh and builds its compact arrays and components.
+    ///
+    /// \param tm the mesh; it must outlive the solver and stay unchanged.
+    /// \param np the named parameters listed with the class.
+    /// \throws TopologyError when a face is not a triangle.
+    /// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+    ///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+    /// \throws InvalidInput also when the mesh has no faces or is beyond 32-bit indices.
     explicit GeodesicPathSolver(const TriangleMesh& tm,
                                 const NamedParameters& np = CGAL::parameters::default_values())
         : setup_(tm, np) {}
@@ -365,6 +383,12 @@ public:
     /// Path between two surface points, started from the Dijkstra edge path between their
     /// nearest corners. Endpoints in different components give empty paths (length +infinity)
     /// and status "unreachable". InvalidInput on bad options, points not on the mesh, from == to.
+    ///
+    /// \throws InvalidInput on bad options (non-finite or negative spacing, tolerances, step;
+    ///         `sample_count` 1 or 2; the Ceres solver without curvature_flow_ceres.h).
+    /// \throws InvalidInput when a point is not on the mesh, is a vertex without an incident face,
+    ///         or when both points coincide.
+    /// \throws SolverFailure when the linear solve of a flow step fails.
     Result path(const SurfacePoint<TriangleMesh>& from, const SurfacePoint<TriangleMesh>& to,
                 const CurvatureFlowOptions& options = {}) const {
         const auto t0 = internal::Clock::now();
@@ -402,6 +426,13 @@ public:
     /// Path started from a caller-given polyline (at least two points, in the same component).
     /// Its first and last points, projected onto the faces around their nearest vertex, are the
     /// endpoints.
+    ///
+    /// \tparam PointRange a range of points with x(), y(), z() convertible by CGAL::to_double.
+    /// \throws InvalidInput on bad options (non-finite or negative spacing, tolerances, step;
+    ///         `sample_count` 1 or 2; the Ceres solver without curvature_flow_ceres.h).
+    /// \throws InvalidInput when the polyline has fewer than two points, a non-finite point, or
+    ///         endpoints that project onto the same point.
+    /// \throws SolverFailure when the linear solve of a flow step fails.
     template <class PointRange>
     Result path_from_polyline(const PointRange& initial,
                               const CurvatureFlowOptions& options = {}) const {
@@ -436,6 +467,7 @@ public:
                                            t0);
     }
 
+    /// Start and end point of one query of paths().
     using PointPair = std::pair<SurfacePoint<TriangleMesh>, SurfacePoint<TriangleMesh>>;
 
     /// Paths between many pairs of surface points, in the order of the pairs, each exactly what
@@ -443,6 +475,12 @@ public:
     /// linked with TBB, i.e. CGAL::TBB_support; else one after another): they share the mesh
     /// arrays read-only and its frame cache, which threads may fill at once. Every pair is checked
     /// before any work (InvalidInput naming the pair).
+    ///
+    /// \throws InvalidInput on bad options (non-finite or negative spacing, tolerances, step;
+    ///         `sample_count` 1 or 2; the Ceres solver without curvature_flow_ceres.h).
+    /// \throws InvalidInput when a point is not on the mesh, is a vertex without an incident face,
+    ///         or when both points coincide.
+    /// \throws SolverFailure when the linear solve of a flow step fails.
     std::vector<Result> paths(const std::vector<PointPair>& pairs,
                               const CurvatureFlowOptions& options = {}) const {
         internal::check_options(options);
@@ -469,6 +507,7 @@ public:
         return out;
     }
 
+    /// Number of mesh vertices.
     std::size_t vertex_count() const {
         return setup_.mesh().vertex_count();
     }
@@ -476,12 +515,17 @@ public:
     const Setup& setup() const {
         return setup_;
     }
+    /// Mean edge length of the mesh: the default sample spacing.
     double mean_edge_length() const {
         return setup_.mesh().mean_edge;
     }
 
     /// The faces crossed by a path on this mesh (e.g. result.on_mesh.points) unfolded into the
     /// plane (see unfold_path in unfold.h).
+    ///
+    /// \tparam PointRange a range of points with x(), y(), z() convertible by CGAL::to_double.
+    /// \throws InvalidInput on a bad tolerance, a point off the mesh or fewer than two distinct
+    ///         points.
     template <class PointRange>
     UnfoldedPath unfold(const PointRange& path, const UnfoldOptions& options = {}) const {
         return internal::unfold::unfold_checked(setup_.mesh(), internal::to_vec3s(path), options,
@@ -501,6 +545,22 @@ private:
 
 /// One-shot: geodesic path between two surface points by geodesic curvature flow (see
 /// GeodesicPathSolver::path). The report's init_seconds include the mesh preparation.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+/// \throws InvalidInput also when the mesh has no faces or is beyond 32-bit indices.
+/// \throws InvalidInput on bad options (non-finite or negative spacing, tolerances, step;
+///         `sample_count` 1 or 2; the Ceres solver without curvature_flow_ceres.h).
+/// \throws InvalidInput when a point is not on the mesh, is a vertex without an incident face,
+///         or when both points coincide.
+/// \throws SolverFailure when the linear solve of a flow step fails.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 CurvatureFlowPath<typename internal::MeshParameters<TriangleMesh, NamedParameters>::Point_3>
 geodesic_path(const TriangleMesh& tm, const SurfacePoint<TriangleMesh>& from,
@@ -517,6 +577,23 @@ geodesic_path(const TriangleMesh& tm, const SurfacePoint<TriangleMesh>& from,
 }
 
 /// One-shot, started from a caller-given polyline (see GeodesicPathSolver::path_from_polyline).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam Point a point type with x(), y(), z() convertible by CGAL::to_double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+/// \throws InvalidInput also when the mesh has no faces or is beyond 32-bit indices.
+/// \throws InvalidInput on bad options (non-finite or negative spacing, tolerances, step;
+///         `sample_count` 1 or 2; the Ceres solver without curvature_flow_ceres.h).
+/// \throws InvalidInput when the polyline has fewer than two points, a non-finite point, or
+///         endpoints that project onto the same point.
+/// \throws SolverFailure when the linear solve of a flow step fails.
 template <class TriangleMesh, class Point,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 CurvatureFlowPath<typename internal::MeshParameters<TriangleMesh, NamedParameters>::Point_3>
@@ -543,6 +620,25 @@ geodesic_path(const TriangleMesh& tm, const std::vector<Point>& initial,
 /// is the length of the resulting sample polyline (Phong-lifted by default, see the options).
 /// Writes every vertex (+infinity outside the source's component). InvalidInput on bad options or a
 /// source that is not a vertex of the mesh with an incident face.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam VertexDistanceMap a model of `WritablePropertyMap` with key vertex_descriptor and
+///         value double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+/// \throws InvalidInput also when the mesh has no faces or is beyond 32-bit indices.
+/// \throws InvalidInput on bad options (`sample_spacing`, `repair_steiner_points`,
+///         `repair_graph_margin`, and the flow's: non-finite or negative spacing, tolerances, step;
+///         `sample_count` 1 or 2; the Ceres solver without curvature_flow_ceres.h).
+/// \throws InvalidInput when `source` is not a vertex of the mesh with an incident face.
+/// \throws SolverFailure when a flow solve fails or a distance is NaN; `distances` is left
+///         untouched then.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 CurvatureFlowDistanceReport gcf_distances(

@@ -85,10 +85,11 @@ struct CurvatureFlowOptions {
     /// Also stop (status "stalled") when no sample moved farther than this times the mean edge
     /// length in a step (displacement after re-projection).
     double update_tolerance = 1e-10;
-    std::size_t max_iterations = 200;
+    std::size_t max_iterations = 200;  ///< cap on flow steps (status "max_iterations")
     /// Weight of the rows that hold the two endpoints in place (> 0). The endpoints are
     /// additionally reset exactly after every step.
     double endpoint_weight = 1e4;
+    /// linear solver of a step
     CurvatureFlowSolver solver = CurvatureFlowSolver::eigen_normal_ldlt;
     /// Only with solver == ceres.
     CeresLinearSolver ceres_linear_solver = CeresLinearSolver::sparse_normal_cholesky;
@@ -107,8 +108,8 @@ struct CurvatureFlowOptions {
 
 /// What one flow did. Times are wall-clock seconds.
 struct CurvatureFlowReport {
-    std::size_t vertices = 0;
-    std::size_t faces = 0;
+    std::size_t vertices = 0;  ///< mesh vertices
+    std::size_t faces = 0;  ///< mesh faces
     std::size_t samples = 0;            ///< samples of the path, endpoints included
     std::size_t iterations = 0;         ///< flow steps taken
     double initial_length = 0;          ///< length of the initial (edge or given) path
@@ -131,7 +132,7 @@ struct CurvatureFlowReport {
     /// e.g. at sharp features where the re-projection undoes the tangent move),
     /// "max_iterations", "unreachable" (endpoints in different components: empty paths)
     std::string status = "ok";
-    std::string solver;
+    std::string solver;  ///< name of the linear solver used
 };
 
 /// Algorithm 2: where the distance of the fixed sample before the flowed window comes from.
@@ -220,7 +221,7 @@ struct CurvatureFlowDistanceOptions : FlowPropagationOptions {
     /// neighbour's path and the re-check 0.51 %; decimated-knight (502 vertices) from vertex 186:
     /// 3.75 % -> 1.25 % (0.81 % with the Steiner-graph start).
     double repair_tolerance = 2e-3;
-    std::size_t repair_rounds = 8;
+    std::size_t repair_rounds = 8;  ///< repair passes at most; 0 disables the repair
     /// Flow steps of each re-solved path (its max_iterations). The straightened on-mesh length
     /// decides, and it is the same after 5 steps as after 200 on every shared mesh and the torus
     /// (measured; fandisk's repair took 4.8 s with 200 steps, 0.8 s with 5).
@@ -283,7 +284,7 @@ struct CurvatureFlowDistanceReport : DistanceReport {
     /// field (WindowAnchor::field); 0 for Algorithm 1. m (max_faces) is the largest number of
     /// faces holding samples of one vertex's path (runs on one face counted once).
     double epsilon = 0;
-    std::size_t max_faces = 0;
+    std::size_t max_faces = 0;  ///< most faces one vertex's path crosses
     /// epsilon * max_faces * mean edge length: the bound, in the mesh's unit, on how far the
     /// windowed distances may lie from the whole-path flow (Algorithm 1), with constant 1.
     double error_bound = 0;

@@ -68,6 +68,7 @@ public:
     ///
     /// \param tm the mesh; it must outlive the solver and stay unchanged.
     /// \param sources vertices and face locations of `tm`.
+    /// \param options the method's options (ExactCgalOptions).
     /// \param np the named parameters listed with the class.
     /// \throws TopologyError when a face is not a triangle.
     /// \throws InvalidInput on a non-finite coordinate or a vertex, halfedge or face index map

@@ -58,6 +58,7 @@ struct HeatOptions {
     /// Build the Laplacian on the intrinsic Delaunay triangulation (Fisher et al. 2006), CGAL's
     /// `Intrinsic_Delaunay` mode; otherwise the cotan Laplacian of the input (`Direct`).
     bool intrinsic_delaunay = false;
+    /// how several sources combine
     HeatMultiSource multi_source = HeatMultiSource::min_of_single_sources;
     /// A face is degenerate when its relative triangle-inequality slack
     /// min(b + c - a) / (a + b + c) is <= this value. Degenerate faces make the iDT edge flips loop
@@ -76,9 +77,9 @@ struct DijkstraOptions {};
 /// An unreachable end point is an empty polyline with length +infinity.
 template <class Point>
 struct GeodesicPath {
-    std::vector<Point> points;
-    double length = std::numeric_limits<double>::infinity();
-    bool found() const { return !points.empty(); }
+    std::vector<Point> points;  ///< polyline from the source to the target
+    double length = std::numeric_limits<double>::infinity();  ///< polyline length
+    bool found() const { return !points.empty(); }  ///< false when the target is unreachable
 };
 
 }  // namespace tapeline::geodesic

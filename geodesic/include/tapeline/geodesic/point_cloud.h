@@ -110,14 +110,30 @@ void read_points(const PointRange& points, const NamedParameters& np, gcf::point
 /// Reusable set-up on one point set: the checks, the kNN graph, the manifold dimension, the grid
 /// and its nodes (projected onto the local surfaces), the local charts (fitted on first use and
 /// kept). Build once, query many sources or pairs; queries may run concurrently.
+///
+/// \tparam PointRange a model of `ConstRange` (std::vector, ...) whose values the `point_map`
+///         maps to points: CGAL points of any dimension (anything with cartesian_begin() and
+///         cartesian_end()) or ranges of coordinates (std::array, std::vector, Eigen).
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `point_map` (a
+///         `ReadablePropertyMap` from the range's value type to a point; default: identity)
+///         and `normal_map` (a `ReadablePropertyMap` to a normal of the same dimension;
+///         hypersurfaces only).
 template <class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class PointCloudGeodesicSolver {
 public:
+    /// Prefix of every error message of the point-cloud method.
     static constexpr const char* kWhere = "gcf_point_cloud";
 
     /// InvalidInput (one line naming the point or option): no points, fewer points than
     /// options.neighbours + 1, points with different numbers of coordinates, a non-finite
     /// coordinate, two points at the same position, bad options.
+    ///
+    /// \param points the samples; read once, not kept.
+    /// \param options neighbours, grid, projection, window and the flow's options.
+    /// \param np the named parameters listed with the class.
+    /// \throws InvalidInput (one line naming the point or option) on no points, fewer points than
+    ///         options.neighbours + 1, points or normals with different numbers of coordinates,
+    ///         a non-finite coordinate, two points at the same position, or bad options.
     explicit PointCloudGeodesicSolver(
         const PointRange& points, const PointCloudDistanceOptions& options = {},
         const NamedParameters& np = CGAL::parameters::default_values())
@@ -134,6 +150,10 @@ public:
     /// Distances from point `source` (index in the range) to every point, written as
     /// put(distances, i, d) for i in 0 .. size - 1; +infinity for points the propagation does not
     /// reach (another component of the cell graph). InvalidInput for a source out of range.
+    ///
+    /// \tparam PointDistanceMap a model of `WritablePropertyMap` with key std::size_t (the point's
+    ///         index in the range) and value double.
+    /// \throws InvalidInput when `source` is not an index of the range.
     template <class PointDistanceMap>
     PointCloudDistanceReport distances(std::size_t source, PointDistanceMap distances) const {
         const auto t0 = internal::gcf::points::Clock::now();
@@ -159,6 +179,8 @@ public:
     /// Dijkstra over the cells, resampled and flowed whole (Algorithm 1 between two points).
     /// Endpoints are the two points projected onto their local surfaces (the points themselves on
     /// clean samples). Different components: empty path, length +infinity, status "unreachable".
+    ///
+    /// \throws InvalidInput when `from` or `to` is not an index of the range, or from == to.
     PointCloudPath path(std::size_t from, std::size_t to) const {
         const auto t0 = internal::gcf::points::Clock::now();
         check_index(from, "from");
@@ -180,7 +202,9 @@ public:
 
     /// Sizes and set-up timings.
     const PointCloudDistanceReport& report() const { return pr_->report; }
+    /// Number of points.
     std::size_t size() const { return pr_->n; }
+    /// Dimension D of the ambient space (coordinates per point).
     std::size_t dimension() const { return pr_->dim; }
     /// The node (grid cell) of each point, and the nodes' count: for tests and drawings.
     const std::vector<std::uint32_t>& point_nodes() const { return pr_->point_node; }
@@ -210,6 +234,20 @@ private:
 
 /// One-shot: geodesic distances from points[source_index] to every point (the thesis' Algorithm
 /// 3; see PointCloudGeodesicSolver). The report's seconds include the set-up.
+///
+/// \tparam PointRange a model of `ConstRange` (std::vector, ...) whose values the `point_map`
+///         maps to points: CGAL points of any dimension (anything with cartesian_begin() and
+///         cartesian_end()) or ranges of coordinates (std::array, std::vector, Eigen).
+/// \tparam PointDistanceMap a model of `WritablePropertyMap` with key std::size_t (the point's
+///         index in the range) and value double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `point_map` (a
+///         `ReadablePropertyMap` from the range's value type to a point; default: identity)
+///         and `normal_map` (a `ReadablePropertyMap` to a normal of the same dimension;
+///         hypersurfaces only).
+/// \throws InvalidInput (one line naming the point or option) on no points, fewer points than
+///         options.neighbours + 1, points or normals with different numbers of coordinates,
+///         a non-finite coordinate, two points at the same position, or bad options.
+/// \throws InvalidInput when `source_index` is not an index of the range.
 template <class PointRange, class PointDistanceMap,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 PointCloudDistanceReport gcf_point_cloud_distances(
@@ -225,6 +263,18 @@ PointCloudDistanceReport gcf_point_cloud_distances(
 
 /// One-shot: geodesic path between points[from] and points[to] (see
 /// PointCloudGeodesicSolver::path).
+///
+/// \tparam PointRange a model of `ConstRange` (std::vector, ...) whose values the `point_map`
+///         maps to points: CGAL points of any dimension (anything with cartesian_begin() and
+///         cartesian_end()) or ranges of coordinates (std::array, std::vector, Eigen).
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `point_map` (a
+///         `ReadablePropertyMap` from the range's value type to a point; default: identity)
+///         and `normal_map` (a `ReadablePropertyMap` to a normal of the same dimension;
+///         hypersurfaces only).
+/// \throws InvalidInput (one line naming the point or option) on no points, fewer points than
+///         options.neighbours + 1, points or normals with different numbers of coordinates,
+///         a non-finite coordinate, two points at the same position, or bad options.
+/// \throws InvalidInput when `from` or `to` is not an index of the range, or from == to.
 template <class PointRange, class NamedParameters = CGAL::parameters::Default_named_parameters>
 PointCloudPath gcf_point_cloud_path(
     const PointRange& points, std::size_t from, std::size_t to,

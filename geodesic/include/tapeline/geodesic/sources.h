@@ -33,6 +33,7 @@ using SurfacePoint = std::variant<typename boost::graph_traits<TriangleMesh>::ve
 ///         the sources.
 template <class TriangleMesh>
 struct SourceSet {
+    /// A vertex of the mesh.
     using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
     using Location = FaceLocation<TriangleMesh>;  ///< a face and barycentric coordinates
 

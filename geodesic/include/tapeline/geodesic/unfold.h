@@ -20,6 +20,20 @@ namespace tapeline::geodesic {
 /// the indices in the result are those of the index maps. InvalidInput when the mesh is not a
 /// triangle mesh, the tolerance is not > 0, a point is not finite, the path has fewer than two
 /// distinct points, or a point is not on a face next to the previous point's face.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam PointRange a range of points with x(), y(), z() convertible by CGAL::to_double.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate or an index map that is not a bijection
+///         onto [0, n) (a Surface_mesh with removed elements needs collect_garbage()).
+/// \throws InvalidInput also when the mesh has no faces or is beyond 32-bit indices, on a
+///         tolerance not > 0, a non-finite point, fewer than two distinct points, or a point
+///         not on a face next to the previous point's face.
 template <class TriangleMesh, class PointRange,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
 UnfoldedPath unfold_path(const TriangleMesh& tm, const PointRange& path,
