@@ -185,6 +185,9 @@ inline void write_file_atomically(const std::string& path,
 /// no target is touched.
 class OutputFiles {
 public:
+    /// Checks every non-empty path (see check_output_paths).
+    ///
+    /// \throws InvalidInput on a path that cannot be written or a path given twice.
     explicit OutputFiles(const std::vector<std::string>& paths) { check_output_paths(paths); }
     ~OutputFiles() {
         for (const auto& [tmp, path] : pending_) {
@@ -199,10 +202,17 @@ public:
         pending_.push_back({internal::temporary_path_for(path), path});
         return pending_.back().first;
     }
+    /// Writes `path`'s content through `write` to its temporary name now.
+    ///
+    /// \throws InvalidInput when the temporary cannot be opened or the write fails; exceptions
+    ///         of `write` propagate.
     void write(const std::string& path, const std::function<void(std::ostream&)>& write,
                bool binary = false) {
         internal::write_stream_to(path, temporary(path), write, binary);
     }
+    /// Renames every temporary into place, in the order they were made.
+    ///
+    /// \throws InvalidInput when a rename fails (the remaining temporaries are removed).
     void commit() {
         while (!pending_.empty()) {
             internal::rename_into_place(pending_.front().first, pending_.front().second);

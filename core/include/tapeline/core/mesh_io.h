@@ -33,22 +33,29 @@ namespace tapeline {
 /// Input vertices and faces are numbered from 0 in file order (OBJ's vertex `1` is vertex 0; for
 /// STL, vertex i is the i-th distinct point in order of first appearance, face i is facet i).
 /// LoadedMesh<CGAL::Polyhedron_3<...>> must not be copied: a Polyhedron copy has new handles.
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` (see
+///         read_triangle_mesh).
 template <class TriangleMesh>
 struct LoadedMesh {
+    /// A vertex of the mesh.
     using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+    /// A face of the mesh.
     using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
-    TriangleMesh mesh;
-    std::vector<vertex_descriptor> vertices;  // all mesh vertices, in mesh order
-    std::vector<std::size_t> input_index;     // parallel to `vertices`: input vertex each came from
-    std::size_t input_vertex_count = 0;
-    std::vector<face_descriptor> faces;         // all mesh faces, in mesh order
-    std::vector<std::size_t> face_input_index;  // parallel to `faces`: input face each came from
+    TriangleMesh mesh;  ///< the validated, repaired triangle mesh
+    std::vector<vertex_descriptor> vertices;  ///< all mesh vertices, in mesh order
+    std::vector<std::size_t> input_index;     ///< parallel to `vertices`: input vertex of each
+    std::size_t input_vertex_count = 0;       ///< vertices in the input
+    std::vector<face_descriptor> faces;         ///< all mesh faces, in mesh order
+    std::vector<std::size_t> face_input_index;  ///< parallel to `faces`: input face each came from
     /// Positions in `vertices` of the mesh vertices representing input vertex i are
     /// copies[copies_begin[i]] .. copies[copies_begin[i + 1] - 1]; a duplicate vertex that was
     /// merged shares those of the vertex it was merged into. Filled by the loader.
+    ///@{
     std::vector<std::size_t> copies_begin, copies;
-    MeshReport report;
+    ///@}
+    MeshReport report;  ///< what the loader found and repaired
 
     /// Mesh vertices that represent input vertex i (several after a non-manifold split, none if
     /// it was unreferenced, those of its twin if it was merged as a duplicate); throws InvalidInput
@@ -77,6 +84,8 @@ struct LoadedMesh {
 
     /// Per-mesh-vertex values (indexed like `vertices`) -> per-input-vertex values: minimum over
     /// the copies, +infinity for input vertices with no mesh vertex.
+    ///
+    /// \throws InvalidInput when `per_mesh_vertex` does not hold one value per mesh vertex.
     std::vector<double> to_input_order(const std::vector<double>& per_mesh_vertex) const {
         if (per_mesh_vertex.size() != vertices.size()) {
             throw InvalidInput(report.file + ": to_input_order needs one value per mesh vertex (" +
@@ -109,6 +118,9 @@ struct LoadedMesh {
 /// extension (.off, .obj, .ply, .stl, any case). Rejects (InvalidInput, naming the file and the
 /// line or element) missing, empty, truncated or unparsable files, NaN/Inf coordinates, faces
 /// with fewer than 3 vertices and out-of-range indices.
+///
+/// \throws InvalidInput on an unknown extension, a file that cannot be read, or any of the
+///         rejections above.
 inline PolygonSoup read_polygon_soup(const std::string& path) {
     const std::string ext = internal::lower_extension(path);
     if (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") {
@@ -153,6 +165,19 @@ void load_soup_into(const PolygonSoup& soup, const MeshLoadOptions& options,
 
 /// Reads a triangle mesh (CGAL MutableFaceGraph, e.g. CGAL::Surface_mesh) from OFF, OBJ, PLY or
 /// STL; validates, repairs (or, strict, rejects) and reports as described in core/README.md.
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` with an internal
+///         vertex point map (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), default
+///         constructible.
+/// \param path the file; the format comes from its extension.
+/// \param options strict mode and the needle-angle threshold.
+/// \throws InvalidInput on an unknown extension, an unreadable, empty, truncated or unparsable
+///         file, naming the file and the line or element.
+/// \throws InvalidInput naming the file and the element: no faces, a NaN or infinite
+///         coordinate, a face with fewer than 3 vertices or an out-of-range index, a
+///         `needle_angle_degrees` outside [0, 60].
+/// \throws TopologyError in strict mode on polygons, duplicate vertices or faces,
+///         non-manifold edges or vertices, or faces that cannot be oriented consistently.
 template <class TriangleMesh>
 LoadedMesh<TriangleMesh> read_triangle_mesh(const std::string& path,
                                             const MeshLoadOptions& options = {}) {
@@ -164,6 +189,15 @@ LoadedMesh<TriangleMesh> read_triangle_mesh(const std::string& path,
 }
 
 /// Same validation and repair on an in-memory polygon soup (`name` is used in messages).
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` with an internal
+///         vertex point map (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), default
+///         constructible.
+/// \throws InvalidInput naming the file and the element: no faces, a NaN or infinite
+///         coordinate, a face with fewer than 3 vertices or an out-of-range index, a
+///         `needle_angle_degrees` outside [0, 60].
+/// \throws TopologyError in strict mode on polygons, duplicate vertices or faces,
+///         non-manifold edges or vertices, or faces that cannot be oriented consistently.
 template <class TriangleMesh>
 LoadedMesh<TriangleMesh> triangle_mesh_from_soup(const std::vector<std::array<double, 3>>& points,
                                                  const std::vector<std::vector<std::size_t>>& faces,

@@ -25,14 +25,24 @@ struct MeshLoadOptions {
 struct MeshReport {
     /// format: "off", "obj", "ply-ascii", "ply-binary-le", "ply-binary-be", "stl-ascii",
     /// "stl-binary" or "soup".
+    ///@{
     std::string file, format;
+    ///@}
+    /// Sizes of the input and of the mesh built from it.
+    ///@{
     std::size_t input_vertices = 0, input_faces = 0, vertices = 0, faces = 0;
+    ///@}
+    /// Repairs made and defects found; see core/README.md for each.
+    ///@{
     std::size_t polygons_triangulated = 0, duplicate_vertices_merged = 0, unreferenced_vertices = 0,
                 degenerate_faces = 0, needle_faces = 0, non_manifold_edges = 0,
                 non_manifold_vertices = 0, vertices_split = 0, boundary_loops = 0, components = 0;
+    ///@}
     /// Input faces dropped because merging duplicate vertices left them with fewer than three
     /// distinct corners, and input faces dropped because they repeat an earlier face.
+    ///@{
     std::size_t collapsed_faces_dropped = 0, duplicate_faces_dropped = 0;
+    ///@}
     /// Input faces whose vertex order was reversed so that neighbours agree on the orientation.
     std::size_t faces_reoriented = 0;
     /// One line each, naming the file and the first element concerned.
@@ -73,19 +83,24 @@ struct MeshReport {
 /// A mesh file as written: points and polygons with the indices of the file (0-based), before any
 /// validation beyond what parsing needs. Produced by read_polygon_soup (mesh_io.h).
 struct PolygonSoup {
+    /// Source file (or name) and format as in MeshReport.
+    ///@{
     std::string file, format;  // format as in MeshReport
-    std::vector<std::array<double, 3>> points;
-    std::vector<std::vector<std::size_t>> faces;
+    ///@}
+    std::vector<std::array<double, 3>> points;    ///< coordinates, in file order
+    std::vector<std::vector<std::size_t>> faces;  ///< corner indices into `points`
     /// Text formats: 1-based line of each point / face, for messages. Empty for binary formats.
+    ///@{
     std::vector<std::uint32_t> point_lines, face_lines;
+    ///@}
     /// PLY: every scalar vertex property other than x, y, z, converted to double.
     std::map<std::string, std::vector<double>> vertex_properties;
 };
 
 /// How write_scalar_ply (mesh_writers.h) writes a per-vertex scalar field.
 struct ScalarPlyOptions {
-    std::string property = "distance";  // name of the per-vertex float property
-    bool binary = true;                 // binary_little_endian, else ascii
+    std::string property = "distance";  ///< name of the per-vertex float property
+    bool binary = true;                 ///< binary_little_endian, else ascii
 };
 
 }  // namespace tapeline

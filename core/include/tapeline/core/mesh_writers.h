@@ -181,6 +181,13 @@ inline void write_stl_binary(const std::string& path,
 /// Writes `tm` as OFF, OBJ (17 significant digits, via CGAL), PLY (binary little endian, double
 /// coordinates) or STL (binary, float coordinates), chosen by the extension; atomically.
 /// An unknown extension is InvalidInput.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` with an internal vertex
+///         point map (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...).
+/// \throws InvalidInput naming `path` on an unknown extension, an output path that cannot be
+///         written (missing or unwritable directory, a directory), a failed write or rename,
+///         a non-polygon face count beyond binary STL's limit, or CGAL failing to write;
+///         `path` is left untouched then.
 template <class TriangleMesh>
 void write_mesh(const std::string& path, const TriangleMesh& tm) {
     const std::string ext = internal::lower_extension(path);
@@ -213,6 +220,12 @@ void write_mesh(const std::string& path, const TriangleMesh& tm) {
 /// PLY with x y z (float), the scalar as a float property and red/green/blue uchar colours from
 /// viridis over the finite range of `values`; non-finite values are written as they are and
 /// coloured grey. `values` are indexed in mesh vertex order (as `vertices` in LoadedMesh).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` with an internal vertex
+///         point map, every face a triangle.
+/// \throws InvalidInput naming `path` on an invalid property name, a value count that is not
+///         the vertex count, a face that is not a triangle, an output path that cannot be
+///         written, or a failed write or rename; `path` is left untouched then.
 template <class TriangleMesh>
 void write_scalar_ply(const std::string& path, const TriangleMesh& tm,
                       const std::vector<double>& values, const ScalarPlyOptions& options = {}) {

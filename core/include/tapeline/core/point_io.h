@@ -26,10 +26,14 @@ namespace tapeline {
 
 /// n points of dimension `dimension`, point i at [dimension i, dimension i + dimension).
 struct PointSet {
+    /// Source file, and format: "xyz", "csv" or "ply".
+    ///@{
     std::string file, format;  ///< format: "xyz", "csv" or "ply"
-    std::size_t dimension = 0;
-    std::vector<double> coordinates;
+    ///@}
+    std::size_t dimension = 0;  ///< coordinates per point
+    std::vector<double> coordinates;  ///< `dimension` per point, in file order
     std::vector<double> normals;  ///< 3 per point when the PLY has nx, ny, nz; else empty
+    /// number of points
     std::size_t size() const { return dimension ? coordinates.size() / dimension : 0; }
 };
 
@@ -116,6 +120,8 @@ inline PointSet read_delimited_points(const std::string& path, std::string_view 
 /// Reads a point set; the format follows the extension (.xyz, .csv, .ply, any case). InvalidInput
 /// naming the file (and line) for a missing file, an unknown extension, a malformed line, a
 /// non-finite coordinate, rows of different lengths or no points.
+///
+/// \throws InvalidInput naming the file (and line) on any of the rejections above.
 inline PointSet read_point_set(const std::string& path) {
     const std::string ext = internal::lower_extension(path);
     if (ext != ".xyz" && ext != ".csv" && ext != ".ply")

@@ -21,20 +21,22 @@
 
 namespace tapeline {
 
+/// When progress is drawn: on a terminal only, always, or never.
 enum class ProgressMode { automatic, always, never };
 
 /// One update: the phase ("exact-mmp distances"), items done and the total (0 when unknown),
 /// seconds since the phase began, an optional note ("residual 3.1e-4"), and whether the phase
 /// has finished.
 struct ProgressEvent {
-    std::string phase;
-    std::size_t done = 0;
-    std::size_t total = 0;
-    double seconds = 0.0;
-    std::string note;
-    bool finished = false;
+    std::string phase;  ///< what the loop does
+    std::size_t done = 0;  ///< items done
+    std::size_t total = 0;  ///< total items, 0 when unknown
+    double seconds = 0.0;  ///< seconds since the phase began
+    std::string note;  ///< extra figures, may be empty
+    bool finished = false;  ///< the last event of the phase
 };
 
+/// Receiver of progress events (tests, a GUI, a log).
 using ProgressSink = std::function<void(const ProgressEvent&)>;
 
 namespace internal {
@@ -57,6 +59,7 @@ inline void set_progress_mode(ProgressMode mode) {
     s.mode = mode;
 }
 
+/// The mode set by set_progress_mode (automatic by default).
 inline ProgressMode progress_mode() {
     auto& s = internal::progress_settings();
     std::lock_guard<std::mutex> lock(s.mutex);
@@ -75,6 +78,9 @@ inline void set_progress_sink(ProgressSink sink) {
 /// a phase that ends before `delay` seconds, so short calls stay silent.
 class Progress {
 public:
+    /// \param phase what the loop does, shown in front of the counts.
+    /// \param total the number of items, 0 when unknown.
+    /// \param delay seconds before the first report.
     explicit Progress(std::string phase, std::size_t total = 0, double delay = 1.0)
         : phase_(std::move(phase)),
           total_(total),
@@ -98,25 +104,31 @@ public:
     Progress& operator=(const Progress&) = delete;
     ~Progress() { finish(); }
 
+    /// False when nothing will be reported (mode never, or automatic off a terminal).
     bool enabled() const { return enabled_; }
 
+    /// Counts `n` more items done; thread-safe.
     void advance(std::size_t n = 1) {
         const std::size_t done = done_.fetch_add(n, std::memory_order_relaxed) + n;
         if (enabled_)
             maybe_report(done, false);
     }
+    /// Sets the number of items done.
     void set(std::size_t done) {
         done_.store(done, std::memory_order_relaxed);
         if (enabled_)
             maybe_report(done, false);
     }
+    /// Sets the total once it is known.
     void set_total(std::size_t total) { total_ = total; }
+    /// Extra figures shown after the counts in the next report.
     void note(std::string text) {
         if (!enabled_)
             return;
         std::lock_guard<std::mutex> lock(mutex_);
         note_ = std::move(text);
     }
+    /// Closes the phase: a last report if anything was reported; idempotent.
     void finish() {
         if (finished_.exchange(true))
             return;

@@ -60,6 +60,8 @@ inline std::optional<LengthUnit> length_unit(const std::string& text) {
 }
 
 /// Millimetres per `unit` (see length_unit); InvalidInput naming `where` for anything else.
+///
+/// \throws InvalidInput when `unit` is not mm, cm, dm, m, inch or in.
 inline double millimetres_per_unit(const std::string& unit, const std::string& where) {
     if (const auto u = length_unit(unit)) {
         return millimetres_per(*u);

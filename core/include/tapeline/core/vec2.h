@@ -8,9 +8,10 @@
 
 namespace tapeline {
 
+/// A 2D point or vector (pattern geometry, drawing).
 struct Vec2 {
-    double x = 0;
-    double y = 0;
+    double x = 0;  ///< first coordinate
+    double y = 0;  ///< second coordinate
 };
 
 inline bool operator==(const Vec2& a, const Vec2& b) {
