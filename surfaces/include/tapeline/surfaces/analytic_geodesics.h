@@ -36,6 +36,9 @@ namespace tapeline {
 /// Immutable after construction; operator() is const and safe to call from several threads.
 class AnalyticGeodesicDistance {
 public:
+    /// Chooses the method for `spec` (see available()).
+    ///
+    /// \throws InvalidInput when a field of `spec` is out of range.
     explicit AnalyticGeodesicDistance(const SurfaceSpec& spec);
 
     /// False for the torus, a triaxial ellipsoid, and an ellipsoid of revolution whose axis ratio
@@ -48,6 +51,8 @@ public:
     /// Exact smooth geodesic distance between p and q, both on the surface (not checked: a point
     /// off the surface is treated as its projection along the method's coordinates).
     /// Throws std::logic_error if !available().
+    ///
+    /// \throws std::logic_error when !available(): a programming error, not an input error.
     double operator()(const std::array<double, 3>& p, const std::array<double, 3>& q) const;
 
     /// For an ellipsoid of revolution: index (0 = x, 1 = y, 2 = z) of the symmetry axis, else -1.
@@ -159,6 +164,8 @@ inline double AnalyticGeodesicDistance::operator()(const std::array<double, 3>& 
 /// Distances from points[source] to every point (size of points); an empty vector if the surface
 /// has no truth. Throws InvalidInput if source is out of range. `threads` = 0 uses
 /// std::thread::hardware_concurrency(); the result is the same for any thread count.
+///
+/// \throws InvalidInput when `source` is out of range or a field of `spec` is.
 inline std::vector<double> analytic_distances(const SurfaceSpec& spec,
                                               const std::vector<std::array<double, 3>>& points,
                                               std::size_t source, unsigned threads = 0) {

@@ -49,15 +49,30 @@ enum class SurfaceKind { icosphere, uvsphere, ellipsoid, torus, cylinder };
 /// JITTER in [0, 0.5) moves each vertex tangentially by up to JITTER times its local mean edge
 /// length; `seed=N` (default 1) selects the random stream.
 struct SurfaceSpec {
-    SurfaceKind kind = SurfaceKind::icosphere;
-    int level = 0;                                // icosphere, ellipsoid
+    SurfaceKind kind = SurfaceKind::icosphere;  ///< which surface
+    int level = 0;                                ///< subdivision level: icosphere, ellipsoid
+    /// Latitude and longitude segments (uvsphere).
+    ///@{
     int nlat = 0, nlon = 0;                       // uvsphere
+    ///@}
+    /// Ellipsoid semi-axes along x, y, z.
+    ///@{
     double a = 1, b = 1, c = 1;                   // ellipsoid semi-axes along x, y, z
+    ///@}
+    /// Torus radii: of the tube's centre circle and of the tube.
+    ///@{
     double major_radius = 1, minor_radius = 0.5;  // torus
+    ///@}
+    /// Cylinder radius and height.
+    ///@{
     double radius = 1, height = 1;                // cylinder
+    ///@}
+    /// Segments around and along (torus, cylinder).
+    ///@{
     int nu = 0, nv = 0;                           // torus, cylinder
-    double jitter = 0;
-    std::uint64_t seed = 1;
+    ///@}
+    double jitter = 0;       ///< tangential vertex jitter, times the local mean edge length
+    std::uint64_t seed = 1;  ///< random stream of the jitter
 
     /// Parses a spec string; throws InvalidInput naming the spec and the bad part.
     static SurfaceSpec parse(const std::string& text);
@@ -70,6 +85,7 @@ struct SurfaceSpec {
     void validate() const;
     /// Number of vertices and faces generate_surface() will produce (no generation).
     std::size_t vertex_count() const;
+    /// Number of faces generate_surface() will produce.
     std::size_t face_count() const;
     /// Closed surfaces (everything but the cylinder).
     bool closed() const { return kind != SurfaceKind::cylinder; }
@@ -82,12 +98,15 @@ inline bool operator!=(const SurfaceSpec& s, const SurfaceSpec& t) {
     return !(s == t);
 }
 
+/// A generated surface as a triangle soup (shared vertices, indices into `points`).
 struct SurfaceSoup {
-    std::vector<std::array<double, 3>> points;
-    std::vector<std::array<std::size_t, 3>> triangles;
+    std::vector<std::array<double, 3>> points;          ///< vertex positions
+    std::vector<std::array<std::size_t, 3>> triangles;  ///< corner indices, counter-clockwise
 };
 
 /// Builds the surface; triangles are oriented counter-clockwise seen from outside.
+///
+/// \throws InvalidInput when a field of `spec` is out of range.
 inline SurfaceSoup generate_surface(const SurfaceSpec& spec);
 
 // -------------------------------------------------------------------------------------------------

@@ -27,6 +27,13 @@ namespace tapeline {
 /// type must be constructible from three doubles.
 /// Throws InvalidInput for a bad spec, TopologyError if the mesh refuses a face (cannot happen for
 /// the generated surfaces; the check stays in Release builds).
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` and `VertexListGraph`.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `WritablePropertyMap` vertex_descriptor -> a point constructible from three
+///         doubles).
+/// \throws InvalidInput when a field of `spec` is out of range.
+/// \throws TopologyError when the mesh refuses a face.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void make_surface_mesh(const SurfaceSpec& spec, TriangleMesh& tm,
                        const NamedParameters& np = CGAL::parameters::default_values()) {
