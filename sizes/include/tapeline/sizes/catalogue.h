@@ -50,7 +50,7 @@ struct CatalogueEntry {
     const char* iso_title;   ///< ISO 8559-1:2017 item title ("waist girth"); empty: no such item
     const char* freesewing;  ///< FreeSewing name ("waist")
     const char* seamly;      ///< Seamly2D known name ("waist_circ")
-    MeasurementKind kind;
+    MeasurementKind kind;  ///< length, girth or angle
     bool sided;  ///< also taken per side as name_left, name_right
 
     /// "mm" for lengths, "degree" for angles (which are never unit-scaled).
@@ -116,9 +116,10 @@ inline const std::vector<CatalogueEntry>& catalogue() {
 /// A name resolved against the catalogue: its row, and the side ("left", "right") when the name
 /// is the per-side variant of a sided row.
 struct CatalogueMatch {
-    const CatalogueEntry* entry = nullptr;
-    std::string side;
+    const CatalogueEntry* entry = nullptr;  ///< the row, null when the name is unknown
+    std::string side;                       ///< "left", "right", or empty
 
+    /// True when the name was found.
     explicit operator bool() const { return entry != nullptr; }
     /// The name itself is the row's (not a side of it).
     bool whole() const { return entry && side.empty(); }

@@ -42,6 +42,9 @@ inline MeasurementSet measurement_object(const json::Json& obj, const json::Wher
 }  // namespace internal
 
 /// FreeSewing's measurement_sets.json: {"set name": {"measurement": mm, ...}, ...}.
+///
+/// \throws InvalidInput naming the file and the JSON path when the file cannot be read or
+///         parsed, or a member has the wrong type.
 inline std::vector<MeasurementSet> read_freesewing_measurement_sets(const std::string& path) {
     const json::Json doc = json::parse_json_file(path);
     const json::Where top{path, ""};
@@ -58,6 +61,10 @@ inline std::vector<MeasurementSet> read_freesewing_measurement_sets(const std::s
 
 /// A flat JSON object {"measurement": value, ...} whose values are in `unit` (declared by the
 /// caller: the file does not say).
+///
+/// \throws InvalidInput naming the file and the JSON path when the file cannot be read or
+///         parsed, or a member has the wrong type.
+/// \throws InvalidInput when `unit` is not mm, cm, dm, m, inch or in.
 inline MeasurementSet read_measurement_json(const std::string& path, const std::string& unit) {
     const double scale = millimetres_per_unit(unit, path);
     MeasurementSet m =
@@ -125,6 +132,9 @@ inline bool is_measurement_json(const json::Json& doc) {
 
 /// The measurement JSON `doc` read from `path`: each entry's value_mm under its "name" and its
 /// "freesewing_name" (at least one is required); entries whose value_mm is null are skipped.
+///
+/// \throws InvalidInput naming `path` and the entry when `doc` has no "measurements" array, an
+///         entry lacks value_mm or both names, or a member has the wrong type.
 inline MeasurementSet parse_measurement_json(const json::Json& doc, const std::string& path) {
     using namespace json;
     const Where top{path, ""};
@@ -159,6 +169,11 @@ inline MeasurementSet parse_measurement_json(const json::Json& doc, const std::s
     return m;
 }
 
+/// Reads a measurement JSON file (see parse_measurement_json).
+///
+/// \throws InvalidInput naming the file and the JSON path when the file cannot be read or
+///         parsed, or a member has the wrong type.
+/// \throws InvalidInput also as parse_measurement_json.
 inline MeasurementSet read_tapeline_measurements(const std::string& path) {
     return parse_measurement_json(json::parse_json_file(path), path);
 }

@@ -14,11 +14,13 @@
 
 namespace tapeline::sizes {
 
+/// A named set of body measurements, keyed by measurement name.
 struct MeasurementSet {
-    std::string name;
-    std::string source;                    // file it came from
-    std::map<std::string, double> values;  // mm (angles: degrees)
+    std::string name;                      ///< set name (file stem or set key)
+    std::string source;                    ///< file it came from
+    std::map<std::string, double> values;  ///< mm (angles: degrees)
 
+    /// The value of `key`, or nullopt when the set lacks it.
     std::optional<double> get(const std::string& key) const {
         const auto it = values.find(key);
         return it == values.end() ? std::nullopt : std::optional<double>(it->second);
@@ -36,18 +38,24 @@ inline NamedValues named_values(const MeasurementSet& set) {
 
 /// One row of a multisize table, in mm.
 struct MultisizeEntry {
-    double base = 0;
-    double size_increase = 0;
-    double height_increase = 0;
+    double base = 0;             ///< value at the base size and height
+    double size_increase = 0;    ///< change per size step
+    double height_increase = 0;  ///< change per height step
 };
 
 /// A Seamly2D multisize table (.vst), in mm; sizes and heights in the file's numbers.
 struct MultisizeTable {
-    std::string name;
-    std::string source;
+    std::string name;    ///< table name (file stem)
+    std::string source;  ///< file it came from
+    /// Base size and height of the table.
+    ///@{
     double base_size = 0, base_height = 0;
+    ///@}
+    /// Steps between sizes and between heights.
+    ///@{
     double size_step = 0, height_step = 0;
-    std::map<std::string, MultisizeEntry> entries;
+    ///@}
+    std::map<std::string, MultisizeEntry> entries;  ///< rows by measurement name
 
     /// The individual set for one size and height.
     MeasurementSet at(double size, double height) const {

@@ -55,6 +55,8 @@ inline void add_freesewing_aliases(MeasurementSet& m) {
 
 /// Refuses non-finite or non-positive lengths and a waist above the height (when both are given),
 /// naming the set.
+///
+/// \throws InvalidInput on the first such value.
 inline void check_measurement_set(const MeasurementSet& m) {
     const std::string where = m.source.empty() ? "set '" + m.name + "'" : m.source;
     for (const auto& [k, v] : m.values) {
@@ -77,6 +79,10 @@ inline void check_measurement_set(const MeasurementSet& m) {
 }
 
 /// Reads `path` (see the file comment); `set_name` picks a set of a FreeSewing sets file.
+///
+/// \throws InvalidInput naming the file (and element) when it cannot be read or parsed, is in
+///         none of the accepted forms, `set_name` is not in it (or it holds several sets and
+///         none is named), a unit is unknown, or check_measurement_set refuses the set.
 inline MeasurementSet read_measurement_input(const std::string& path,
                                              const std::string& set_name = "") {
     using json::Json;
