@@ -50,46 +50,61 @@ namespace tapeline::pattern {
 inline constexpr int pattern_database_schema_version = 2;
 inline constexpr std::int32_t pattern_database_application_id = 0x54504C4E;  // "TPLN"
 
+/// How PatternDatabase opens and writes its file.
 struct DatabaseOptions {
-    bool read_only = false;       // never writes; refuses a file that needs migrating
-    bool create = true;           // create the file and its directory when missing
-    int busy_timeout_ms = 10000;  // how long a writer waits for another writer's lock
-    bool synchronous_full = false;
-    CompressionOptions compression;
+    bool read_only = false;       ///< never writes; refuses a file that needs migrating
+    bool create = true;           ///< create the file and its directory when missing
+    int busy_timeout_ms = 10000;  ///< how long a writer waits for another writer's lock
+    bool synchronous_full = false;  ///< SQLite synchronous=FULL (else NORMAL under WAL)
+    CompressionOptions compression;  ///< how stored patterns are compressed
     /// Called with the running count after each pattern row written inside a transaction
     /// (store, store_all, migration); fault-injection tests stop the process at a chosen row.
     std::function<void(std::size_t rows_written)> after_row;
 };
 
+/// How PatternDatabase::store treats an existing name.
 struct StoreOptions {
-    bool replace = false;  // overwrite a pattern of the same name instead of refusing
+    bool replace = false;  ///< overwrite a pattern of the same name instead of refusing
 };
 
+/// What storing one pattern did.
 struct StoreReport {
-    CompressionReport compression;
-    bool replaced = false;
-    double seconds = 0;  // compression + transaction
+    CompressionReport compression;  ///< sizes before and after compression
+    bool replaced = false;          ///< a pattern of the same name was overwritten
+    double seconds = 0;  ///< compression + transaction
 };
 
 /// One row of list() / search(): the searchable fields without decoding the geometry.
 struct PatternSummary {
+    /// Name, designer, garment type and size of the pattern.
+    ///@{
     std::string name, designer, garment_type, size;
-    std::vector<std::string> tags;
+    ///@}
+    std::vector<std::string> tags;  ///< the pattern's tags
+    /// Piece and seam counts, size as JSON and as stored.
+    ///@{
     std::size_t pieces = 0, seams = 0, json_bytes = 0, stored_bytes = 0;
-    std::string updated;  // UTC, ISO 8601
+    ///@}
+    std::string updated;  ///< UTC, ISO 8601
 };
 
 /// Empty fields match anything. `name` and `designer` match a case-insensitive (ASCII)
 /// substring; `garment_type` and `size` match exactly; every tag in `tags` must be present.
 struct PatternQuery {
+    /// Name and designer (substrings), garment type and size (exact).
+    ///@{
     std::string name, designer, garment_type, size;
-    std::vector<std::string> tags;
+    ///@}
+    std::vector<std::string> tags;  ///< every one must be present
 };
 
 /// What opening did to the file.
 struct DatabaseOpenReport {
-    bool created = false;
+    bool created = false;  ///< the file did not exist
+    /// Schema version found, and after migrating.
+    ///@{
     int version_before = 0, version_after = 0;
+    ///@}
     /// Read-only open of a WAL file whose shared-memory index (-shm) could be neither opened nor
     /// created (a read-only directory, another user's file): opened as immutable, so changes
     /// another process makes while this one reads are not seen.
@@ -277,8 +292,9 @@ inline std::int64_t write_pattern_row_v2(sqlite3* db, const std::string& where, 
 
 /// One step of the schema history: brings a database at `to_version - 1` to `to_version`.
 struct DatabaseMigration {
-    int to_version;
-    const char* what;
+    int to_version;    ///< schema version after the step
+    const char* what;  ///< what the step changes, for messages
+    /// Runs the step inside the caller's transaction.
     void (*apply)(sqlite3* db, const std::string& where, const DatabaseOptions& options);
 };
 
@@ -350,11 +366,18 @@ inline const std::vector<DatabaseMigration>& pattern_database_migrations() {
     return steps;
 }
 
+/// A SQLite file of compressed patterns, searchable by name, designer, garment type, size and
+/// tags. Writes are transactions (all or nothing, even when the process is killed); several
+/// processes may read and write the file at once (WAL). Every member that touches the file
+/// throws InvalidInput naming it when SQLite fails.
 class PatternDatabase {
 public:
     /// Opens (creating when allowed) the database at `path` and migrates it to the current
     /// schema. Throws InvalidInput for a file that is damaged, not a pattern database, from a
     /// newer schema, or (read-only) from an older one.
+    ///
+    /// \throws InvalidInput also when the file is missing and `options.create` is off, its
+    ///         directory cannot be created, or the file cannot be opened.
     explicit PatternDatabase(std::string path, DatabaseOptions options = {})
         : path_(std::move(path)), options_(std::move(options)) {
         open();
@@ -363,20 +386,30 @@ public:
     PatternDatabase(const PatternDatabase&) = delete;
     PatternDatabase& operator=(const PatternDatabase&) = delete;
 
+    /// The database file.
     const std::string& path() const { return path_; }
+    /// The file's schema version (pattern_database_schema_version after opening).
     int schema_version() const {
         return int(internal::sql_integer(db_, path_, "PRAGMA user_version"));
     }
+    /// What opening did to the file.
     const DatabaseOpenReport& open_report() const { return open_report_; }
 
     /// Stores `p` under its name. A missing name, or an existing name without
     /// `options.replace`, is an InvalidInput.
+    ///
+    /// \throws InvalidInput also when the database is read-only, or as store_all.
     StoreReport store(const Pattern& p, const StoreOptions& options = {}) {
         return store_all({p}, options).front();
     }
 
     /// Stores every pattern in one transaction: all of them or, after any refusal, an error or
     /// a killed process, none. Two patterns of one batch with the same name are refused.
+    ///
+    /// \throws InvalidInput on a read-only database, a pattern without a name, a name given
+    ///         twice in the batch or already stored without `options.replace`, bad compression
+    ///         options, or a SQLite failure; nothing is stored then.
+    /// \throws std::runtime_error when zstd fails to compress.
     std::vector<StoreReport> store_all(const std::vector<Pattern>& patterns,
                                        const StoreOptions& options = {}) {
         using namespace internal;
@@ -424,6 +457,8 @@ public:
     }
 
     /// The pattern named `name`, or nullopt.
+    ///
+    /// \throws InvalidInput when the stored blob cannot be decoded, or SQLite fails.
     std::optional<Pattern> find(const std::string& name) const {
         internal::SqlStatement st(db_, path_, "SELECT data FROM patterns WHERE name=?1");
         st.bind(1, name);
@@ -437,6 +472,8 @@ public:
     }
 
     /// The pattern named `name`; InvalidInput when there is none.
+    ///
+    /// \throws InvalidInput when there is none, its blob cannot be decoded, or SQLite fails.
     Pattern load(const std::string& name) const {
         std::optional<Pattern> p = find(name);
         if (!p) {
@@ -446,13 +483,17 @@ public:
         return std::move(*p);
     }
 
+    /// Whether a pattern named `name` is stored.
     bool contains(const std::string& name) const { return row_id(name) > 0; }
 
+    /// Number of stored patterns.
     std::size_t count() const {
         return std::size_t(internal::sql_integer(db_, path_, "SELECT count(*) FROM patterns"));
     }
 
     /// Removes the pattern; false when there was none.
+    ///
+    /// \throws InvalidInput when the database is read-only, or SQLite fails.
     bool remove(const std::string& name) {
         require_writable("remove pattern '" + name + "'");
         internal::SqlTransaction tx(db_, path_);
@@ -467,6 +508,7 @@ public:
         return id > 0;
     }
 
+    /// Every stored pattern, by name.
     std::vector<PatternSummary> list() const { return search({}); }
 
     /// Patterns matching every non-empty field of `q`, by name.

@@ -23,6 +23,8 @@ namespace tapeline::pattern {
 /// The importer a file needs ("freesewing", "garmentcode" or "json"), recognised from its JSON
 /// keys. Throws InvalidInput naming the file when it cannot be opened, is not JSON, or matches no
 /// known format.
+///
+/// \throws InvalidInput naming the file, as above.
 inline std::string detect_pattern_format(const std::string& path) {
     // read_text_file refuses directories and oversized files; the depth check runs before the
     // parser so that hostile nesting cannot exhaust the stack.
@@ -53,6 +55,9 @@ inline std::string detect_pattern_format(const std::string& path) {
 /// Reads a pattern file with the importer `format` ("freesewing", "garmentcode", "json"; "auto" or
 /// empty: detect_pattern_format). `report` (optional) receives what the importer did.
 /// Throws InvalidInput for an unknown format name and whatever the importer throws.
+///
+/// \throws InvalidInput for an unknown format name, an undetectable file, or from the importer
+///         (read_freesewing, read_garmentcode, read_pattern_json).
 inline Pattern read_pattern_file(const std::string& path, std::string format = "auto",
                                  ImportReport* report = nullptr) {
     if (format.empty() || format == "auto") {

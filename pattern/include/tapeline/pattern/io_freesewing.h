@@ -141,6 +141,11 @@ inline std::optional<std::size_t> edge_on_line(const Outline& o, Point2 a, Point
 }  // namespace internal
 
 /// Builds a pattern from a parsed FreeSewing export; `source` names it in messages.
+///
+/// \param report when not null, receives the counts and notes of the import.
+/// \throws InvalidInput naming the source and the JSON path: a member of the wrong type, an
+///         unknown unit or path operation, an operation before any move, a seam path without
+///         edges or with several subpaths.
 inline Pattern freesewing_from_json(const nlohmann::json& doc, const std::string& source,
                                     ImportReport* report = nullptr) {
     using namespace internal;
@@ -327,6 +332,9 @@ inline Pattern freesewing_from_json(const nlohmann::json& doc, const std::string
 }
 
 /// Reads a FreeSewing JSON export (see the file comment for the mapping).
+///
+/// \throws InvalidInput naming the file when it cannot be read or is not JSON.
+/// \throws InvalidInput also as freesewing_from_json.
 inline Pattern read_freesewing(const std::string& path, ImportReport* report = nullptr) {
     return freesewing_from_json(internal::parse_json_file(path), path, report);
 }

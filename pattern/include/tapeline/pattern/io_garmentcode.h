@@ -58,6 +58,11 @@ inline Point2 gc_relative(const Point2& s, const Point2& e, const Point2& uv) {
 
 /// Builds a pattern from a parsed GarmentCode specification; `name` becomes the pattern name and
 /// `source` names it in messages.
+///
+/// \param report when not null, receives the counts and notes of the import.
+/// \throws InvalidInput naming the source and the JSON path: a member of the wrong type, an
+///         unknown unit or curvature type, a bad edge, placement or stitch, a stitch or panel
+///         order naming a panel or edge that does not exist.
 inline Pattern garmentcode_from_json(const nlohmann::json& doc, const std::string& source,
                                      const std::string& name = "garmentcode",
                                      ImportReport* report = nullptr) {
@@ -260,6 +265,9 @@ inline Pattern garmentcode_from_json(const nlohmann::json& doc, const std::strin
 }
 
 /// Reads `<name>_specification.json`; the pattern is named after the file (without the suffix).
+///
+/// \throws InvalidInput naming the file when it cannot be read or is not JSON.
+/// \throws InvalidInput also as garmentcode_from_json.
 inline Pattern read_garmentcode(const std::string& path, ImportReport* report = nullptr) {
     std::string stem = path.substr(path.find_last_of('/') + 1);
     for (const std::string suffix : {".json", "_specification"}) {

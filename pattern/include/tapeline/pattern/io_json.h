@@ -212,6 +212,10 @@ inline nlohmann::json to_json(const Pattern& p) {
 }
 
 /// Reads a pattern from its JSON document; `source` names it in messages.
+///
+/// \throws InvalidInput naming the source and the JSON path: another format, a newer format
+///         version, an unknown unit, edge type, rotation order or direction, a member of the
+///         wrong type or count.
 inline Pattern from_json(const nlohmann::json& j, const std::string& source) {
     using namespace internal;
     const Where top{source, ""};
@@ -401,10 +405,16 @@ inline void write_pattern_json(const Pattern& p, std::ostream& out, int indent =
 }
 
 /// Writes the pattern to `path` atomically (a temporary file renamed into place).
+///
+/// \throws InvalidInput naming `path` when it cannot be written; `path` is left untouched.
 inline void write_pattern_json(const Pattern& p, const std::string& path, int indent = 1) {
     write_file_atomically(path, [&](std::ostream& out) { write_pattern_json(p, out, indent); });
 }
 
+/// Reads a pattern JSON file (see from_json).
+///
+/// \throws InvalidInput naming the file when it cannot be read or is not JSON.
+/// \throws InvalidInput also as from_json.
 inline Pattern read_pattern_json(const std::string& path) {
     return from_json(internal::parse_json_file(path), path);
 }

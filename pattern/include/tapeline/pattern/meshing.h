@@ -319,6 +319,13 @@ inline std::vector<std::uint32_t> side_vertices(const PieceMesh& mesh,
 /// Meshes every piece (see the file comment) and pairs the vertices of every seam.
 /// Throws InvalidInput for bad options, seams naming missing pieces or edges, and outlines whose
 /// sampling intersects itself.
+///
+/// \throws InvalidInput for a non-positive target edge length or curve tolerance, an aspect
+///         bound out of range, a seam naming a missing piece or edges, an outline with fewer
+///         than 3 points, passing twice through a point, or whose sampling intersects itself.
+/// \throws SolverFailure when overlapping seams ask for different vertex counts on one edge,
+///         the refinement changes an outline, or the two sides of a seam get different vertex
+///         counts.
 inline PatternMesh mesh_pattern(const Pattern& pattern, const MeshingOptions& options = {},
                                 MeshingReport* report = nullptr) {
     using namespace internal;

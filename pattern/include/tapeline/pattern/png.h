@@ -36,21 +36,27 @@
 
 namespace tapeline::pattern {
 
+/// Resolution, layout and limits of the PNG drawing.
 struct PngOptions {
-    double pixels_per_mm = 2;
-    SvgOptions layout;                    // page layout and notch length, as for the SVG
-    double max_megapixels = 100;          // refuse larger images (400 MB of RGBA)
-    bool transparent_background = false;  // else white
-    bool draw_text = true;                // names, cut counts, seam names, scale-bar label
+    double pixels_per_mm = 2;             ///< resolution (> 0)
+    SvgOptions layout;                    ///< page layout and notch length, as for the SVG
+    double max_megapixels = 100;          ///< refuse larger images (400 MB of RGBA)
+    bool transparent_background = false;  ///< else white
+    bool draw_text = true;                ///< names, cut counts, seam names, scale-bar label
 };
 
+/// An 8-bit RGBA raster (draw/canvas.h).
 using RgbaImage = draw::RgbaImage;
 
+/// What the PNG export produced.
 struct PngReport {
+    /// Image size.
+    ///@{
     std::size_t width_px = 0, height_px = 0;
-    double pixels_per_mm = 0;
-    SvgReport layout;  // page size in mm and piece offsets, as in the SVG
-    std::size_t png_bytes = 0;
+    ///@}
+    double pixels_per_mm = 0;  ///< resolution used
+    SvgReport layout;  ///< page size in mm and piece offsets, as in the SVG
+    std::size_t png_bytes = 0;  ///< size of the encoded file
 };
 
 /// PNG bytes of an RGBA image; `pixels_per_mm` goes into the pHYs chunk.
@@ -58,6 +64,9 @@ using draw::encode_png;
 
 /// The drawing as an RGBA image (see the file comment). Throws InvalidInput for a resolution that
 /// is not positive or would exceed `max_megapixels`.
+///
+/// \throws InvalidInput for a resolution that is not positive or an image beyond
+///         `max_megapixels`.
 inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o = {},
                                    PngReport* report = nullptr) {
     using namespace internal;
@@ -178,6 +187,8 @@ inline RgbaImage rasterise_pattern(const Pattern& pattern, const PngOptions& o =
 }
 
 /// Writes the PNG to `out`.
+///
+/// \throws InvalidInput as rasterise_pattern.
 inline PngReport write_png(const Pattern& pattern, std::ostream& out, const PngOptions& o = {}) {
     PngReport rep;
     rep.png_bytes = draw::write_png(out, rasterise_pattern(pattern, o, &rep), o.pixels_per_mm);
@@ -185,6 +196,9 @@ inline PngReport write_png(const Pattern& pattern, std::ostream& out, const PngO
 }
 
 /// Writes the PNG to `path` atomically.
+///
+/// \throws InvalidInput as rasterise_pattern, or naming `path` when it cannot be written;
+///         `path` is left untouched then.
 inline PngReport write_png(const Pattern& pattern, const std::string& path,
                            const PngOptions& o = {}) {
     PngReport rep;

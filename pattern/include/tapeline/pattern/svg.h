@@ -24,19 +24,25 @@
 
 namespace tapeline::pattern {
 
+/// Page layout and marks of the SVG drawing (the PNG uses the same layout).
 struct SvgOptions {
-    double margin_mm = 20;
-    double gap_mm = 30;              // between pieces
-    double max_row_width_mm = 1600;  // start a new row beyond this
-    double scale_bar_mm = 100;
-    double notch_length_mm = 6;
+    double margin_mm = 20;  ///< around the page
+    double gap_mm = 30;              ///< between pieces
+    double max_row_width_mm = 1600;  ///< start a new row beyond this
+    double scale_bar_mm = 100;  ///< length of the scale bar
+    double notch_length_mm = 6;  ///< length of a notch tick
+    /// Chord tolerance of the bounding boxes only; curves are written exactly.
     double sample_tolerance_mm = 0.05;  // for bounding boxes only; curves are written exactly
-    bool seam_marks = true;
+    bool seam_marks = true;  ///< draw seam names at the middle of their edges
 };
 
 /// Where each piece went, for tests and callers that annotate the drawing.
 struct SvgReport {
+    /// Page size.
+    ///@{
     double width_mm = 0, height_mm = 0;
+    ///@}
+    /// Per piece: model point p is drawn at (p.x + off.x, off.y − p.y).
     std::vector<Point2> piece_offsets;  // model point p is drawn at (p.x + off.x, off.y − p.y)
 };
 
@@ -130,7 +136,8 @@ inline std::optional<std::pair<Point2, Point2>> seam_mark(const Piece& piece, co
 
 }  // namespace internal
 
-/// Writes the drawing to `out`.
+/// Writes the drawing to `out`. Never throws for a valid pattern; stream errors are the
+/// caller's to check.
 inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
                            const SvgOptions& options = {}) {
     using namespace internal;
@@ -256,6 +263,7 @@ inline SvgReport write_svg(const Pattern& pattern, std::ostream& out,
     return rep;
 }
 
+/// The drawing as an SVG string.
 inline std::string to_svg(const Pattern& pattern, const SvgOptions& options = {}) {
     std::ostringstream ss;
     write_svg(pattern, ss, options);
@@ -263,6 +271,8 @@ inline std::string to_svg(const Pattern& pattern, const SvgOptions& options = {}
 }
 
 /// Writes the drawing to `path` atomically.
+///
+/// \throws InvalidInput naming `path` when it cannot be written; `path` is left untouched.
 inline SvgReport write_svg(const Pattern& pattern, const std::string& path,
                            const SvgOptions& options = {}) {
     SvgReport rep;

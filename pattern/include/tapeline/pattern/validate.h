@@ -21,34 +21,37 @@
 
 namespace tapeline::pattern {
 
+/// Tolerances and limits of validate().
 struct ValidationOptions {
-    double closure_tolerance_mm = 1e-3;  // largest gap between consecutive edges
-    double sample_tolerance_mm = 0.01;   // polyline tolerance of the self-intersection test
-    bool check_self_intersection = true;
+    double closure_tolerance_mm = 1e-3;  ///< largest gap between consecutive edges
+    double sample_tolerance_mm = 0.01;   ///< polyline tolerance of the self-intersection test
+    bool check_self_intersection = true;  ///< test outlines for self-intersection
     /// Seam sides differing by more than max(absolute, relative · longer side) are reported.
     double seam_length_tolerance_mm = 0.5;
-    double seam_length_relative_tolerance = 0.0;
-    double min_edge_length_mm = 1e-6;  // shorter edges are reported as degenerate (warning)
+    double seam_length_relative_tolerance = 0.0;  ///< relative part of the seam tolerance
+    double min_edge_length_mm = 1e-6;  ///< shorter edges are reported as degenerate (warning)
     /// Largest |coordinate| of an edge end: 10 km. Beyond it a pattern is a unit error, and
     /// sampling its curves at sample_tolerance_mm would not end.
     double max_coordinate_mm = 1e7;
-    double min_piece_area_mm2 = 1.0;  // outlines enclosing less are reported (error)
+    double min_piece_area_mm2 = 1.0;  ///< outlines enclosing less are reported (error)
 };
 
+/// One problem found by validate().
 struct ValidationIssue {
-    std::string code;   // open_outline, self_intersection, non_finite, missing_edge, ...
-    std::string piece;  // empty when the issue is not about one piece
-    std::optional<std::size_t> edge;
-    std::string message;  // one line naming the piece and edge
+    std::string code;   ///< open_outline, self_intersection, non_finite, missing_edge, ...
+    std::string piece;  ///< empty when the issue is not about one piece
+    std::optional<std::size_t> edge;  ///< the outline edge concerned, if one
+    std::string message;  ///< one line naming the piece and edge
 };
 
+/// What validate() found: errors make a pattern unusable, warnings do not.
 struct ValidationReport {
-    std::vector<ValidationIssue> errors;
-    std::vector<ValidationIssue> warnings;
-    std::size_t pieces_checked = 0;
-    std::size_t seams_checked = 0;
-    double largest_seam_mismatch_mm = 0;  // over all seams, |length A − length B|
-    bool ok() const { return errors.empty(); }
+    std::vector<ValidationIssue> errors;  ///< problems that make the pattern unusable
+    std::vector<ValidationIssue> warnings;  ///< problems worth a look
+    std::size_t pieces_checked = 0;  ///< pieces validated
+    std::size_t seams_checked = 0;  ///< seams validated
+    double largest_seam_mismatch_mm = 0;  ///< over all seams, |length A − length B|
+    bool ok() const { return errors.empty(); }  ///< no errors
 };
 
 namespace internal {
@@ -376,7 +379,9 @@ inline ValidationReport validate(const Pattern& pattern, const ValidationOptions
     return rep;
 }
 
-/// Length of a bound feature (the features must exist: see validate()).
+/// Length of a bound feature (the features must exist: see validate()); 0 for a missing piece.
+///
+/// \throws std::out_of_range when an edge or point index of `f` is out of range.
 inline double feature_length(const Pattern& pattern, const BoundFeature& f) {
     const Piece* piece = find_piece(pattern, f.piece);
     if (!piece) {
@@ -394,6 +399,8 @@ inline double feature_length(const Pattern& pattern, const BoundFeature& f) {
 
 /// validate(), then throws InvalidInput with the first error, prefixed by `context` (a file name,
 /// or the pattern's source when empty). Returns the report (warnings) otherwise.
+///
+/// \throws InvalidInput with the first error and the count of the others.
 inline ValidationReport require_valid(const Pattern& pattern, const ValidationOptions& options = {},
                                       const std::string& context = {}) {
     ValidationReport rep = validate(pattern, options);
