@@ -15,10 +15,14 @@
 
 namespace tapeline::grading {
 
+/// How far one piece's outline lies from its reference after alignment.
 struct PieceDeviation {
-    std::string piece;
+    std::string piece;  ///< piece name
+    /// Mean and largest distance of the outline samples to the reference outline.
+    ///@{
     double mean_mm = 0, max_mm = 0;
-    double rotation_deg = 0;
+    ///@}
+    double rotation_deg = 0;  ///< rotation of the best alignment
 };
 
 namespace internal {

@@ -29,19 +29,25 @@
 
 namespace tapeline::grading {
 
+/// A span between two named points of a piece.
 struct NamedSpan {
+    /// Names of the span's end points.
+    ///@{
     std::string from, to;
-    double count = 0;  // 0: the rule's count
+    ///@}
+    double count = 0;  ///< 0: the rule's count
 };
 
+/// How a measurement binds to the named points of a drafted pattern.
 struct NamedSpanRule {
-    std::string measurement;
-    std::vector<NamedSpan> spans;  // alternatives, first found on a piece wins
-    bool girth = false;
-    double count = 0;    // 0: 2 on a fold, else 1 (girth); 1 (per piece)
-    bool chain = false;  // bind the outline edges between the points, not the straight span
+    std::string measurement;  ///< the measurement bound
+    std::vector<NamedSpan> spans;  ///< alternatives, first found on a piece wins
+    bool girth = false;  ///< one binding over every piece (else one per piece)
+    double count = 0;    ///< 0: 2 on a fold, else 1 (girth); 1 (per piece)
+    bool chain = false;  ///< bind the outline edges between the points, not the straight span
 };
 
+/// The span rules of FreeSewing's named points.
 inline const std::vector<NamedSpanRule>& freesewing_span_rules() {
     static const std::vector<NamedSpanRule> rules = {
         {"chest", {{"cbChest", "chest"}}, true, 0},

@@ -433,6 +433,17 @@ inline StyleMetrics style_metrics(const Model& m, const Solution& s, double styl
 /// those of `seams` it does not hold by name (e.g. pattern::freesewing_seams(base)). Throws
 /// InvalidInput when a binding names a measurement `to` lacks or a seam names a missing piece or
 /// edge, SolverFailure when Ceres fails.
+///
+/// \param base the pattern to grade; its measurement bindings say what to fit.
+/// \param from the measurements `base` was drafted for.
+/// \param to the target measurements.
+/// \param o weights, search sizes, seed and thread limit.
+/// \param seams seams added to the pattern's own (by name) for the seam terms.
+/// \return the graded pattern (Ceres optimum), the Pareto front of the search, the report.
+/// \throws InvalidInput when `base` has no bindings, a binding names a piece, edge or point
+///         that does not exist or a measurement that `from` or `to` lacks, or a seam names a
+///         missing piece or edges.
+/// \throws SolverFailure when Ceres finds no usable solution.
 inline GradeResult grade_pattern(const tp::Pattern& base, const sizes::MeasurementSet& from,
                                  const sizes::MeasurementSet& to, const GradingOptions& o = {},
                                  const std::vector<SeamSpec>& seams = {}) {
