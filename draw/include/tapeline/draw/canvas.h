@@ -31,7 +31,10 @@ namespace tapeline::draw {
 
 /// A colour, each channel in [0, 1].
 struct Rgb {
+    /// Red, green, blue.
+    ///@{
     double r, g, b;
+    ///@}
 };
 
 /// Linear interpolation from a (t = 0) to b (t = 1), per channel.
@@ -42,9 +45,13 @@ inline Rgb mix(Rgb a, Rgb b, double t) {
 /// SVG's text-anchor: x is the left end of the text, its middle, or its right end.
 enum class TextAnchor { start, middle, end };
 
+/// An 8-bit RGBA raster.
 struct RgbaImage {
+    /// Size in pixels.
+    ///@{
     std::size_t width = 0, height = 0;
-    std::vector<std::uint8_t> rgba;  // row-major, top row first, 8 bits per channel
+    ///@}
+    std::vector<std::uint8_t> rgba;  ///< row-major, top row first, 8 bits per channel
 
     /// A width × height image whose every byte (all four channels) is `value`: 255 opaque white,
     /// 0 transparent.
@@ -55,16 +62,22 @@ struct RgbaImage {
         img.rgba.assign(4 * width * height, value);
         return img;
     }
+    /// The four channels of pixel (x, y); not bounds-checked.
     const std::uint8_t* pixel(std::size_t x, std::size_t y) const {
         return &rgba[4 * (y * width + x)];
     }
 };
 
+/// Drawing on an RgbaImage in page millimetres (y down): anti-aliased strokes, fills, markers
+/// and bitmap-font text. Every picture of the project is drawn through it.
 class Canvas {
 public:
+    /// Draws on `img` (which must outlive the canvas) at `ppmm` pixels per millimetre.
     Canvas(RgbaImage& img, double ppmm) : img_(img), s_(ppmm) {}
 
+    /// Resolution of the canvas.
     double pixels_per_mm() const { return s_; }
+    /// The image drawn on.
     RgbaImage& image() { return img_; }
 
     /// A stroke from a to b in page millimetres (y down), width in mm.
@@ -172,6 +185,7 @@ public:
         }
     }
 
+    /// Fills the axis-aligned rectangle with corners a and b (page mm), opaque.
     void fill_rect(Vec2 a, Vec2 b, Rgb c) {
         a = s_ * a;
         b = s_ * b;
@@ -227,7 +241,7 @@ public:
                             internal::kFontPixelsPerEm;
     }
 
-    /// Text with its baseline at `at` (page mm), as an SVG <text> of that font-size and anchor.
+    /// Text with its baseline at `at` (page mm), as an SVG `<text>` of that font-size and anchor.
     void text(const std::string& s, Vec2 at, double font_size_mm, TextAnchor anchor, Rgb c) {
         using namespace internal;
         const std::vector<const Glyph*> glyphs = text_glyphs(s);

@@ -48,13 +48,16 @@ struct OrthoView {
     double v_max = 0;             ///< p·up drawn at view-local y = 0
     Vec2 offset_mm{0, 0};         ///< where view-local (0, 0) sits on the page
 
+    /// View-local picture millimetres of model point p (y down).
     Vec2 local(const Vec3& p) const {
         return {scale * (vec3::dot(p, right) - u_min), scale * (v_max - vec3::dot(p, up))};
     }
+    /// Page millimetres of model point p.
     Vec2 page(const Vec3& p) const {
         const Vec2 l = local(p);
         return {offset_mm.x + l.x, offset_mm.y + l.y};
     }
+    /// Distance of p towards the viewer (larger: nearer).
     double depth(const Vec3& p) const { return vec3::dot(p, toward_viewer); }
 };
 
@@ -74,20 +77,20 @@ inline OrthoView left_side_view() {
 /// Lambert shading in one colour: shade = ambient + diffuse max(0, n·l), the light l towards the
 /// viewer, moved by `light_right` along the view's right and `light_up` along its up.
 struct MeshShading {
-    Rgb colour{0.86, 0.84, 0.82};
-    double ambient = 0.32;
-    double diffuse = 0.68;
-    double light_right = -0.35;
-    double light_up = 0.45;
+    Rgb colour{0.86, 0.84, 0.82};  ///< base colour
+    double ambient = 0.32;  ///< light everywhere
+    double diffuse = 0.68;  ///< weight of n·l
+    double light_right = -0.35;  ///< light direction offset along the view's right
+    double light_up = 0.45;  ///< light direction offset along the view's up
 };
 
 /// A rendered view: the shaded mesh (transparent where there is none) and its depth buffer
 /// (−infinity where there is none).
 struct RenderedView {
-    OrthoView view;
-    double pixels_per_mm = 1;
-    RgbaImage image;
-    std::vector<float> depth;
+    OrthoView view;            ///< the projection used
+    double pixels_per_mm = 1;  ///< resolution
+    RgbaImage image;           ///< the shaded mesh
+    std::vector<float> depth;  ///< per pixel, row-major like `image`
 
     /// Whether p is no more than `tolerance` behind the surface seen around its pixel (see the
     /// file comment).
@@ -187,6 +190,9 @@ inline std::vector<Vec3> vertex_normals(const std::vector<Vec3>& pts, const Mesh
 /// `pixels_per_mm` (see the file comment). `normals`: one per point (vertex_normals). Throws
 /// InvalidInput for a triangle that names a point beyond `pts` (check_triangles) or a normal list
 /// of another size.
+///
+/// \throws InvalidInput for a triangle naming a point beyond `pts`, or a normal count that
+///         is not the point count.
 inline RenderedView render_mesh(const OrthoView& view, double width_mm, double height_mm,
                                 double pixels_per_mm, const std::vector<Vec3>& pts,
                                 const MeshTriangles& tris, const std::vector<Vec3>& normals,

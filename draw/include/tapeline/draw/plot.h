@@ -24,39 +24,67 @@ namespace tapeline::draw {
 
 /// One set of points drawn alike, named in the legend (an empty label stays out of the legend).
 struct PlotSeries {
-    std::string label;
+    std::string label;  ///< legend entry; empty: not in the legend
     std::vector<Vec2> points;  ///< data coordinates
-    Rgb colour{0, 0, 0};
-    enum class Marker { disc, ring } marker = Marker::disc;
-    double radius_px = 3;
+    Rgb colour{0, 0, 0};  ///< marker colour
+    /// Marker shape: filled disc or ring.
+    enum class Marker { disc, ring } marker = Marker::disc;  ///< marker shape
+    double radius_px = 3;  ///< marker radius
 };
 
+/// Size, margins, titles and fonts of a plot.
 struct PlotOptions {
+    /// Image size.
+    ///@{
     std::size_t width_px = 640, height_px = 480;
+    ///@}
+    /// Margins to the plot box.
+    ///@{
     double left_px = 80, right_px = 30, top_px = 50, bottom_px = 60;  ///< margins to the plot box
+    ///@}
+    /// Plot title and axis titles (empty: none).
+    ///@{
     std::string title, x_label, y_label;
+    ///@}
+    /// Widen the ranges to include 0.
+    ///@{
     bool x_from_zero = true, y_from_zero = true;  ///< widen the ranges to include 0
+    ///@}
     int ticks = 5;                                ///< about this many intervals per axis
     double font_px = 10;                          ///< tick labels, axis titles, legend
-    double title_font_px = 20;
+    double title_font_px = 20;  ///< plot title
 };
 
 /// One axis: its range and tick values, both in data units.
 struct PlotAxis {
+    /// Range of the axis.
+    ///@{
     double lo = 0, hi = 1;
-    double step = 1;
-    std::vector<double> ticks;
+    ///@}
+    double step = 1;            ///< distance between ticks
+    std::vector<double> ticks;  ///< tick values, lo to hi
 };
 
 /// Where a plot put things: the axes, the plot box and the legend's box (all zero when no series
 /// has a label) in pixels (y down).
 struct PlotLayout {
+    /// The two axes.
+    ///@{
     PlotAxis x, y;
+    ///@}
+    /// The plot box.
+    ///@{
     double box_left = 0, box_right = 0, box_top = 0, box_bottom = 0;
+    ///@}
+    /// The legend's box.
+    ///@{
     double legend_left = 0, legend_top = 0, legend_right = 0, legend_bottom = 0;
+    ///@}
+    /// Pixel column of data value v.
     double x_px(double v) const {
         return box_left + (v - x.lo) / (x.hi - x.lo) * (box_right - box_left);
     }
+    /// Pixel row of data value v.
     double y_px(double v) const {
         return box_bottom - (v - y.lo) / (y.hi - y.lo) * (box_bottom - box_top);
     }
@@ -75,6 +103,8 @@ inline double nice_step(double raw) {
 
 /// The axis over [lo, hi] (lo ≤ hi, finite) with about `intervals` nice intervals, the range
 /// rounded outwards to whole steps. An empty range becomes the step that starts at its value.
+///
+/// \throws InvalidInput when lo or hi is not finite or lo > hi.
 inline PlotAxis nice_axis(double lo, double hi, int intervals) {
     if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi) {
         throw InvalidInput("plot axis: range [" + std::to_string(lo) + ", " + std::to_string(hi) +
@@ -108,6 +138,10 @@ inline std::string tick_label(double v, double step) {
 }
 
 /// The layout a scatter plot of `series` takes under `o` (no drawing).
+///
+/// Non-finite points are left out.
+///
+/// \throws InvalidInput when the margins leave no room in the image.
 inline PlotLayout plot_layout(const std::vector<PlotSeries>& series, const PlotOptions& o) {
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
     for (const PlotSeries& s : series) {
@@ -147,6 +181,8 @@ inline PlotLayout plot_layout(const std::vector<PlotSeries>& series, const PlotO
 }
 
 /// The scatter plot as an opaque image on white; `layout` receives where things went.
+///
+/// \throws InvalidInput as plot_layout.
 inline RgbaImage scatter_plot(const std::vector<PlotSeries>& series, const PlotOptions& o = {},
                               PlotLayout* layout = nullptr) {
     PlotLayout l = plot_layout(series, o);

@@ -62,6 +62,9 @@ inline bool png_encode_raw(const RgbaImage& img, double ppmm, std::vector<std::u
 }  // namespace internal
 
 /// PNG bytes of an RGBA image; `pixels_per_mm` goes into the pHYs chunk.
+///
+/// \throws InvalidInput when the image is empty or its byte count is not 4 width height.
+/// \throws std::runtime_error when libpng fails (out of memory).
 inline std::vector<std::uint8_t> encode_png(const RgbaImage& img, double pixels_per_mm) {
     if (img.width == 0 || img.height == 0 || img.rgba.size() != 4 * img.width * img.height) {
         throw InvalidInput("PNG encoding: image of " + std::to_string(img.width) + " × " +
@@ -81,6 +84,8 @@ inline std::vector<std::uint8_t> encode_png(const RgbaImage& img, double pixels_
 }
 
 /// Writes the PNG of `img` to `out`; returns the number of bytes written.
+///
+/// \throws InvalidInput and std::runtime_error as encode_png.
 inline std::size_t write_png(std::ostream& out, const RgbaImage& img, double pixels_per_mm) {
     const std::vector<std::uint8_t> bytes = encode_png(img, pixels_per_mm);
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
@@ -88,6 +93,9 @@ inline std::size_t write_png(std::ostream& out, const RgbaImage& img, double pix
 }
 
 /// Writes the PNG of `img` to `path` atomically (no half-written file on failure).
+///
+/// \throws InvalidInput and std::runtime_error as encode_png; InvalidInput naming `path` when it
+///         cannot be written.
 inline std::size_t write_png(const std::string& path, const RgbaImage& img, double pixels_per_mm) {
     std::size_t n = 0;
     write_file_atomically(
