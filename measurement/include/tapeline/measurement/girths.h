@@ -464,6 +464,10 @@ private:
 
 /// Girths of a body from its landmarks (see the top of this file). Girths whose landmarks are
 /// missing are listed in MeasurementSet::missing with a reason; all others are produced.
+/// Nothing is thrown for a missing girth: the mesh was checked when the Body was made
+/// (make_body).
+///
+/// \param sections_cut when not null, receives the number of plane sections cut.
 inline MeasurementSet measure_girths(const Body& body, const LandmarkSet& landmarks,
                                      const MeasureOptions& options = {},
                                      std::size_t* sections_cut = nullptr) {

@@ -42,6 +42,10 @@ struct LandmarkOverrides {
 };
 
 /// Parses an override document (see the top of this file); `where` names it in messages.
+///
+/// \throws InvalidInput naming `where`: invalid JSON, no "landmarks" object, a "frame" other
+///         than "input" or "canonical", an unknown landmark name, or a point that is not three
+///         finite numbers.
 inline LandmarkOverrides parse_landmark_overrides(const std::string& text,
                                                   const std::string& where) {
     nlohmann::json doc;
@@ -88,6 +92,8 @@ inline LandmarkOverrides parse_landmark_overrides(const std::string& text,
 }
 
 /// Reads an override file; InvalidInput naming the file when it cannot be read or is invalid.
+///
+/// \throws InvalidInput when the file cannot be opened, or as parse_landmark_overrides.
 inline LandmarkOverrides read_landmark_overrides(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -105,6 +111,8 @@ struct LandmarkReport {
 };
 
 /// Every landmark of landmark_names() on the body: found, overridden or not_found with a reason.
+/// A landmark that cannot be found is a value (not_found), not an exception: the mesh was
+/// checked when the Body was made (make_body).
 inline LandmarkSet find_landmarks(const Body& body, const MeasureOptions& options = {},
                                   const LandmarkOverrides& overrides = {},
                                   LandmarkReport* report = nullptr) {

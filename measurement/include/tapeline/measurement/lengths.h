@@ -36,31 +36,47 @@
 namespace tapeline::measurement {
 
 /// One length to take: its names and the surface points the path goes through, in order.
+///
+/// \tparam TriangleMesh the body mesh type; a model of `FaceGraph`.
 template <class TriangleMesh>
 struct SkinLength {
     std::string name;  ///< a catalogue name (tapeline/sizes/catalogue.h)
-    std::vector<std::string> landmarks;
-    std::vector<geodesic::FaceLocation<TriangleMesh>> waypoints;
+    std::vector<std::string> landmarks;  ///< the landmarks the path passes, in order
+    std::vector<geodesic::FaceLocation<TriangleMesh>> waypoints;  ///< their surface points
     double floor_drop = 0;  ///< mm added after the last waypoint: straight down to the floor
 };
 
+/// The lengths that can be taken and those that cannot, with the reason.
+///
+/// \tparam TriangleMesh the body mesh type; a model of `FaceGraph`.
 template <class TriangleMesh>
 struct SkinLengthPlan {
-    std::vector<SkinLength<TriangleMesh>> lengths;
-    std::vector<MissingMeasurement> missing;
+    std::vector<SkinLength<TriangleMesh>> lengths;  ///< lengths to take
+    std::vector<MissingMeasurement> missing;        ///< lengths that cannot be taken, and why
 };
 
 /// Finds surface points of a body mesh from canonical-frame queries (an AABB tree over its faces).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` (CGAL::Surface_mesh, ...), every face a
+///         triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `geom_traits` (a CGAL kernel).
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 class SkinLocator {
 public:
-    using Location = geodesic::FaceLocation<TriangleMesh>;
+    using Location = geodesic::FaceLocation<TriangleMesh>;  ///< a face and barycentric coordinates
+    /// The kernel of the named parameters.
     using GeomTraits = typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type;
+    /// The vertex point map of the named parameters.
     using VertexPointMap =
         typename CGAL::GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+    /// AABB primitive: one face.
     using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, VertexPointMap>;
-    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<GeomTraits, Primitive>>;
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<GeomTraits, Primitive>>;  ///< the face tree
 
+    /// Builds the tree over the faces of `tm` (which must outlive the locator); `frame` maps
+    /// canonical coordinates to the mesh's.
     SkinLocator(const TriangleMesh& tm, const BodyFrame& frame,
                 const NamedParameters& np = CGAL::parameters::default_values())
         : tm_(tm), frame_(frame), np_(np) {
@@ -148,6 +164,8 @@ inline Vec3 mid(const Vec3& a, const Vec3& b) {
 /// Which lengths can be taken from these landmarks and through which surface points; the others
 /// are `missing` with a reason naming the landmark. Limb lengths use the body's right side
 /// (the left when a right landmark is missing), like the unsuffixed limb girths.
+///
+/// \tparam TriangleMesh, NamedParameters as for SkinLocator.
 template <class TriangleMesh, class NamedParameters>
 SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, NamedParameters>& at,
                                                const LandmarkSet& lm) {
@@ -328,6 +346,10 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
 /// Takes every length of the plan with `solver` and adds it to `set` (value: the sum of the
 /// on-mesh path lengths in mm plus the floor drop; points: the path, canonical mm). A segment
 /// whose ends lie on different components of the mesh makes the length missing.
+///
+/// \tparam TriangleMesh, NamedParameters as for geodesic::GeodesicPathSolver.
+/// \throws InvalidInput when a waypoint is not on the solver's mesh.
+/// \throws SolverFailure when the linear solve of a flow step fails.
 template <class TriangleMesh, class NamedParameters>
 void take_skin_lengths(const geodesic::GeodesicPathSolver<TriangleMesh, NamedParameters>& solver,
                        const SkinLocator<TriangleMesh, NamedParameters>& at, const BodyFrame& frame,
@@ -450,6 +472,10 @@ inline std::vector<std::array<double, 2>> tape_under(
 /// between the buttocks as a tailor's tape laid across them does. Split where it passes under the
 /// crotch point (same z): cross_seam_front and cross_seam_back, whose sum is cross_seam.
 /// Measurements that cannot be taken are added to `missing` with the reason.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`,
+///         `geom_traits`.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 void measure_cross_seam(const TriangleMesh& tm, const BodyFrame& frame, const LandmarkSet& lm,
                         MeasurementSet& set,
@@ -627,6 +653,17 @@ void measure_cross_seam(const TriangleMesh& tm, const BodyFrame& frame, const La
 
 /// One-shot: the lengths along the skin of a body mesh (the mesh measure_body measured, with its
 /// frame and landmarks) added to `set`. Returns the wall-clock seconds it took.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `VertexListGraph` and `EdgeListGraph`
+///         (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...), every face a triangle.
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> `geom_traits::Point_3`),
+///         `vertex_index_map` and `face_index_map` (`ReadablePropertyMap`s onto [0, n)),
+///         `geom_traits` (a CGAL kernel).
+/// \throws TopologyError when a face is not a triangle.
+/// \throws InvalidInput on a non-finite coordinate, an index map that is not a bijection
+///         onto [0, n), a mesh without faces or beyond 32-bit indices.
+/// \throws SolverFailure when the linear solve of a flow step fails.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 double measure_skin_lengths(const TriangleMesh& tm, const BodyFrame& frame,
                             const LandmarkSet& landmarks, MeasurementSet& set,

@@ -426,6 +426,11 @@ inline std::vector<Point> leader_points(const Drawn& d, double fs) {
 }  // namespace internal::pic
 
 /// The picture as SVG (see the file comment); points and triangles are the body in canonical mm.
+///
+/// \throws InvalidInput when a scale, font size or resolution is not positive, a margin or
+///         the hidden tolerance is negative, the mesh is empty or has non-finite
+///         coordinates, a triangle names a missing point, or a view would exceed
+///         `o.max_megapixels`.
 inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<Vec3>& points,
                                            const PictureTriangles& triangles,
                                            const MeasurementSet& set, const LandmarkSet& landmarks,
@@ -513,6 +518,11 @@ inline PictureReport write_measurement_svg(std::ostream& out, const std::vector<
 }
 
 /// The picture as an RGBA image at o.pixels_per_mm (see the file comment).
+///
+/// \throws InvalidInput when a scale, font size or resolution is not positive, a margin or
+///         the hidden tolerance is negative, the mesh is empty or has non-finite
+///         coordinates, a triangle names a missing point, or a view would exceed
+///         `o.max_megapixels`.
 inline draw::RgbaImage render_measurement_picture(
     const std::vector<Vec3>& points, const PictureTriangles& triangles, const MeasurementSet& set,
     const LandmarkSet& landmarks, const PictureOptions& o = {}, PictureReport* report = nullptr) {
@@ -577,6 +587,8 @@ inline draw::RgbaImage render_measurement_picture(
 }
 
 /// The picture as PNG bytes written to `out`.
+///
+/// \throws InvalidInput as render_measurement_picture.
 inline PictureReport write_measurement_png(std::ostream& out, const std::vector<Vec3>& points,
                                            const PictureTriangles& triangles,
                                            const MeasurementSet& set, const LandmarkSet& landmarks,
@@ -589,6 +601,9 @@ inline PictureReport write_measurement_png(std::ostream& out, const std::vector<
 }
 
 /// Writes the picture to `path` atomically, SVG or PNG by its extension (picture_format).
+///
+/// \throws InvalidInput on an extension other than .svg or .png, as render_measurement_picture,
+///         or naming `path` when it cannot be written; `path` is left untouched then.
 inline PictureReport write_measurement_picture(
     const std::string& path, const std::vector<Vec3>& points, const PictureTriangles& triangles,
     const MeasurementSet& set, const LandmarkSet& landmarks, const PictureOptions& o = {}) {
@@ -605,7 +620,7 @@ inline PictureReport write_measurement_picture(
     return rep;
 }
 
-/// Same for a measured Body.
+/// Same for a measured Body; throws as the overload above.
 inline PictureReport write_measurement_picture(const std::string& path, const Body& body,
                                                const MeasurementSet& set,
                                                const LandmarkSet& landmarks,
@@ -616,6 +631,13 @@ inline PictureReport write_measurement_picture(const std::string& path, const Bo
 /// A CGAL triangle mesh (FaceListGraph; named parameter vertex_point_map) in the canonical frame
 /// it was measured in: the picture functions' input. Faces with other than three vertices are a
 /// TopologyError, as in make_body.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` with dynamic vertex and
+///         face properties (CGAL::Surface_mesh, CGAL::Polyhedron_3, ...).
+/// \tparam NamedParameters a sequence of CGAL named parameters; accepted: `vertex_point_map`
+///         (a `ReadablePropertyMap` vertex_descriptor -> a point with x(), y(), z()).
+/// \throws TopologyError when a face does not have three vertices.
+/// \throws InvalidInput when the mesh is beyond 32-bit indices.
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 PictureMesh picture_mesh(const TriangleMesh& tm, const BodyFrame& frame,
                          const NamedParameters& np = CGAL::parameters::default_values()) {
