@@ -35,21 +35,26 @@
 
 namespace tapeline::pattern {
 
+/// How patterns are quantised and compressed.
 struct CompressionOptions {
-    std::int64_t units_per_mm = 1000;  // grid of 1/units_per_mm mm (0.001 mm)
-    int zstd_level = 19;
-    double max_error_mm = 0.005;      // an edge moving more than this keeps exact coordinates
-    bool measure_plain_zstd = false;  // also compress the plain JSON, for the report only
+    std::int64_t units_per_mm = 1000;  ///< grid of 1/units_per_mm mm (0.001 mm)
+    int zstd_level = 19;  ///< zstd compression level
+    double max_error_mm = 0.005;      ///< an edge moving more than this keeps exact coordinates
+    bool measure_plain_zstd = false;  ///< also compress the plain JSON, for the report only
 };
 
+/// Sizes and error of one compressed pattern.
 struct CompressionReport {
-    std::size_t json_bytes = 0;       // compact JSON (io_json.h, no indentation)
-    std::size_t json_zstd_bytes = 0;  // that JSON through zstd alone (measure_plain_zstd)
-    std::size_t stored_bytes = 0;     // the blob
-    double ratio = 0;                 // json_bytes / stored_bytes
-    double max_error_mm = 0;          // largest edge deviation of the stored geometry
+    std::size_t json_bytes = 0;       ///< compact JSON (io_json.h, no indentation)
+    std::size_t json_zstd_bytes = 0;  ///< that JSON through zstd alone (measure_plain_zstd)
+    std::size_t stored_bytes = 0;     ///< the blob
+    double ratio = 0;                 ///< json_bytes / stored_bytes
+    double max_error_mm = 0;          ///< largest edge deviation of the stored geometry
+    /// Numbers stored on the grid, numbers kept exact, and edges kept exact.
+    ///@{
     std::size_t quantised_numbers = 0, exact_numbers = 0, exact_edges = 0;
-    double seconds = 0;
+    ///@}
+    double seconds = 0;  ///< wall-clock time
 };
 
 inline constexpr std::uint8_t pattern_blob_format = 1;

@@ -35,31 +35,41 @@ using tapeline::norm;
 
 /// Straight segment from `a` to `b`.
 struct Line {
+    /// Start and end.
+    ///@{
     Point2 a, b;
+    ///@}
 };
 
 /// Cubic Bézier from `p0` to `p3` with control points `p1`, `p2`.
 struct CubicBezier {
+    /// End points p0, p3 and control points p1, p2.
+    ///@{
     Point2 p0, p1, p2, p3;
+    ///@}
 };
 
 /// Circular arc from `a` to `b` with the given radius, with SVG's flags: `large_arc` picks the arc
 /// of more than half a turn, `ccw` the counter-clockwise one (y up). Storing the endpoints rather
 /// than the centre keeps consecutive edges exactly joined.
 struct Arc {
+    /// Start and end.
+    ///@{
     Point2 a, b;
-    double radius = 0;
-    bool large_arc = false;
-    bool ccw = true;
+    ///@}
+    double radius = 0;        ///< mm
+    bool large_arc = false;  ///< the arc of more than half a turn
+    bool ccw = true;          ///< counter-clockwise (y up)
 };
 
+/// The curve of an edge.
 using Curve = std::variant<Line, CubicBezier, Arc>;
 
 /// One edge of an outline, internal line or dart: a curve and an optional label (GarmentCode edge
 /// labels, FreeSewing path names).
 struct Edge {
-    Curve curve;
-    std::string label;
+    Curve curve;        ///< the geometry
+    std::string label;  ///< source label, may be empty
 };
 
 /// A quadratic Bézier as the cubic that traces the same curve (degree elevation, exact).
@@ -123,11 +133,11 @@ inline bool is_finite(const Curve& c) {
 /// half the chord (a half circle), as SVG does; `radius_too_small` says so and validation reports
 /// it.
 struct ArcFrame {
-    Point2 center;
-    double radius = 0;
-    double start_angle = 0;
-    double sweep = 0;  // signed radians, > 0 counter-clockwise
-    bool radius_too_small = false;
+    Point2 center;            ///< centre of the circle
+    double radius = 0;        ///< mm, after raising
+    double start_angle = 0;   ///< radians, of the start point
+    double sweep = 0;  ///< signed radians, > 0 counter-clockwise
+    bool radius_too_small = false;  ///< the radius was raised to half the chord
 };
 
 inline ArcFrame arc_frame(const Arc& arc) {

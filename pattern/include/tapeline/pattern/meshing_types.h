@@ -22,6 +22,7 @@
 
 namespace tapeline::pattern {
 
+/// Sizes and shape bounds of the piece meshes.
 struct MeshingOptions {
     /// Boundary segments are at most this long (uniform in arc length along each edge), and it is
     /// the size bound of the Delaunay refinement (longest edge of a refined triangle).
@@ -37,17 +38,18 @@ struct MeshingOptions {
 
 /// A boundary vertex as a point of the outline: edge index and curve parameter t.
 struct BoundaryParam {
-    std::size_t edge = 0;
-    double t = 0;
+    std::size_t edge = 0;  ///< outline edge index
+    double t = 0;          ///< curve parameter on that edge
 };
 
+/// The triangle mesh of one piece; boundary vertices come first.
 struct PieceMesh {
-    std::string piece;
-    std::vector<Point2> uv;                               // 2D pattern coordinates, mm
-    std::vector<std::array<double, 3>> xyz;               // 3D rest position, mm
-    std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise in 2D
-    std::size_t boundary_count = 0;                       // vertices [0, boundary_count)
-    std::vector<BoundaryParam> boundary_params;           // per boundary vertex
+    std::string piece;  ///< piece name
+    std::vector<Point2> uv;                               ///< 2D pattern coordinates, mm
+    std::vector<std::array<double, 3>> xyz;               ///< 3D rest position, mm
+    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise in 2D
+    std::size_t boundary_count = 0;                       ///< vertices [0, boundary_count)
+    std::vector<BoundaryParam> boundary_params;           ///< per boundary vertex
     /// Per outline edge: its boundary vertices from start to end, both included (the last is the
     /// next edge's first). A degenerate edge (< 1e-6 mm) outside seams holds just its start.
     std::vector<std::vector<std::uint32_t>> edge_vertices;
@@ -56,24 +58,32 @@ struct PieceMesh {
 /// Seam `seam` of the pattern: vertex `pairs[k].first` of piece `piece_a` is sewn to vertex
 /// `pairs[k].second` of piece `piece_b` (indices into PatternMesh::pieces).
 struct SeamStitch {
-    std::size_t seam = 0;
+    std::size_t seam = 0;  ///< index into Pattern::seams
+    /// The pieces of side A and side B.
+    ///@{
     std::size_t piece_a = 0, piece_b = 0;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    ///@}
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  ///< sewn vertex pairs
 };
 
+/// Meshes of every piece and the vertex pairs of every seam (mesh_pattern).
 struct PatternMesh {
-    std::vector<PieceMesh> pieces;
-    std::vector<SeamStitch> seams;
+    std::vector<PieceMesh> pieces;  ///< in Pattern::pieces order
+    std::vector<SeamStitch> seams;  ///< one per seam
 };
 
+/// Sizes and quality of the meshes mesh_pattern made.
 struct MeshingReport {
+    /// Totals over the pieces.
+    ///@{
     std::size_t pieces = 0, vertices = 0, triangles = 0, boundary_vertices = 0;
-    std::size_t boundary_steiner_points = 0;  // vertices the refinement put on the outline: 0
-    double max_edge_mm = 0;                   // longest triangle edge
-    double max_boundary_edge_mm = 0;          // longest boundary segment
-    double min_angle_deg = 180;
-    double area_mm2 = 0;
-    double seconds = 0;
+    ///@}
+    std::size_t boundary_steiner_points = 0;  ///< vertices the refinement put on the outline: 0
+    double max_edge_mm = 0;                   ///< longest triangle edge
+    double max_boundary_edge_mm = 0;          ///< longest boundary segment
+    double min_angle_deg = 180;  ///< smallest triangle angle
+    double area_mm2 = 0;  ///< total area
+    double seconds = 0;  ///< wall-clock time
 };
 
 /// Wavefront OBJ: one object per piece; v = 3D position (mm), vt = 2D pattern coordinates ×

@@ -15,8 +15,11 @@ namespace tapeline::pattern {
 /// A seam whose sides may each span several edge ranges (a binding strip sewn to the front and
 /// the back armhole). Pattern::seams holds the seams of one range per side (pattern_seams).
 struct SeamSpec {
-    std::string name;
+    std::string name;  ///< seam name
+    /// The ranges of side A and side B.
+    ///@{
     std::vector<EdgeRange> a, b;
+    ///@}
     /// For a seam of one range per side: how the ranges meet (a Seam records it).
     SeamDirection direction = SeamDirection::opposite;
 };
@@ -73,14 +76,21 @@ inline std::vector<std::size_t> outline_chain(const Outline& o, const Point2& a,
 /// One side of a derived seam: the outline chain of `piece` (its name without the design prefix,
 /// e.g. "front" for "teagan.front", or the full name) between two named outline vertices.
 struct NamedChain {
+    /// Piece, and the named outline vertices the chain runs between.
+    ///@{
     std::string piece, from, to;
-    std::string via;  // an outline vertex the chain passes (empty: the shorter way round)
+    ///@}
+    std::string via;  ///< an outline vertex the chain passes (empty: the shorter way round)
 };
 
+/// A seam of a design given by the named points of its pieces.
 struct NamedSeamRule {
-    std::string design;  // design name (Pattern::name starts with it)
-    std::string name;
+    std::string design;  ///< design name (Pattern::name starts with it)
+    std::string name;  ///< seam name
+    /// The chains of side A and side B.
+    ///@{
     std::vector<NamedChain> a, b;
+    ///@}
 };
 
 /// The seams of `rules` for pattern `p` (rules whose design starts p.name, every chain found).
