@@ -55,10 +55,12 @@ inline Pose parse_pose(const std::string& text, const std::string& where) {
 
 /// A signed coordinate axis of the input mesh: +X, -X, +Y, -Y, +Z or -Z.
 struct Axis {
-    int index = 1;  // 0 = x, 1 = y, 2 = z
-    int sign = 1;   // +1 or -1
+    int index = 1;  ///< 0 = x, 1 = y, 2 = z
+    int sign = 1;   ///< +1 or -1
 
     /// "+Y", "-z", "Y" (sign +), any case; anything else is InvalidInput naming `where`.
+    ///
+    /// \throws InvalidInput for any other text.
     static Axis parse(const std::string& text, const std::string& where) {
         std::string t = text;
         int sign = 1;
@@ -76,9 +78,11 @@ struct Axis {
         throw InvalidInput(where + ": unknown axis '" + text +
                            "' (expected +X, -X, +Y, -Y, +Z or -Z)");
     }
+    /// "+X" ... "-Z".
     std::string to_string() const {
         return std::string(sign < 0 ? "-" : "+") + static_cast<char>('X' + index);
     }
+    /// The unit vector of the axis.
     Vec3 vector() const {
         Vec3 v{0, 0, 0};
         v[static_cast<std::size_t>(index)] = sign;
@@ -92,17 +96,20 @@ struct BodyOptions {
     std::optional<LengthUnit> unit;  ///< empty: inferred from the height
     Axis up{1, 1};                   ///< +Y
     Axis front{2, 1};                ///< +Z
-    Pose pose = Pose::a_pose;
+    Pose pose = Pose::a_pose;    ///< arms down (A) or out (T)
     std::string name = "body";  ///< used in messages (the file name, usually)
 };
 
 /// What was used to map the input into the canonical frame (see the top of this file):
 /// canonical = scale * R * input - (0, floor, 0), R's rows being left, up and front.
 struct BodyFrame {
-    LengthUnit unit = LengthUnit::mm;
-    bool unit_inferred = false;
+    LengthUnit unit = LengthUnit::mm;  ///< unit of the input coordinates
+    bool unit_inferred = false;        ///< the unit came from the height
+    /// Input axes pointing up and to the front of the body.
+    ///@{
     Axis up, front;
-    Pose pose = Pose::a_pose;
+    ///@}
+    Pose pose = Pose::a_pose;          ///< the body's pose
     double scale = 1;            ///< millimetres per input unit
     std::array<Vec3, 3> rows{};  ///< R: canonical x (left), y (up), z (front) in input coordinates
     double floor = 0;            ///< input height of the lowest vertex, in mm

@@ -52,8 +52,9 @@ inline double ellipse_perimeter(double a, double b) {
 /// A profile through control points (t, v) with zero slope at each: v is monotone between
 /// control points, so every interior control point is an exact local extremum.
 struct HermiteProfile {
-    std::vector<std::pair<double, double>> points;  // increasing t
+    std::vector<std::pair<double, double>> points;  ///< increasing t
 
+    /// The profile at t (constant beyond the first and last control points).
     double operator()(double t) const {
         if (t <= points.front().first) {
             return points.front().second;
@@ -73,11 +74,14 @@ struct HermiteProfile {
 struct SyntheticBodyOptions {
     int around = 48;       ///< vertices around each ring
     double ring_step = 8;  ///< mm between rings along each axis
-    double arm_angle_degrees = 40;
+    double arm_angle_degrees = 40;  ///< arms' angle from the vertical
 };
 
+/// A closed body mesh built from analytic profiles, with exact girths and lengths: the truth
+/// the measurement tests compare against.
 class SyntheticBody {
 public:
+    /// Builds the mesh at the resolution of `options`.
     explicit SyntheticBody(const SyntheticBodyOptions& options = {}) : options_(options) {
         torso_a_ = {{{800, 165}, {880, 180}, {1040, 135}, {1180, 155}, {1330, 140}, {1400, 175}}};
         torso_b_ = {{{800, 118}, {880, 125}, {1040, 95}, {1180, 115}, {1330, 100}, {1400, 105}}};
@@ -90,25 +94,33 @@ public:
     }
 
     // --- the mesh (canonical millimetres) -----------------------------------------------------
-    const std::vector<Vec3>& points() const { return points_; }
+    const std::vector<Vec3>& points() const { return points_; }  ///< vertices, canonical mm
+    /// Triangles as indices into points().
     const std::vector<std::array<std::uint32_t, 3>>& triangles() const { return triangles_; }
 
     // --- truth ----------------------------------------------------------------------------------
+    /// Heights (mm above the floor) of the body's levels, arm positions (mm along the arm) and
+    /// the legs' lateral offset: the values the profiles are built from.
+    ///@{
     static constexpr double kHeight = 1720, kCrotch = 800, kHip = 880, kWaist = 1040, kBust = 1180,
                             kShoulder = 1400, kKnee = 460, kCalf = 330, kAnkle = 100, kNeck = 1490,
                             kHead = 1620, kElbowT = 330, kWristT = 560, kArmLength = 720,
                             kLegX = 90;
-    double leg_b_ratio() const { return 0.9; }
-    double neck_b_ratio() const { return 0.95; }
+    ///@}
+    double leg_b_ratio() const { return 0.9; }    ///< leg section depth / width
+    double neck_b_ratio() const { return 0.95; }  ///< neck section depth / width
 
     /// Exact horizontal girths of the parts at a height (for the torso: its own section).
     double torso_girth(double y) const { return ellipse_perimeter(torso_a_(y), torso_b_(y)); }
+    /// Exact girth of a leg at height y.
     double leg_girth(double y) const {
         return ellipse_perimeter(leg_a_(y), leg_b_ratio() * leg_a_(y));
     }
+    /// Exact girth of the neck at height y.
     double neck_girth(double y) const {
         return ellipse_perimeter(neck_a_(y), neck_b_ratio() * neck_a_(y));
     }
+    /// Exact girth of the head at height y.
     double head_girth(double y) const {
         const double c = (y - kHead) / 100;
         const double r = c * c < 1 ? std::sqrt(1 - c * c) : 0;
@@ -116,22 +128,26 @@ public:
     }
     /// Girth of the arm perpendicular to its axis, t mm from the arm's start.
     double arm_girth(double t) const { return ellipse_perimeter(arm_a_(t), arm_b_(t)); }
-    double torso_depth(double y) const { return torso_b_(y); }
-    double torso_half_width(double y) const { return torso_a_(y); }
+    double torso_depth(double y) const { return torso_b_(y); }  ///< depth semi-axis at y
+    double torso_half_width(double y) const { return torso_a_(y); }  ///< lateral semi-axis at y
     /// Lateral semi-axis of a leg's section at height y (depth: leg_b_ratio() times it), of the
     /// neck's (depth: neck_b_ratio() times it), and of the arm's t mm along its axis (and its
     /// depth semi-axis): the analytic profiles, for lengths along the skin.
+    ///@{
     double leg_half_width(double y) const { return leg_a_(y); }
     double neck_half_width(double y) const { return neck_a_(y); }
     double arm_half_width(double t) const { return arm_a_(t); }
     double arm_half_depth(double t) const { return arm_b_(t); }
+    ///@}
 
     /// Start and unit direction of an arm's axis (side +1 = left, −1 = right).
+    ///@{
     Vec3 arm_start(int side) const { return {side * 110.0, 1345, 0}; }
     Vec3 arm_direction(int side) const {
         const double al = options_.arm_angle_degrees * M_PI / 180;
         return {side * std::sin(al), -std::cos(al), 0};
     }
+    ///@}
     /// Distance along an arm's axis of a point's projection.
     double arm_parameter(int side, const Vec3& p) const {
         const Vec3 s = arm_start(side), d = arm_direction(side);
