@@ -89,6 +89,8 @@ inline std::string temporary_path_for(const std::string& path) {
 
 /// Refuses, before anything is written, an output path that cannot be written: a directory, a
 /// missing or unwritable directory, a file name longer than the file system allows.
+///
+/// \throws InvalidInput naming `path` and the reason.
 inline void check_output_path(const std::string& path) {
     namespace fs = std::filesystem;
     if (path.empty()) {
@@ -118,6 +120,8 @@ inline void check_output_path(const std::string& path) {
 }
 
 /// check_output_path for each non-empty path, and no path given twice.
+///
+/// \throws InvalidInput for the first path refused, or a path given twice.
 inline void check_output_paths(const std::vector<std::string>& paths) {
     std::set<std::string> seen;
     for (const std::string& p : paths) {

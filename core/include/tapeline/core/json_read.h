@@ -24,6 +24,10 @@ inline constexpr std::size_t max_json_depth = 256;
 /// Largest JSON or XML document read: the parsed tree takes several times the text in memory.
 inline constexpr std::uintmax_t max_document_bytes = std::uintmax_t(256) << 20;
 
+/// The whole file as text.
+///
+/// \throws InvalidInput naming `path` when it is missing, a directory, larger than
+///         max_document_bytes, or cannot be read.
 inline std::string read_text_file(const std::string& path) {
     tapeline::internal::check_input_file(path, max_document_bytes, "a JSON or XML document");
     std::ifstream in(path, std::ios::binary);
@@ -39,6 +43,8 @@ inline std::string read_text_file(const std::string& path) {
 }
 
 /// Refuses text whose arrays and objects nest deeper than max_json_depth, before parsing it.
+///
+/// \throws InvalidInput naming `source` when the nesting is deeper.
 inline void check_json_depth(const std::string& text, const std::string& source) {
     std::size_t depth = 0;
     bool in_string = false;
@@ -65,6 +71,8 @@ inline void check_json_depth(const std::string& text, const std::string& source)
 }
 
 /// Parses JSON text; a syntax error (truncated file, NaN literal, ...) names the source and byte.
+///
+/// \throws InvalidInput on a syntax error or nesting deeper than max_json_depth.
 inline Json parse_json(const std::string& text, const std::string& source) {
     check_json_depth(text, source);
     try {
@@ -75,6 +83,9 @@ inline Json parse_json(const std::string& text, const std::string& source) {
     }
 }
 
+/// Reads and parses a JSON file.
+///
+/// \throws InvalidInput as read_text_file and parse_json.
 inline Json parse_json_file(const std::string& path) {
     return parse_json(read_text_file(path), path);
 }
@@ -95,6 +106,9 @@ inline const char* type_name(const Json& j) {
     return j.type_name();
 }
 
+/// `j`, which must be an object.
+///
+/// \throws InvalidInput naming `w` otherwise.
 inline const Json& require_object(const Json& j, const Where& w) {
     if (!j.is_object()) {
         throw InvalidInput(w.str() + ": expected an object, got " + type_name(j));
@@ -102,6 +116,9 @@ inline const Json& require_object(const Json& j, const Where& w) {
     return j;
 }
 
+/// `j`, which must be an array.
+///
+/// \throws InvalidInput naming `w` otherwise.
 inline const Json& require_array(const Json& j, const Where& w) {
     if (!j.is_array()) {
         throw InvalidInput(w.str() + ": expected an array, got " + type_name(j));
@@ -110,6 +127,8 @@ inline const Json& require_array(const Json& j, const Where& w) {
 }
 
 /// obj[key], which must exist.
+///
+/// \throws InvalidInput naming `w` and `key` when it does not.
 inline const Json& field(const Json& obj, const std::string& key, const Where& w) {
     require_object(obj, w);
     const auto it = obj.find(key);
@@ -128,6 +147,8 @@ inline const Json* optional_field(const Json& obj, const std::string& key) {
 }
 
 /// A finite number (JSON has no NaN; writers that meet one emit null, which lands here).
+///
+/// \throws InvalidInput naming `w` for anything else.
 inline double number(const Json& j, const Where& w) {
     if (!j.is_number()) {
         throw InvalidInput(w.str() + ": expected a number, got " +
@@ -140,6 +161,9 @@ inline double number(const Json& j, const Where& w) {
     return v;
 }
 
+/// A string.
+///
+/// \throws InvalidInput naming `w` for anything else.
 inline std::string string(const Json& j, const Where& w) {
     if (!j.is_string()) {
         throw InvalidInput(w.str() + ": expected a string, got " + type_name(j));
@@ -147,6 +171,9 @@ inline std::string string(const Json& j, const Where& w) {
     return j.get<std::string>();
 }
 
+/// true or false.
+///
+/// \throws InvalidInput naming `w` for anything else.
 inline bool boolean(const Json& j, const Where& w) {
     if (!j.is_boolean()) {
         throw InvalidInput(w.str() + ": expected true or false, got " + type_name(j));
@@ -154,6 +181,9 @@ inline bool boolean(const Json& j, const Where& w) {
     return j.get<bool>();
 }
 
+/// A non-negative integer.
+///
+/// \throws InvalidInput naming `w` for anything else.
 inline std::size_t index_value(const Json& j, const Where& w) {
     if (!j.is_number_integer() || j.get<long long>() < 0) {
         throw InvalidInput(w.str() + ": expected a non-negative integer, got " + j.dump());

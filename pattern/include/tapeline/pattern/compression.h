@@ -215,6 +215,8 @@ inline double max_edge_deviation(const Pattern& a, const Pattern& b) {
 }
 
 /// The pattern with its lengths rounded to the grid as compress_pattern stores them.
+///
+/// \throws InvalidInput when `o.units_per_mm` is outside 1..1e9.
 inline Pattern quantised_pattern(const Pattern& p, const CompressionOptions& o = {},
                                  CompressionReport* report = nullptr) {
     if (o.units_per_mm < 1 || o.units_per_mm > 1000000000) {
@@ -259,6 +261,9 @@ inline Pattern quantised_pattern(const Pattern& p, const CompressionOptions& o =
 }
 
 /// The compressed blob of `p` (see the file comment).
+///
+/// \throws InvalidInput when `o.units_per_mm` is outside 1..1e9.
+/// \throws std::runtime_error when zstd fails.
 inline std::vector<std::uint8_t> compress_pattern(const Pattern& p,
                                                   const CompressionOptions& o = {},
                                                   CompressionReport* report = nullptr) {
@@ -310,6 +315,9 @@ inline std::vector<std::uint8_t> compress_pattern(const Pattern& p,
 
 /// Decodes a blob made by compress_pattern; `where` names it in messages ("db.sqlite: pattern
 /// 'x'"). A damaged blob is an InvalidInput.
+///
+/// \throws InvalidInput naming `where` for a blob that is not one, of another format version,
+///         truncated or malformed.
 inline Pattern decompress_pattern(const void* data, std::size_t size, const std::string& where) {
     using namespace internal;
     const auto* b = static_cast<const std::uint8_t*>(data);

@@ -152,6 +152,8 @@ inline void write_mesh_ply(const PatternMesh& mesh, std::ostream& out, double uv
 }
 
 /// Writes OBJ (".obj") or PLY (".ply") by the file's extension, atomically.
+///
+/// \throws InvalidInput naming `path` for another extension, or when it cannot be written.
 inline void write_mesh(const PatternMesh& mesh, const std::string& path, double uv_scale = 1.0) {
     const auto ends = [&](const char* s) {
         const std::string e(s);
