@@ -293,6 +293,8 @@ private:
 }  // namespace internal
 
 /// Parses a whole document; errors name `source`, line and column.
+///
+/// \throws InvalidInput on malformed XML, nesting deeper than max_depth, or a DOCTYPE.
 inline Element parse(const std::string& text, const std::string& source) {
     return internal::Parser(text, source).parse_document();
 }

@@ -83,6 +83,8 @@ inline std::string rul_table(const GradeResult& g, const std::string& from, cons
 
 /// The candidates in the (fit, style) plane: NSGA-II members grey, polished members blue, the
 /// Ceres fast path green, the chosen one a red ring; axes with tick labels and a legend. PNG bytes.
+///
+/// \throws std::runtime_error when PNG encoding fails.
 inline std::vector<std::uint8_t> pareto_png(const GradingReport& r) {
     using draw::PlotSeries;
     std::vector<PlotSeries> series(4);
