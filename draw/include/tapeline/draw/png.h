@@ -85,7 +85,8 @@ inline std::vector<std::uint8_t> encode_png(const RgbaImage& img, double pixels_
 
 /// Writes the PNG of `img` to `out`; returns the number of bytes written.
 ///
-/// \throws InvalidInput and std::runtime_error as encode_png.
+/// \throws InvalidInput as encode_png.
+/// \throws std::runtime_error as encode_png.
 inline std::size_t write_png(std::ostream& out, const RgbaImage& img, double pixels_per_mm) {
     const std::vector<std::uint8_t> bytes = encode_png(img, pixels_per_mm);
     out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
@@ -94,8 +95,8 @@ inline std::size_t write_png(std::ostream& out, const RgbaImage& img, double pix
 
 /// Writes the PNG of `img` to `path` atomically (no half-written file on failure).
 ///
-/// \throws InvalidInput and std::runtime_error as encode_png; InvalidInput naming `path` when it
-///         cannot be written.
+/// \throws InvalidInput as encode_png, or naming `path` when it cannot be written.
+/// \throws std::runtime_error as encode_png.
 inline std::size_t write_png(const std::string& path, const RgbaImage& img, double pixels_per_mm) {
     std::size_t n = 0;
     write_file_atomically(

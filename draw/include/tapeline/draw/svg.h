@@ -82,7 +82,8 @@ inline std::string base64(const std::vector<std::uint8_t>& bytes) {
 
 /// The image as a "data:image/png;base64,..." URI for an `<image>`'s href.
 ///
-/// \throws InvalidInput and std::runtime_error as encode_png.
+/// \throws InvalidInput as encode_png.
+/// \throws std::runtime_error as encode_png.
 inline std::string png_data_uri(const RgbaImage& img, double pixels_per_mm) {
     return "data:image/png;base64," + base64(encode_png(img, pixels_per_mm));
 }

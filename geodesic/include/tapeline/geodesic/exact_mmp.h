@@ -246,7 +246,8 @@ public:
     /// the target, straight inside every face it crosses (a valid unfolding). Unreachable: no
     /// points, length +infinity.
     ///
-    /// \throws InvalidInput and SolverFailure as distance_to().
+    /// \throws InvalidInput as distance_to().
+    /// \throws SolverFailure as distance_to().
     Path path_to(const SurfacePoint<TriangleMesh>& target) const {
         const auto t = prep_->checked(target, "target");
         const auto trace = query_engine().trace(t.face, t.bary, t.vertex);
