@@ -1,6 +1,7 @@
 // DXF-AAMA export read back by an independent reader (python3-ezdxf via dxf_extract.py): header
-// units and extents, one block per piece with its texts, boundary within the 0.05 mm sampling tolerance of the
-// model outline both ways, notch positions and counts, grain and fold lines, one INSERT per block.
+// units and extents, one block per piece with its texts, boundary within the 0.05 mm sampling
+// tolerance of the model outline both ways, notch positions and counts, grain and fold lines, one
+// INSERT per block.
 #include <tapeline/pattern/dxf.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>

@@ -40,26 +40,28 @@ void expect_refused(const std::string& body, std::initializer_list<std::string> 
 TEST(SeamlyFormulas, ArithmeticOverTheFilesMeasurementsInItsUnit) {
     // b refers to a defined later, c to b: the order of the file does not matter. In cm.
     const MeasurementSet m = parse_seamly_individual(
-        vit("cm", "<m name=\"c\" value=\"-b + 2 * (a - 1) / 4\"/>\n"
-                  "<m name=\"b\" value=\"(a - 4) * 2 / 3\"/>\n"
-                  "<m name=\"a\" value=\"10\"/>\n"
-                  "<m name=\"@Длина_юбки\" value=\" 0.91*a \"/>\n"
-                  "<m name=\"shoulder_slope_neck_side_angle\" value=\"a + 10\"/>\n"),
+        vit("cm",
+            "<m name=\"c\" value=\"-b + 2 * (a - 1) / 4\"/>\n"
+            "<m name=\"b\" value=\"(a - 4) * 2 / 3\"/>\n"
+            "<m name=\"a\" value=\"10\"/>\n"
+            "<m name=\"@Длина_юбки\" value=\" 0.91*a \"/>\n"
+            "<m name=\"shoulder_slope_neck_side_angle\" value=\"a + 10\"/>\n"),
         "f.vit");
     EXPECT_DOUBLE_EQ(m.values.at("a"), 100);
-    EXPECT_DOUBLE_EQ(m.values.at("b"), 40);          // (10 − 4)·2/3 = 4 cm
-    EXPECT_DOUBLE_EQ(m.values.at("c"), -40 + 45);    // −4 + 2·9/4 = 0.5 cm
+    EXPECT_DOUBLE_EQ(m.values.at("b"), 40);        // (10 − 4)·2/3 = 4 cm
+    EXPECT_DOUBLE_EQ(m.values.at("c"), -40 + 45);  // −4 + 2·9/4 = 0.5 cm
     EXPECT_DOUBLE_EQ(m.values.at("@Длина_юбки"), 91);
     EXPECT_DOUBLE_EQ(m.values.at("shoulder_slope_neck_side_angle"), 20);  // degrees, unscaled
     EXPECT_TRUE(m.left_out.empty());
 }
 
 TEST(SeamlyFormulas, SeparatorsAreSkippedAndSpecialUnitsKept) {
-    const MeasurementSet m = parse_seamly_individual(
-        vit("cm", "<m name=\"a\" value=\"10\"/>\n"
-                  "<m name=\"@sep\" type=\"separator\"/>\n"
-                  "<m name=\"@ratio\" value=\"a / 4\" specialUnits=\"true\"/>\n"),
-        "f.vit");
+    const MeasurementSet m =
+        parse_seamly_individual(vit("cm",
+                                    "<m name=\"a\" value=\"10\"/>\n"
+                                    "<m name=\"@sep\" type=\"separator\"/>\n"
+                                    "<m name=\"@ratio\" value=\"a / 4\" specialUnits=\"true\"/>\n"),
+                                "f.vit");
     EXPECT_EQ(m.values.size(), 2u);
     EXPECT_DOUBLE_EQ(m.values.at("@ratio"), 2.5);
 }
@@ -67,11 +69,11 @@ TEST(SeamlyFormulas, SeparatorsAreSkippedAndSpecialUnitsKept) {
 TEST(SeamlyFormulas, AnUndefinedNameLeavesItsMeasurementsOut) {
     // Valentina's own t_Aldrich_Women.vit refers to names it does not define; Valentina opens it
     // and marks those values as errors. Whatever depends on them is left out too.
-    const MeasurementSet m =
-        parse_seamly_individual(vit("mm", "<m name=\"a\" value=\"10\"/>\n"
-                                          "<m name=\"@x\" value=\"@nowhere + a\"/>\n"
-                                          "<m name=\"@y\" value=\"@x * 2\"/>\n"),
-                                "f.vit");
+    const MeasurementSet m = parse_seamly_individual(vit("mm",
+                                                         "<m name=\"a\" value=\"10\"/>\n"
+                                                         "<m name=\"@x\" value=\"@nowhere + a\"/>\n"
+                                                         "<m name=\"@y\" value=\"@x * 2\"/>\n"),
+                                                     "f.vit");
     EXPECT_EQ(m.values.size(), 1u);
     ASSERT_EQ(m.left_out.size(), 2u);
     EXPECT_NE(m.left_out.at("@x").find("f.vit:6: measurement '@x': formula '@nowhere + a': refers "
@@ -83,8 +85,8 @@ TEST(SeamlyFormulas, AnUndefinedNameLeavesItsMeasurementsOut) {
 
 TEST(SeamlyFormulas, WhatCannotBeEvaluatedIsRefusedInOneLine) {
     expect_refused("<m name=\"a\" value=\"sqrt(4)\"/>\n",
-                   {"f.vit:5: measurement 'a': formula 'sqrt(4)'", "function 'sqrt' is not supported",
-                    "+ - * /"});
+                   {"f.vit:5: measurement 'a': formula 'sqrt(4)'",
+                    "function 'sqrt' is not supported", "+ - * /"});
     expect_refused("<m name=\"a\" value=\"2 ^ 3\"/>\n", {"'2 ^ 3'", "'^' at character 3"});
     expect_refused("<m name=\"a\" value=\"b > 1 ? 2 : 3\"/>\n<m name=\"b\" value=\"1\"/>\n",
                    {"'>' at character 3"});
@@ -95,9 +97,9 @@ TEST(SeamlyFormulas, WhatCannotBeEvaluatedIsRefusedInOneLine) {
     expect_refused("<m name=\"a\" value=\"1 +\"/>\n", {"ends where a number or a name"});
     expect_refused("<m name=\"a\" value=\"1\"/>\n<m name=\"a\" value=\"2\"/>\n",
                    {"f.vit:6: measurement 'a' is defined twice"});
-    expect_refused("<m name=\"a\" value=\"" + std::string(100, '(') + "1" + std::string(100, ')') +
-                       "\"/>\n",
-                   {"nesting deeper than 64"});
+    expect_refused(
+        "<m name=\"a\" value=\"" + std::string(100, '(') + "1" + std::string(100, ')') + "\"/>\n",
+        {"nesting deeper than 64"});
     // A chain of references deeper than the bound is refused, not followed down the stack.
     std::string chain = "<m name=\"m0\" value=\"1\"/>\n";
     for (int i = 1; i <= 1500; ++i) {
@@ -105,17 +107,17 @@ TEST(SeamlyFormulas, WhatCannotBeEvaluatedIsRefusedInOneLine) {
                  " + 1\"/>\n";
     }
     const std::string msg = message_of([&] {
-        parse_seamly_individual(
-            vit("mm", "<m name=\"top\" value=\"m1500\"/>\n" + chain), "f.vit");
+        parse_seamly_individual(vit("mm", "<m name=\"top\" value=\"m1500\"/>\n" + chain), "f.vit");
     });
     EXPECT_NE(msg.find("more than 1000 deep"), std::string::npos) << msg;
 }
 
 TEST(SeamlyFormulas, ValentinaFiveMultisizeTablesAreRefusedByName) {
     const std::string msg = message_of([] {
-        parse_seamly_multisize("<vst>\n<unit>cm</unit>\n<dimensions>\n<dimension type=\"x\"/>\n"
-                               "</dimensions>\n<body-measurements/>\n</vst>",
-                               "t.vst");
+        parse_seamly_multisize(
+            "<vst>\n<unit>cm</unit>\n<dimensions>\n<dimension type=\"x\"/>\n"
+            "</dimensions>\n<body-measurements/>\n</vst>",
+            "t.vst");
     });
     EXPECT_NE(msg.find("t.vst:3: multisize tables with <dimensions> (Valentina 0.5 and later) are "
                        "not supported"),

@@ -37,6 +37,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tapeline::pattern {
@@ -398,24 +399,23 @@ inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfO
     h.code(2, "HEADER");
     h.code(9, "$ACADVER");
     h.code(1, "AC1009");
-    h.code(9, "$INSUNITS");
-    h.code(70, 4);
-    h.code(9, "$MEASUREMENT");
-    h.code(70, 1);
-    for (const char* v : {"$EXTMIN", "$LIMMIN"}) {
-        h.code(9, v);
-        h.xy(extents.lo);
+    const std::pair<const char*, int> flags[] = {{"$INSUNITS", 4}, {"$MEASUREMENT", 1}};
+    for (const auto& [name, value] : flags) {
+        h.code(9, name);
+        h.code(70, value);
     }
-    for (const char* v : {"$EXTMAX", "$LIMMAX"}) {
-        h.code(9, v);
-        h.xy(extents.hi);
+    const std::pair<const char*, Point2> points[] = {
+        {"$EXTMIN", extents.lo},
+        {"$LIMMIN", extents.lo},
+        {"$EXTMAX", extents.hi},
+        {"$LIMMAX", extents.hi},
+        {"$PLIMMIN", Point2{0, 0}},
+        {"$PLIMMAX", Point2{size.x + 2 * margin, size.y + 2 * margin}},
+        {"$PINSBASE", Point2{margin - extents.lo.x, margin - extents.lo.y}}};
+    for (const auto& [name, p] : points) {
+        h.code(9, name);
+        h.xy(p);
     }
-    h.code(9, "$PLIMMIN");
-    h.xy({0, 0});
-    h.code(9, "$PLIMMAX");
-    h.xy({size.x + 2 * margin, size.y + 2 * margin});
-    h.code(9, "$PINSBASE");
-    h.xy({margin - extents.lo.x, margin - extents.lo.y});
     h.code(0, "ENDSEC");
     out << body.str();
     rep.extents_min = extents.lo;

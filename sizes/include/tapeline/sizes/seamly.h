@@ -60,34 +60,21 @@ inline std::string seamly_full_name(const std::string& ours) {
 /// ISO 8559-1 clause when the catalogue has one.
 inline std::string seamly_description(const std::string& ours) {
     const CatalogueMatch m = find_measurement(ours);
-    std::string d = "Measured on the body by tapeline measure";
-    if (m) {
-        switch (m.entry->kind) {
-            case MeasurementKind::girth:
-                d = "Girth: a closed tape around the body";
-                break;
-            case MeasurementKind::length:
-                d = "Length: a tape along the skin";
-                break;
-            case MeasurementKind::width:
-                d = "Width: a tape across the body, along the skin";
-                break;
-            case MeasurementKind::height:
-                d = "Height: vertical distance from the floor";
-                break;
-            case MeasurementKind::angle:
-                d = "Angle";
-                break;
-        }
-    }
+    // Indexed by MeasurementKind: girth, length, width, height, angle.
+    static const char* const how[] = {"Girth: a closed tape around the body",
+                                      "Length: a tape along the skin",
+                                      "Width: a tape across the body, along the skin",
+                                      "Height: vertical distance from the floor", "Angle"};
+    std::string d =
+        m ? how[static_cast<int>(m.entry->kind)] : "Measured on the body by tapeline measure";
     d += is_angle_measurement(ours) ? ", in degrees" : ", in mm";
     if (!m.side.empty()) {
         d += ", on the " + m.side + " side";
     }
     d += ".";
     if (m && *m.entry->iso_number) {
-        d += std::string(" ISO 8559-1:2017 ") + m.entry->iso_number + " " + m.entry->iso_title +
-             ".";
+        d +=
+            std::string(" ISO 8559-1:2017 ") + m.entry->iso_number + " " + m.entry->iso_title + ".";
     }
     return d;
 }
@@ -177,7 +164,6 @@ inline void write_seamly_individual(std::ostream& out, const MeasurementSet& set
                                     const std::string& notes = "") {
     write_seamly_individual(out, named_values(set), notes);
 }
-
 
 /// A Seamly2D/Valentina individual measurement file (.vit; root <vit> or <smis>). Values may be
 /// formulas over the file's other measurements (internal/seamly_formula.h); separators (Valentina

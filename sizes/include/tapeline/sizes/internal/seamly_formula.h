@@ -64,8 +64,9 @@ private:
         throw InvalidInput(where_ + ": formula '" + s_ + "' " + what);
     }
     [[noreturn]] void unsupported(const std::string& what) const {
-        fail(": " + what + " is not supported (numbers, measurement names, + - * / and "
-                           "parentheses are)");
+        fail(": " + what +
+             " is not supported (numbers, measurement names, + - * / and "
+             "parentheses are)");
     }
 
     void skip_space() {
