@@ -85,8 +85,9 @@ TEST(SeamlyFormulas, AnUndefinedNameLeavesItsMeasurementsOut) {
 
 TEST(SeamlyFormulas, WhatCannotBeEvaluatedIsRefusedInOneLine) {
     expect_refused("<m name=\"a\" value=\"sqrt(4)\"/>\n",
-                   {"f.vit:5: measurement 'a': formula 'sqrt(4)'",
-                    "function 'sqrt' is not supported", "+ - * /"});
+                   {"f.vit:5: measurement 'a': formula 'sqrt(4)': the function 'sqrt' is not "
+                    "supported",
+                    "+ - * /"});
     expect_refused("<m name=\"a\" value=\"2 ^ 3\"/>\n", {"'2 ^ 3'", "'^' at character 3"});
     expect_refused("<m name=\"a\" value=\"b > 1 ? 2 : 3\"/>\n<m name=\"b\" value=\"1\"/>\n",
                    {"'>' at character 3"});

@@ -48,7 +48,7 @@ public:
             unsupported(std::string("'") + s_[pos_] + "' at character " + std::to_string(pos_ + 1));
         }
         if (!std::isfinite(v)) {
-            fail("is not finite");
+            fail(" is not finite");
         }
         return v;
     }
@@ -61,7 +61,7 @@ private:
     std::size_t depth_ = 0;
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw InvalidInput(where_ + ": formula '" + s_ + "' " + what);
+        throw InvalidInput(where_ + ": formula '" + s_ + "'" + what);
     }
     [[noreturn]] void unsupported(const std::string& what) const {
         fail(": " + what +
