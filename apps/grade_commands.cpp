@@ -99,6 +99,11 @@ void run_grade(const GradeArgs& a) {
     tp::require_valid(base);
     const sizes::MeasurementSet from = sizes::read_measurement_input(a.from, a.from_set);
     const sizes::MeasurementSet to = sizes::read_measurement_input(a.to, a.to_set);
+    for (const sizes::MeasurementSet* set : {&from, &to}) {
+        for (const auto& [name, why] : set->left_out) {
+            std::cerr << "tapeline: warning: " << why << "; '" << name << "' left out\n";
+        }
+    }
     std::vector<tp::SeamSpec> seams;
     std::vector<std::string> skipped_seams;
     if (!a.no_fs_bindings && base.designer == "FreeSewing") {

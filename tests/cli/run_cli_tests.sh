@@ -508,6 +508,13 @@ assert r["seams"] and all(s["mismatch_mm"] <= 1.0 for s in r["seams"]), r["seams
 PY
 then ok "grade to a .vit: targets are the measured values, bindings within 2 mm, seams within 1 mm"
 else fail "grade to a .vit: $(head -c 300 gv_report.json)"; fi
+# A formula referring to a name the file does not define leaves that measurement out, with a
+# warning; the others stay usable (Valentina opens such files too).
+sed 's|</body-measurements>|<m name="@dangling" value="@nowhere + 1"/></body-measurements>|' vbody.vit > vdangling.vit
+expect_ok "grade to a .vit with a dangling formula" "$bin" grade "$fs" --from base36.json \
+  --to vdangling.vit --out gd.json --threads 2 --generations 0
+if grep -q "^tapeline: warning: vdangling.vit:[0-9]*: measurement '@dangling': formula '@nowhere + 1': refers to '@nowhere', which the file does not define; '@dangling' left out" err.txt
+then ok "the dangling formula is named in a warning"; else fail "dangling formula warning: $(head -c 300 err.txt)"; fi
 fi
 
 # --- measure ------------------------------------------------------------------------------------

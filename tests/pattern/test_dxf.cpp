@@ -1,6 +1,7 @@
 // DXF-AAMA export read back by an independent reader (python3-ezdxf via dxf_extract.py): header
-// units, one block per piece with its texts, boundary within the 0.05 mm sampling tolerance of the
-// model outline both ways, notch positions and counts, grain and fold lines, one INSERT per block.
+// units and extents, one block per piece with its texts, boundary within the 0.05 mm sampling
+// tolerance of the model outline both ways, notch positions and counts, grain and fold lines, one
+// INSERT per block.
 #include <tapeline/pattern/dxf.h>
 #include <tapeline/pattern/io_freesewing.h>
 #include <tapeline/pattern/io_garmentcode.h>
@@ -58,6 +59,43 @@ double distance_to_polyline(const Point2& p, const std::vector<Point2>& ring, bo
     return best;
 }
 
+/// The header's extents are the box of everything drawn as ezdxf places it: the geometry's
+/// points exactly, each text by the writer's estimate (one em per character, 0.35 em below the
+/// baseline); they contain ezdxf's own box (its font metrics for the texts). The sheet for a 1:1
+/// plot is the extents plus 10 mm on each side.
+void check_extents(const Json& doc, const DxfReport& rep) {
+    const Json& placed = doc["placed"];
+    ASSERT_TRUE(placed["geometry_box"].is_array());
+    double x0 = placed["geometry_box"][0], y0 = placed["geometry_box"][1];
+    double x1 = placed["geometry_box"][2], y1 = placed["geometry_box"][3];
+    for (const Json& t : placed["texts"]) {
+        const double x = t[0], y = t[1], h = t[2], n = t[3];
+        x0 = std::min(x0, x);
+        y0 = std::min(y0, y - 0.35 * h);
+        x1 = std::max(x1, x + n * h);
+        y1 = std::max(y1, y + h);
+    }
+    const double tol = 2e-6;  // coordinates are written to 1e-6 mm
+    EXPECT_NEAR(doc["extmin"][0].get<double>(), x0, tol);
+    EXPECT_NEAR(doc["extmin"][1].get<double>(), y0, tol);
+    EXPECT_NEAR(doc["extmax"][0].get<double>(), x1, tol);
+    EXPECT_NEAR(doc["extmax"][1].get<double>(), y1, tol);
+    EXPECT_EQ(doc["limmin"], doc["extmin"]);
+    EXPECT_EQ(doc["limmax"], doc["extmax"]);
+    EXPECT_NEAR(rep.extents_min.x, x0, tol);
+    EXPECT_NEAR(rep.extents_max.y, y1, tol);
+    const Json& ez = placed["ezdxf_box"];
+    EXPECT_LE(doc["extmin"][0].get<double>(), ez[0].get<double>() + tol);
+    EXPECT_LE(doc["extmin"][1].get<double>(), ez[1].get<double>() + tol);
+    EXPECT_GE(doc["extmax"][0].get<double>(), ez[2].get<double>() - tol);
+    EXPECT_GE(doc["extmax"][1].get<double>(), ez[3].get<double>() - tol);
+    EXPECT_EQ(doc["plimmin"], Json::array({0.0, 0.0}));
+    EXPECT_NEAR(doc["plimmax"][0].get<double>(), x1 - x0 + 20, tol);
+    EXPECT_NEAR(doc["plimmax"][1].get<double>(), y1 - y0 + 20, tol);
+    EXPECT_NEAR(doc["pinsbase"][0].get<double>(), 10 - x0, tol);
+    EXPECT_NEAR(doc["pinsbase"][1].get<double>(), 10 - y0, tol);
+}
+
 struct Deviation {
     double dxf_to_model = 0, model_to_dxf = 0;
     std::size_t vertices = 0;
@@ -75,6 +113,7 @@ void check_pattern(const Pattern& pat, const std::string& dxf_path, bool& skip, 
     EXPECT_EQ(doc["insunits"], 4);
     EXPECT_EQ(doc["measurement"], 1);
     EXPECT_EQ(doc["audit_errors"], 0);
+    check_extents(doc, rep);
     for (const char* l : {"1", "2", "3", "4", "6", "7", "8"}) {
         EXPECT_NE(std::find(doc["layers"].begin(), doc["layers"].end(), l), doc["layers"].end())
             << "layer " << l;

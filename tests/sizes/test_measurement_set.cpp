@@ -93,11 +93,11 @@ TEST(MeasurementSets, SeamlyErrorsNameFileAndLine) {
     expect_invalid(
         [] {
             parse_seamly_individual(vit_head +
-                                        "<m name=\"x\" value=\"#a+2\"/>\n"
+                                        "<m name=\"x\" value=\"sqrt(4)+2\"/>\n"
                                         "</body-measurements>\n</vit>",
                                     "f.vit");
         },
-        {"f.vit:5", "measurement 'x'", "'#a+2'", "formulas"});
+        {"f.vit:5", "measurement 'x'", "'sqrt(4)+2'", "function 'sqrt' is not supported"});
     expect_invalid([] { parse_seamly_individual("<vit><unit>furlong</unit></vit>", "f.vit"); },
                    {"f.vit", "unknown unit 'furlong'"});
     expect_invalid([] { parse_seamly_individual("<vit><unit>cm</unit></vit>", "f.vit"); },

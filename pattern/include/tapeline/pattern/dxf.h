@@ -1,7 +1,11 @@
 // DXF export for cutting-room software: the AAMA layout that ASTM D6673 ("DXF-ASTM", withdrawn
 // 2019) grew out of, written as R12 ASCII DXF (AC1009), which AAMA readers accept.
 //
-//   HEADER   $ACADVER AC1009, $INSUNITS 4 (mm), $MEASUREMENT 1 (metric), $EXTMIN/$EXTMAX
+//   HEADER   $ACADVER AC1009, $INSUNITS 4 (mm), $MEASUREMENT 1 (metric); $EXTMIN/$EXTMAX and
+//            $LIMMIN/$LIMMAX the box of every entity as inserted (texts estimated: one em per
+//            character, 0.35 em below the baseline); the sheet for a 1:1 plot, $PLIMMIN/$PLIMMAX
+//            (0,0)–(box + 10 mm on each side) with $PINSBASE putting the box 10 mm inside it, which
+//            CAD programs that print without a layout (LibreCAD's dxf2pdf) take as their page
 //   TABLES   line type CONTINUOUS; layers 1–8, 14, 80–83 (AAMA layers are numbered, not named)
 //   BLOCKS   one BLOCK per piece, in model coordinates (mm, y up, base point 0,0):
 //              layer 1  boundary as one closed POLYLINE; TEXT "Piece Name: …", "Size: …",
@@ -31,7 +35,9 @@
 #include <limits>
 #include <ostream>
 #include <set>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tapeline::pattern {
@@ -49,13 +55,35 @@ struct DxfReport {
                 internal_lines = 0;
     std::vector<std::string> block_names;  // per piece, as written (sanitised, unique)
     std::vector<Point2> insert_points;     // per piece: where its block is inserted
+    Point2 extents_min, extents_max;       // $EXTMIN, $EXTMAX: the box of every entity
 };
 
 namespace internal {
 
+/// An axis-aligned box; empty until a point is added.
+struct DxfBox {
+    Point2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    Point2 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+
+    bool empty() const { return lo.x > hi.x; }
+    void add(const Point2& p) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    void add(const DxfBox& b, const Point2& shift = Point2{0, 0}) {
+        if (!b.empty()) {
+            add(b.lo + shift);
+            add(b.hi + shift);
+        }
+    }
+};
+
+/// Writes group codes; `box` grows by every entity drawn (text by its estimated extent).
 class DxfWriter {
 public:
     explicit DxfWriter(std::ostream& out) : out_(out) {}
+    DxfBox box;
+
     void code(int c, const std::string& v) {
         char buf[8];
         std::snprintf(buf, sizeof buf, "%3d", c);
@@ -73,11 +101,14 @@ public:
         code(base + 20, 0.0);
     }
     void point(const std::string& layer, const Point2& p) {
+        box.add(p);
         code(0, "POINT");
         code(8, layer);
         xy(p);
     }
     void line(const std::string& layer, const Point2& a, const Point2& b) {
+        box.add(a);
+        box.add(b);
         code(0, "LINE");
         code(8, layer);
         xy(a, 10);
@@ -90,6 +121,7 @@ public:
         xy({0, 0});
         code(70, closed ? 1 : 0);
         for (const Point2& p : pts) {
+            box.add(p);
             code(0, "VERTEX");
             code(8, layer);
             xy(p);
@@ -98,6 +130,10 @@ public:
         code(8, layer);
     }
     void text(const std::string& layer, const Point2& p, double height, const std::string& s) {
+        // Glyph widths depend on the reader's font; one em per character bounds the usual CAD
+        // fonts, 0.35 em covers descenders.
+        box.add(Point2{p.x, p.y - 0.35 * height});
+        box.add(Point2{p.x + height * static_cast<double>(s.size()), p.y + height});
         code(0, "TEXT");
         code(8, layer);
         xy(p);
@@ -232,22 +268,11 @@ inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfO
         row_h = std::max(row_h, h);
     }
 
-    DxfWriter w(out);
-    w.code(999, "Tapeline DXF-AAMA export: " + dxf_text(pattern.name));
-    w.code(0, "SECTION");
-    w.code(2, "HEADER");
-    w.code(9, "$ACADVER");
-    w.code(1, "AC1009");
-    w.code(9, "$INSUNITS");
-    w.code(70, 4);
-    w.code(9, "$MEASUREMENT");
-    w.code(70, 1);
-    w.code(9, "$EXTMIN");
-    w.xy(lo);
-    w.code(9, "$EXTMAX");
-    w.xy(hi);
-    w.code(0, "ENDSEC");
-
+    // The header needs the extents of everything drawn: tables, blocks and entities go to a
+    // buffer first, each block's box shifted to where it is inserted.
+    std::ostringstream body;
+    DxfWriter w(body);
+    DxfBox extents;
     const std::vector<std::string> layers = {"1", "2",  "3",  "4",  "5",  "6", "7",
                                              "8", "14", "80", "81", "82", "83"};
     w.code(0, "SECTION");
@@ -292,6 +317,7 @@ inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfO
         const std::string name = dxf_block_name(piece.name, used);
         rep.block_names.push_back(name);
         ++rep.blocks;
+        w.box = DxfBox{};
         w.code(0, "BLOCK");
         w.code(8, "0");
         w.code(2, name);
@@ -346,13 +372,16 @@ inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfO
         }
         w.code(0, "ENDBLK");
         w.code(8, "0");
+        extents.add(w.box, rep.insert_points[i]);
     }
     w.code(0, "ENDSEC");
 
     w.code(0, "SECTION");
     w.code(2, "ENTITIES");
+    w.box = DxfBox{};
     w.text("1", {lo.x, hi.y + 2 * o.text_height_mm}, o.text_height_mm,
            "Style Name: " + dxf_text(pattern.name));
+    extents.add(w.box);
     for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
         w.code(0, "INSERT");
         w.code(8, "1");
@@ -361,6 +390,36 @@ inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfO
     }
     w.code(0, "ENDSEC");
     w.code(0, "EOF");
+
+    const double margin = 10;
+    const Point2 size = extents.hi - extents.lo;
+    DxfWriter h(out);
+    h.code(999, "Tapeline DXF-AAMA export: " + dxf_text(pattern.name));
+    h.code(0, "SECTION");
+    h.code(2, "HEADER");
+    h.code(9, "$ACADVER");
+    h.code(1, "AC1009");
+    const std::pair<const char*, int> flags[] = {{"$INSUNITS", 4}, {"$MEASUREMENT", 1}};
+    for (const auto& [name, value] : flags) {
+        h.code(9, name);
+        h.code(70, value);
+    }
+    const std::pair<const char*, Point2> points[] = {
+        {"$EXTMIN", extents.lo},
+        {"$LIMMIN", extents.lo},
+        {"$EXTMAX", extents.hi},
+        {"$LIMMAX", extents.hi},
+        {"$PLIMMIN", Point2{0, 0}},
+        {"$PLIMMAX", Point2{size.x + 2 * margin, size.y + 2 * margin}},
+        {"$PINSBASE", Point2{margin - extents.lo.x, margin - extents.lo.y}}};
+    for (const auto& [name, p] : points) {
+        h.code(9, name);
+        h.xy(p);
+    }
+    h.code(0, "ENDSEC");
+    out << body.str();
+    rep.extents_min = extents.lo;
+    rep.extents_max = extents.hi;
     return rep;
 }
 

@@ -19,6 +19,9 @@ struct MeasurementSet {
     std::string name;                      ///< set name (file stem or set key)
     std::string source;                    ///< file it came from
     std::map<std::string, double> values;  ///< mm (angles: degrees)
+    /// Measurements of the file that have no value, with the reason (a Seamly2D formula that
+    /// refers to a name the file does not define).
+    std::map<std::string, std::string> left_out;
 
     /// The value of `key`, or nullopt when the set lacks it.
     std::optional<double> get(const std::string& key) const {
