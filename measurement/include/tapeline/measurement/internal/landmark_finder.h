@@ -1327,6 +1327,13 @@ private:
             // the calf (extrema over a window of 2% of the height each way).
             auto c = local_extremum(prof, static_cast<std::size_t>(a), true);
             auto k = c ? local_extremum(prof, *c, false) : std::nullopt;
+            // A narrowing below a fifth of the height is the shin above a bump of the lower leg,
+            // not the knee (0.285 of the height in Drillis & Contini; adult knees sit above 0.23):
+            // go on to the next maximum and minimum up the leg.
+            while (k && prof[*k].t < y_of(0.20)) {
+                c = local_extremum(prof, *k + 1, true);
+                k = c ? local_extremum(prof, *c, false) : std::nullopt;
+            }
             if (!k || prof[*k].t > *crotch_y_ - 0.05 * height_) {
                 // No narrowing of its own (a full calf running into the thigh): the narrowest
                 // section where knees are, 0.24-0.33 of the height (0.285 in Drillis & Contini
