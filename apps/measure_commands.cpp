@@ -102,9 +102,12 @@ void run_measure(const MeasureArgs& a) {
 
     const auto loaded = read_triangle_mesh<MeasureMesh>(a.body);
     const auto t1 = Clock::now();
-    tm::BodyMeasurements r = tm::measure_body(loaded.mesh, body, {}, overrides);
+    const tm::Body prepared = tm::make_body(loaded.mesh, body);
+    const double frame_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+    tm::BodyMeasurements r = tm::measure_body(prepared, {}, overrides);
+    r.report.frame_seconds = frame_seconds;
     const double length_seconds =
-        tm::measure_skin_lengths(loaded.mesh, r.frame, r.landmarks, r.measurements);
+        tm::measure_skin_lengths(prepared, loaded.mesh, r.landmarks, r.measurements);
     const auto t2 = Clock::now();
 
     Json j = tm::body_measurements_json(a.body, r.frame, r.measurements, r.landmarks, r.report,
@@ -116,6 +119,12 @@ void run_measure(const MeasureArgs& a) {
                             {"lengths", length_seconds},
                             {"total", std::chrono::duration<double>(t2 - t0).count()}};
 
+    for (const auto& h : r.report.holes) {
+        std::cerr << "tapeline: " << a.body << ": filled a hole "
+                  << tm::internal::grouped_mm(h.size) << " mm across at "
+                  << tm::internal::grouped_mm(h.height) << " mm height, " << h.region << " ("
+                  << h.filling << ", " << h.faces_added << " faces)\n";
+    }
     for (const auto& w : r.report.warnings) {
         std::cerr << "tapeline: warning: " << w << '\n';
     }
@@ -158,7 +167,10 @@ void register_measure_commands(CLI::App& app) {
         "measure",
         "Measure a body mesh: landmarks, tape girths and lengths along the skin (mm, ISO 8559-1, "
         "FreeSewing and Seamly2D names)");
-    cmd->add_option("BODY", args->body, "Closed body mesh (OBJ, OFF, PLY, STL)")->required();
+    cmd->add_option("BODY", args->body,
+                    "Body mesh (OBJ, OFF, PLY, STL); holes up to 5 % of the stature across are "
+                    "filled")
+        ->required();
     cmd->add_option("--units", args->units,
                     "Length unit of the mesh: m, dm, cm or mm (required when the height does not "
                     "tell it)");

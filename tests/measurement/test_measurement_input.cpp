@@ -28,13 +28,17 @@ Triangles octahedron_faces() {
     return {{4, 2, 0}, {4, 1, 2}, {4, 3, 1}, {4, 0, 3}, {5, 0, 2}, {5, 2, 1}, {5, 1, 3}, {5, 3, 0}};
 }
 
-TEST(MeasurementInput, OpenMeshIsRejectedNamingAnEdge) {
+// The hole left by one face is 0.90 m across (from (0, 0, 0) to (0.3, 0.85, 0)), far more than
+// the 85 mm (5 % of 1.7 m) make_body fills; its centre (the corners' mean) is 567 mm high.
+TEST(MeasurementInput, OpenMeshWithABigHoleIsRejectedNamingTheHole) {
     Triangles open = octahedron_faces();
     open.pop_back();
     BodyOptions o;
     o.name = "open.obj";
-    expect_error<TopologyError>([&] { measure_mesh(octahedron(), open, o); },
-                                {"open.obj", "not closed", "boundary edges"}, "open mesh");
+    expect_error<TopologyError>(
+        [&] { measure_mesh(octahedron(), open, o); },
+        {"open.obj: a hole 901 mm across at 567 mm height", "(holes up to 85 mm, 5 % of the"},
+        "open mesh");
 }
 
 TEST(MeasurementInput, UnknownUnitAxisAndPoseStrings) {

@@ -11,6 +11,7 @@
 #include <tapeline/core/compact_mesh.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/holes.h>
 #include <tapeline/measurement/internal/sections.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -23,6 +24,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,15 +35,18 @@ namespace tapeline::measurement {
 struct Body {
     BodyFrame frame;
     internal::BodyMesh mesh;  ///< canonical mm, with edge/face adjacency
+    /// The input's holes, filled (holes.h): their faces and vertices follow the input's.
+    std::vector<BodyHole> holes;
 
     const std::vector<Vec3>& points() const { return mesh.points; }
     const std::vector<std::array<std::uint32_t, 3>>& triangles() const { return mesh.triangles; }
     double height() const { return frame.height; }
 };
 
-/// Builds a Body from points (input coordinates and unit) and triangles. Rejects NaN/infinite
-/// coordinates, out-of-range indices and a bad frame (InvalidInput), and open or non-manifold
-/// meshes (TopologyError), each with a message naming options.name and the element.
+/// Builds a Body from points (input coordinates and unit) and triangles. Holes up to 5 % of the
+/// stature across are filled (holes.h; Body::holes, BodyMesh::filled). Rejects NaN/infinite
+/// coordinates, out-of-range indices and a bad frame (InvalidInput), and bigger holes and
+/// non-manifold meshes (TopologyError), each with a message naming options.name and the element.
 inline Body make_body(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> tris,
                       const BodyOptions& options) {
     const std::string& name = options.name;
@@ -100,6 +105,24 @@ inline Body make_body(std::vector<Vec3> points, std::vector<std::array<std::uint
     fr.height = input_height * fr.scale;
     for (auto& p : points) {
         p = fr.to_canonical(p);
+    }
+    body.holes = fill_body_holes(points, tris, body.mesh.filled, fr.height, name);
+    if (!body.holes.empty()) {
+        // A patch may reach below the input's lowest vertex (a sole) or above its highest.
+        double y0 = std::numeric_limits<double>::infinity(), y1 = -y0;
+        for (const auto& p : points) {
+            y0 = std::min(y0, p[1]);
+            y1 = std::max(y1, p[1]);
+        }
+        for (auto& p : points) {
+            p[1] -= y0;
+        }
+        for (auto& hole : body.holes) {
+            hole.centre[1] -= y0;
+            hole.height = hole.centre[1];
+        }
+        fr.floor += y0;
+        fr.height = y1 - y0;
     }
     body.mesh.name = name;
     body.mesh.points = std::move(points);

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -98,6 +99,18 @@ struct BodyOptions {
     Axis front{2, 1};                ///< +Z
     Pose pose = Pose::a_pose;    ///< arms down (A) or out (T)
     std::string name = "body";  ///< used in messages (the file name, usually)
+};
+
+/// A hole of the input mesh (a loop of boundary edges) that make_body filled (holes.h).
+struct BodyHole {
+    double size = 0;       ///< largest distance between two of its boundary vertices, mm
+    Vec3 centre{0, 0, 0};  ///< mean of its boundary vertices, canonical mm
+    double height = 0;     ///< of the centre above the floor, mm
+    std::string region;    ///< where it is: "the left sole", "the crown", ... (holes.h)
+    /// How it was filled: "faired" (triangulated, refined and faired), "refined" (fairing
+    /// failed: triangulated and refined) or "triangulated" (no refinement).
+    std::string filling;
+    std::size_t boundary_edges = 0, faces_added = 0, vertices_added = 0;
 };
 
 /// What was used to map the input into the canonical frame (see the top of this file):

@@ -53,6 +53,7 @@ private:
         double area = 0;
         std::vector<Vec3> loop;
         Plane plane;
+        bool crosses_filled = false;
     };
 
     const BodyMesh& m_;
@@ -91,6 +92,7 @@ private:
         t.perimeter = ps.sections[static_cast<std::size_t>(s)].perimeter;
         t.area = ps.sections[static_cast<std::size_t>(s)].area;
         t.loop = ps.tape(static_cast<std::size_t>(s));
+        t.crosses_filled = ps.sections[static_cast<std::size_t>(s)].crosses_filled;
         return t;
     }
 
@@ -109,6 +111,7 @@ private:
         m.plane_point = t.plane.origin;
         m.plane_normal = t.plane.normal;
         m.landmarks = deps;
+        m.crosses_filled_hole = t.crosses_filled;
         out_.add(std::move(m));
     }
 

@@ -12,7 +12,9 @@
 
 #include <tapeline/geodesic/curvature_flow.h>
 #include <tapeline/geodesic/sources.h>
+#include <tapeline/measurement/body.h>
 #include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/holes.h>
 #include <tapeline/measurement/measurement_types.h>
 #include <tapeline/measurement/shoulder_slope.h>
 
@@ -22,6 +24,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Polygon_mesh_slicer.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_2.h>
 
 #include <algorithm>
@@ -526,7 +529,7 @@ void measure_cross_seam(const TriangleMesh& tm, const BodyFrame& frame, const La
             q.push_back({c[2], c[1]});
         }
         if (q.size() < 4 || q.front() != q.back()) {
-            continue;  // open polylines only come from an open mesh, which make_body refuses
+            continue;  // open polylines come from an open mesh (measure filled_input_mesh)
         }
         q.pop_back();
         const std::size_t n = q.size();
@@ -674,6 +677,40 @@ double measure_skin_lengths(const TriangleMesh& tm, const BodyFrame& frame,
     take_skin_lengths(solver, at, frame, plan_skin_lengths(at, landmarks), set);
     measure_cross_seam(tm, frame, landmarks, set, np);
     measure_shoulder_slope(landmarks, set);
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The body's mesh with its filled holes, back in the input's coordinates and unit (the vertices
+/// and faces of the input first, in their order, then the patches').
+inline CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>
+filled_input_mesh(const Body& body) {
+    using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
+    using Mesh = CGAL::Surface_mesh<Point>;
+    Mesh out;
+    for (const auto& p : body.mesh.points) {
+        const Vec3 q = body.frame.to_input(p);
+        out.add_vertex(Point(q[0], q[1], q[2]));
+    }
+    for (const auto& t : body.mesh.triangles) {
+        out.add_face(Mesh::Vertex_index(t[0]), Mesh::Vertex_index(t[1]), Mesh::Vertex_index(t[2]));
+    }
+    return out;
+}
+
+/// The lengths along the skin of a prepared body whose input mesh is `tm` (what make_body was
+/// given): taken on `tm` when no hole was filled, else on the filled mesh (filled_input_mesh),
+/// the lengths that cross a filled hole marked. Returns the wall-clock seconds.
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double measure_skin_lengths(const Body& body, const TriangleMesh& tm, const LandmarkSet& landmarks,
+                            MeasurementSet& set,
+                            const NamedParameters& np = CGAL::parameters::default_values()) {
+    if (body.holes.empty()) {
+        return measure_skin_lengths(tm, body.frame, landmarks, set, np);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto filled = filled_input_mesh(body);
+    measure_skin_lengths(filled, body.frame, landmarks, set);
+    mark_filled_crossings(body.mesh, set);
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

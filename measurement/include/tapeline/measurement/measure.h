@@ -6,6 +6,7 @@
 #include <tapeline/measurement/body.h>
 #include <tapeline/measurement/body_checks.h>
 #include <tapeline/measurement/girths.h>
+#include <tapeline/measurement/holes.h>
 #include <tapeline/measurement/landmarks.h>
 #include <tapeline/measurement/measurement_types.h>
 #include <tapeline/measurement/self_checks.h>
@@ -24,7 +25,9 @@ struct BodyMeasurements {
     std::vector<CheckWarning> warnings;
 };
 
-/// Landmarks (with overrides), girths and self-checks of a prepared body. A mesh that is not one
+/// Landmarks (with overrides), girths and self-checks of a prepared body; the filled holes of
+/// its input are in the report, and the measurements resting on them are marked
+/// (Measurement::crosses_filled_hole). A mesh that is not one
 /// upright human body is refused (InvalidInput, body_checks.h) before anything is measured.
 inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& options = {},
                                      const LandmarkOverrides& overrides = {}) {
@@ -34,6 +37,7 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     out.report.vertices = body.mesh.points.size();
     out.report.faces = body.mesh.triangles.size();
     out.report.components = body.mesh.components;
+    out.report.holes = body.holes;
     const auto t0 = Clock::now();
     check_body_shape(body);
     LandmarkReport lr;
@@ -42,6 +46,7 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     const auto t1 = Clock::now();
     std::size_t cuts = 0;
     out.measurements = measure_girths(body, out.landmarks, options, &cuts);
+    mark_filled_crossings(body.mesh, out.measurements);
     apply_catalogue(out.measurements);
     out.warnings = self_check(body, out.landmarks, out.measurements);
     const auto t2 = Clock::now();

@@ -1,8 +1,9 @@
 // The measurement JSON of a measured body ("format": "tapeline-measurements", what `tapeline
 // measure --out` writes): the frame, each measurement — the catalogue's columns
 // (tapeline/sizes/json_formats.h) plus where it was taken (landmarks, tape loop or path, girth
-// plane) —, the measurements that could not be taken, the landmarks and the report. Points are
-// canonical millimetres rounded to 0.001 mm, far below any mesh's resolution. No CGAL.
+// plane, whether it crosses a filled hole) —, the measurements that could not be taken, the
+// landmarks and the report (with the input's filled holes). Points are canonical millimetres
+// rounded to 0.001 mm, far below any mesh's resolution. No CGAL.
 // tapeline::sizes::read_measurement_input reads it back as a measurement set.
 //
 // Also the nlohmann to_json writers of the options and the report (body_types.h,
@@ -76,6 +77,7 @@ inline nlohmann::ordered_json measurement_json(const Measurement& m) {
     nlohmann::ordered_json j = sizes::measurement_json_entry(m.name, to_string(m.kind), m.value);
     j["landmarks"] = m.landmarks;
     j["closed"] = m.closed;
+    j["crosses_filled_hole"] = m.crosses_filled_hole;
     if (m.kind == MeasurementKind::girth) {
         j["plane"] = {{"point", rounded_point(m.plane_point)},
                       {"normal", rounded_point(m.plane_normal)}};
@@ -121,13 +123,25 @@ inline nlohmann::ordered_json body_measurements_json(const std::string& body,
         checks.push_back({{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
     }
     j["warnings"] = checks;
+    Json holes = Json::array();  // the input's holes, filled before measuring (holes.h)
+    for (const auto& h : report.holes) {
+        holes.push_back({{"size_mm", std::round(h.size * 10) / 10},
+                         {"height_mm", std::round(h.height * 10) / 10},
+                         {"centre", internal::rounded_point(h.centre)},
+                         {"region", h.region},
+                         {"filling", h.filling},
+                         {"boundary_edges", h.boundary_edges},
+                         {"faces_added", h.faces_added},
+                         {"vertices_added", h.vertices_added}});
+    }
     j["report"] = {{"vertices", report.vertices},
                    {"faces", report.faces},
                    {"components", report.components},
                    {"sections", report.sections},
                    {"landmarks_found", report.landmarks_found},
                    {"landmarks_missing", report.landmarks_missing},
-                   {"warnings", report.warnings}};
+                   {"warnings", report.warnings},
+                   {"holes", holes}};
     return j;
 }
 

@@ -119,6 +119,10 @@ struct Measurement {
     Vec3 plane_point{0, 0, 0};           ///< girths: a point of the tape's plane
     Vec3 plane_normal{0, 1, 0};          ///< girths: the plane's unit normal
     std::vector<std::string> landmarks;  ///< the landmarks it depends on
+    /// The tape crosses a face that fills a hole of the input mesh (BodyMesh::filled): girths,
+    /// a loop of their section passes through one; lengths and heights, a piece of their path
+    /// or one of their points lies on one. Its value then rests on the filled surface.
+    bool crosses_filled_hole = false;
 };
 
 /// A measurement that could not be taken, with a one-line reason naming it and its cause.
@@ -242,6 +246,7 @@ struct MeasureReport {
     double girth_seconds = 0;     ///< girth levels, sections and hulls
     std::size_t landmarks_found = 0, landmarks_missing = 0;
     std::vector<std::string> warnings;  ///< one line each (landmarks not found, ...)
+    std::vector<BodyHole> holes;        ///< the input's holes, filled before measuring
 };
 
 }  // namespace tapeline::measurement

@@ -49,6 +49,8 @@ struct BodyMesh {
     std::string name;
     std::vector<Vec3> points;
     std::vector<std::array<std::uint32_t, 3>> triangles;
+    /// Per triangle: added by filling a hole of the input (holes.h); empty when none was.
+    std::vector<bool> filled;
     std::vector<std::array<std::uint32_t, 2>> edges;       // end vertices
     std::vector<std::array<std::uint32_t, 2>> edge_faces;  // the two faces of each edge
     std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k joins corners k and k+1
@@ -60,6 +62,8 @@ struct BodyMesh {
     std::vector<std::uint32_t> chunk_edges;
     std::vector<std::array<Vec3, 2>> chunk_ends;  // end points of chunk_edges[i], contiguous
     std::vector<std::array<Vec3, 2>> chunk_box;   // min, max corner
+
+    bool is_filled(std::size_t f) const { return !filled.empty() && filled[f]; }
 };
 
 /// Sorts the edges into spatially coherent chunks with bounding boxes (BodyMesh::chunk_edges).
@@ -116,7 +120,8 @@ inline void build_edge_chunks(BodyMesh& m) {
 }
 
 /// Fills edges, edge_faces, face_edges and components. Rejects (TopologyError, naming the mesh
-/// and the first offending edge) boundary edges and edges with more than two faces.
+/// and the first offending edge) edges with more than two faces, then boundary edges (make_body
+/// fills the holes first, holes.h).
 inline void build_adjacency(BodyMesh& m) {
     const std::size_t nf = m.triangles.size();
     struct HalfEdge {
@@ -167,14 +172,14 @@ inline void build_adjacency(BodyMesh& m) {
         return "edge between vertices " + std::to_string(key >> 32) + " and " +
                std::to_string(key & 0xffffffffu);
     };
+    if (non_manifold > 0) {
+        throw TopologyError(m.name + ": non-manifold " + edge_name(first_non_manifold) + " (" +
+                            std::to_string(non_manifold) + " edges with more than two faces)");
+    }
     if (boundary > 0) {
         throw TopologyError(m.name + ": the body mesh is not closed: " + edge_name(first_boundary) +
                             " has one face (" + std::to_string(boundary) +
                             " boundary edges); measuring needs a closed surface");
-    }
-    if (non_manifold > 0) {
-        throw TopologyError(m.name + ": non-manifold " + edge_name(first_non_manifold) + " (" +
-                            std::to_string(non_manifold) + " edges with more than two faces)");
     }
     // Components: union-find over faces sharing an edge.
     std::vector<std::uint32_t> parent(nf);
@@ -234,7 +239,8 @@ struct Plane {
 struct Loop {
     std::vector<Vec3> points;
     std::vector<Vec2> uv;
-    Vec2 lo{0, 0}, hi{0, 0};  // 2D bounding box
+    Vec2 lo{0, 0}, hi{0, 0};      // 2D bounding box
+    bool crosses_filled = false;  // passes through a face that fills a hole (BodyMesh::filled)
 };
 
 /// Scratch buffers reused between cuts of the same mesh.
@@ -295,6 +301,7 @@ inline std::vector<Loop> cut(const BodyMesh& m, const Plane& plane, CutWorkspace
         std::uint32_t f = m.edge_faces[e][0];
         do {
             ws.visited[static_cast<std::size_t>(ws.crossing[e])] = 1;
+            loop.crosses_filled = loop.crosses_filled || m.is_filled(f);
             loop.points.push_back(ws.crossing_points[static_cast<std::size_t>(ws.crossing[e])]);
             // The other crossing edge of face f (a face is crossed by 0 or 2 edges).
             std::uint32_t next = e;
@@ -370,6 +377,7 @@ struct Section {
     double area = 0;                 // hull area
     Vec2 centroid{0, 0};             // hull centroid
     Vec2 lo{0, 0}, hi{0, 0};         // bounding box
+    bool crosses_filled = false;     // one of its loops crosses a filled hole
 };
 
 /// A plane's loops grouped into sections, each with its tape.
@@ -501,6 +509,7 @@ inline PlaneSection section(const BodyMesh& m, const Plane& plane, CutWorkspace&
         for (std::size_t j = 0; j < n; ++j) {
             if (root(j) == i) {
                 s.loops.push_back(j);
+                s.crosses_filled = s.crosses_filled || ps.loops[j].crosses_filled;
                 pts.insert(pts.end(), ps.loops[j].uv.begin(), ps.loops[j].uv.end());
             }
         }
