@@ -37,11 +37,11 @@ TEST(BodyChecks, DecimetreBodyMeasuredInMetresIsRefusedNamingUnits) {
     BodyOptions o = decimetres("body.obj");
     o.unit = LengthUnit::m;
     expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
-                               {"body.obj", "stature 16", "not a human height", "--units"},
+                               {"body.obj", "stature 15.9 m", "not a human height", "--units"},
                                "metres");
     o.unit = LengthUnit::cm;
     expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
-                               {"body.obj", "stature 0.16", "--units"}, "centimetres");
+                               {"body.obj", "stature 0.159 m", "--units"}, "centimetres");
 }
 
 TEST(BodyChecks, TwoBodiesSideBySideAreRefused) {
@@ -56,9 +56,9 @@ TEST(BodyChecks, TwoBodiesSideBySideAreRefused) {
                                static_cast<std::uint32_t>(t[1] + n),
                                static_cast<std::uint32_t>(t[2] + n)});
     }
-    expect_error<InvalidInput>(
-        [&] { measure_mesh(s.points, s.triangles, decimetres("two.obj")); },
-        {"two.obj", "not one body", "2 separate parts", "one body per file"}, "two bodies");
+    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, decimetres("two.obj")); },
+                               {"two.obj", "not one body", "2 separate parts", "one body per file"},
+                               "two bodies");
 }
 
 TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
@@ -66,9 +66,9 @@ TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
     for (auto& p : s.points) {
         p = {-p[1], p[0], p[2]};  // a quarter turn about z: the body's up is now -X
     }
-    expect_error<InvalidInput>(
-        [&] { measure_mesh(s.points, s.triangles, decimetres("side.obj")); },
-        {"side.obj", "not upright", "tall along the up axis +Y", "--up"}, "on its side");
+    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, decimetres("side.obj")); },
+                               {"side.obj", "not upright", "tall along the up axis +Y", "--up"},
+                               "on its side");
     BodyOptions o = decimetres("side.obj");
     o.up = Axis::parse("-X", "--up");
     const Result r = measure_mesh(s.points, s.triangles, o);
@@ -80,9 +80,8 @@ TEST(BodyChecks, UpsideDownBodyIsRefusedNamingUp) {
     for (auto& p : s.points) {
         p = {-p[0], -p[1], p[2]};  // half a turn about the front axis
     }
-    expect_error<InvalidInput>(
-        [&] { measure_mesh(s.points, s.triangles, decimetres("flip.obj")); },
-        {"flip.obj", "upside down", "--up"}, "upside down");
+    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, decimetres("flip.obj")); },
+                               {"flip.obj", "upside down", "--up"}, "upside down");
 }
 
 TEST(BodyChecks, EllipsoidIsNotABody) {
@@ -158,9 +157,8 @@ TEST(SelfChecks, WristMidForearmBreaksSymmetryAndForearmLength) {
     const Vec3 mid{0.5 * (elbow->point[0] + wrist->point[0]),
                    0.5 * (elbow->point[1] + wrist->point[1]),
                    0.5 * (elbow->point[2] + wrist->point[2])};
-    const Result r = measure_file(kBundled, o,
-                                  write_overrides("wrist.json", "\"wrist_right\": " +
-                                                                    point_json(mid)));
+    const Result r = measure_file(
+        kBundled, o, write_overrides("wrist.json", "\"wrist_right\": " + point_json(mid)));
     EXPECT_TRUE(has_warning(r, "wrist_left", "left_right"));
     EXPECT_TRUE(has_warning(r, "wrist_right", "segment_length"));
 }
@@ -173,10 +171,10 @@ TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
     const auto br = base.landmarks.point("bust_right");
     ASSERT_TRUE(waist && bl && br);
     const Vec3 l{(*bl)[0], (*waist)[1], (*waist)[2]}, rr{(*br)[0], (*waist)[1], (*waist)[2]};
-    const Result r = measure_file(
-        kBundled, o,
-        write_overrides("bust.json",
-                        "\"bust_left\": " + point_json(l) + ", \"bust_right\": " + point_json(rr)));
+    const Result r =
+        measure_file(kBundled, o,
+                     write_overrides("bust.json", "\"bust_left\": " + point_json(l) +
+                                                      ", \"bust_right\": " + point_json(rr)));
     EXPECT_TRUE(has_warning(r, "bust_left", "landmark_height"));
     EXPECT_TRUE(has_warning(r, "bust_right", "landmark_height"));
 }

@@ -163,11 +163,10 @@ inline void check_body_shape(const Body& body) {
     const double max_side = body.frame.pose == Pose::t_pose ? 1.2 * h : h;
     if (width > max_side || depth > h) {
         const bool wide = width >= depth;
-        throw InvalidInput(name + ": not upright: the mesh is " +
-                           fmt("%.0f mm ", wide ? width : depth) + (wide ? "wide" : "deep") +
-                           fmt(" but only %.0f mm tall along the up axis ", h) +
-                           body.frame.up.to_string() +
-                           "; pass the axis the body stands along with --up");
+        throw InvalidInput(
+            name + ": not upright: the mesh is " + fmt("%.0f mm ", wide ? width : depth) +
+            (wide ? "wide" : "deep") + fmt(" but only %.0f mm tall along the up axis ", h) +
+            body.frame.up.to_string() + "; pass the axis the body stands along with --up");
     }
     if (h < 500 || h > 2500) {
         throw InvalidInput(name + ": stature " + fmt("%.3g m", h / 1000) + " with --units " +
@@ -201,18 +200,28 @@ inline void check_body_proportions(const Body& body, const LandmarkSet& set) {
     using internal::fmt;
     const std::string& name = body.mesh.name;
     const double h = body.frame.height;
-    const auto crotch = set.point("crotch");
-    const auto snp_l = set.point("side_neck_left"), snp_r = set.point("side_neck_right");
-    const bool arms = set.point("armpit_left") || set.point("armpit_right");
+    // Landmarks found on the mesh only: a wrong unit, axis or mesh shows in them, while a point
+    // the user placed (an override) is the user's word, checked by the self-checks instead.
+    auto found = [&set](const std::string& landmark) -> std::optional<Vec3> {
+        const Landmark* l = set.find(landmark);
+        if (l == nullptr || l->status != LandmarkStatus::found) {
+            return std::nullopt;
+        }
+        return l->point;
+    };
+    const auto crotch = found("crotch");
+    const auto snp_l = found("side_neck_left"), snp_r = found("side_neck_right");
+    const bool arms = found("armpit_left") || found("armpit_right");
     if (!crotch && !arms && !snp_l && !snp_r) {
-        throw InvalidInput(name + ": does not look like a body: no legs (crotch), arms (armpits) "
-                                  "or neck found; check --up and --front, or the mesh");
+        throw InvalidInput(name +
+                           ": does not look like a body: no legs (crotch), arms (armpits) "
+                           "or neck found; check --up and --front, or the mesh");
     }
     std::vector<std::string> bad;
     auto band = [&](const char* what, double value, double lo, double hi) {
         if (value < lo || value > hi) {
-            bad.push_back(std::string(what) + fmt(" %.2f of the stature (expected %.2f-%.2f)",
-                                                  value, lo, hi));
+            bad.push_back(std::string(what) +
+                          fmt(" %.2f of the stature (expected %.2f-%.2f)", value, lo, hi));
         }
     };
     if (crotch) {
@@ -224,8 +233,8 @@ inline void check_body_proportions(const Body& body, const LandmarkSet& set) {
         band("head and neck length (top of head to side neck point)", (h - y) / h, 0.07, 0.26);
     }
     for (const char* side : {"left", "right"}) {
-        const auto ac = set.point(std::string("acromion_") + side);
-        const auto wr = set.point(std::string("wrist_") + side);
+        const auto ac = found(std::string("acromion_") + side);
+        const auto wr = found(std::string("wrist_") + side);
         if (ac && wr) {
             band((std::string(side) + " arm length (acromion to wrist)").c_str(),
                  internal::dist(*ac, *wr) / h, 0.22, 0.45);

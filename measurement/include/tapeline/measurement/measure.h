@@ -12,6 +12,7 @@
 #include <tapeline/measurement/self_checks.h>
 
 #include <chrono>
+#include <cstdio>
 
 namespace tapeline::measurement {
 
@@ -29,6 +30,35 @@ struct BodyMeasurements {
 /// its input are in the report, and the measurements resting on them are marked
 /// (Measurement::crosses_filled_hole). A mesh that is not one
 /// upright human body is refused (InvalidInput, body_checks.h) before anything is measured.
+/// Refuses (InvalidInput) a mesh on which five or more of the landmarks found lie outside their
+/// height bands (self_checks.h, landmark_height_bands): a creature or an object with limbs,
+/// whose girths would be garbage. A human body, even an unusual one, breaks at most a pair.
+inline void refuse_unlike_human_heights(const Body& body, const LandmarkSet& landmarks) {
+    const double h = body.frame.height;
+    std::size_t off = 0;
+    std::string first;
+    for (const auto& b : landmark_height_bands()) {
+        const Landmark* l = landmarks.find(b.landmark);
+        if (l == nullptr || l->status != LandmarkStatus::found) {
+            continue;
+        }
+        const double f = l->point[1] / h;
+        if (f < b.lo || f > b.hi) {
+            if (off++ == 0) {
+                char buf[160];
+                std::snprintf(buf, sizeof buf, "%s at %.3f of the stature, expected %.2f-%.2f",
+                              b.landmark, f, b.lo, b.hi);
+                first = buf;
+            }
+        }
+    }
+    if (off >= 5) {
+        throw InvalidInput(body.mesh.name + ": does not look like a body: " + std::to_string(off) +
+                           " landmarks lie outside the heights of a human body (first: " + first +
+                           "); check --up, --front and --units, or the mesh");
+    }
+}
+
 inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& options = {},
                                      const LandmarkOverrides& overrides = {}) {
     using Clock = std::chrono::steady_clock;
@@ -43,6 +73,7 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     LandmarkReport lr;
     out.landmarks = find_landmarks(body, options, overrides, &lr);
     check_body_proportions(body, out.landmarks);
+    refuse_unlike_human_heights(body, out.landmarks);
     const auto t1 = Clock::now();
     std::size_t cuts = 0;
     out.measurements = measure_girths(body, out.landmarks, options, &cuts);

@@ -91,12 +91,10 @@ inline nlohmann::ordered_json measurement_json(const Measurement& m) {
 }
 
 /// The whole document for `body` (the file name, say); the caller adds timings.
-inline nlohmann::ordered_json body_measurements_json(const std::string& body,
-                                                     const BodyFrame& frame,
-                                                     const MeasurementSet& set,
-                                                     const LandmarkSet& landmarks,
-                                                     const MeasureReport& report,
-                                                     const std::vector<CheckWarning>& warnings = {}) {
+inline nlohmann::ordered_json body_measurements_json(
+    const std::string& body, const BodyFrame& frame, const MeasurementSet& set,
+    const LandmarkSet& landmarks, const MeasureReport& report,
+    const std::vector<CheckWarning>& warnings = {}) {
     using Json = nlohmann::ordered_json;
     Json j;
     j["format"] = "tapeline-measurements";
@@ -120,7 +118,8 @@ inline nlohmann::ordered_json body_measurements_json(const std::string& body,
     j["landmarks"] = ls;
     Json checks = Json::array();  // broken self-check rules (self_checks.h)
     for (const auto& w : warnings) {
-        checks.push_back({{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
+        checks.push_back(
+            {{"measurement", w.measurement}, {"rule", w.rule}, {"message", w.message}});
     }
     j["warnings"] = checks;
     Json holes = Json::array();  // the input's holes, filled before measuring (holes.h)

@@ -92,8 +92,8 @@ inline bool mirror_symmetric(const BodyMesh& m, double x_mid, double tolerance) 
 }
 
 /// Whether the 2D point (in the girth plane) lies inside the closed loop `pts`.
-inline bool loop_contains(const std::vector<Vec3>& pts, const Vec3& plane_point,
-                          const Vec3& normal, const Vec3& p) {
+inline bool loop_contains(const std::vector<Vec3>& pts, const Vec3& plane_point, const Vec3& normal,
+                          const Vec3& p) {
     const Plane plane = Plane::make(plane_point, normal, {1, 0, 0});
     const Vec2 q = plane.to2(p);
     bool in = false;
@@ -161,9 +161,9 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
     }
     const auto bust = set.value("bust_girth"), under = set.value("underbust_girth");
     if (bust && under && *bust < *under) {
-        out.push_back({"bust_girth", "bust_underbust",
-                       fmt_num("bust_girth %.1f mm is smaller than underbust_girth %.1f mm", *bust,
-                               *under)});
+        out.push_back(
+            {"bust_girth", "bust_underbust",
+             fmt_num("bust_girth %.1f mm is smaller than underbust_girth %.1f mm", *bust, *under)});
     }
     for (const char* side : {"", "_left", "_right"}) {
         const auto w = set.value(std::string("wrist_girth") + side);
@@ -175,14 +175,24 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
                                fmt_num(" %.1f mm", *e)});
         }
     }
+    // The bust and waist bands overlap (a high waist, a low bust): a bust point also lies
+    // 0.04 of the stature (about 65 mm) above the waist level, far less than any adult's
+    // bust-to-waist drop.
+    const auto waist = landmarks.point("waist_front");
     for (const auto& b : landmark_height_bands()) {
         const auto p = landmarks.point(b.landmark);
-        if (p && ((*p)[1] < b.lo * h || (*p)[1] > b.hi * h)) {
-            out.push_back({b.landmark, "landmark_height",
-                           std::string(b.landmark) +
-                               fmt_num(" at %.3f of the stature, outside %.2f-%.2f (Drillis & "
-                                       "Contini 1966)",
-                                       (*p)[1] / h, b.lo, b.hi)});
+        double lo = b.lo;
+        const bool bust = std::string(b.landmark).rfind("bust_", 0) == 0;
+        if (bust && waist) {
+            lo = std::max(lo, (*waist)[1] / h + 0.04);
+        }
+        if (p && ((*p)[1] < lo * h || (*p)[1] > b.hi * h)) {
+            out.push_back(
+                {b.landmark, "landmark_height",
+                 std::string(b.landmark) +
+                     fmt_num(" at %.3f of the stature, outside %.3f-%.2f (Drillis & Contini 1966",
+                             (*p)[1] / h, lo, b.hi) +
+                     (lo > b.lo ? "; at least 0.04 above the waist)" : ")")});
         }
     }
     for (const char* side : {"left", "right"}) {
@@ -228,11 +238,11 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
         Vec3 mid{x_mid, c[1], c[2]};
         const double off = internal::dot(internal::sub(mid, m.plane_point), m.plane_normal);
         mid = internal::sub(mid, internal::mul(m.plane_normal, off));
-        const bool around_mid = internal::loop_contains(m.points, m.plane_point, m.plane_normal,
-                                                        mid);
-        const bool is_torso =
-            std::find_if(std::begin(torso), std::end(torso),
-                         [&m](const char* t) { return m.name == t; }) != std::end(torso);
+        const bool around_mid =
+            internal::loop_contains(m.points, m.plane_point, m.plane_normal, mid);
+        const bool is_torso = std::find_if(std::begin(torso), std::end(torso), [&m](const char* t) {
+                                  return m.name == t;
+                              }) != std::end(torso);
         if (is_torso && !around_mid) {
             out.push_back({m.name, "loop_around_part",
                            m.name + " loop does not go around the body's midline"});
