@@ -18,6 +18,13 @@ namespace tapeline_test::measurement {
 using namespace tapeline::measurement;
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
+/// A body as plain points and triangles (the body-check and hole tests rotate, combine and cut
+/// it); the coordinates are those of whatever made it (see the function that returns it).
+struct Soup {
+    std::vector<Vec3> points;
+    Triangles triangles;
+};
+
 /// What measure_body returned, in plain types.
 struct Result {
     BodyFrame frame;

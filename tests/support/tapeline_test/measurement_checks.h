@@ -9,13 +9,7 @@
 
 namespace tapeline_test::measurement {
 
-/// A triangle mesh in its file's coordinates.
-struct Soup {
-    std::vector<Vec3> points;
-    Triangles triangles;
-};
-
-/// read_triangle_mesh of a body file, as points and triangles.
+/// read_triangle_mesh of a body file, as points and triangles in its file's coordinates.
 Soup read_body_soup(const std::string& path);
 
 /// A closed ellipsoid (UV sphere scaled by the semi-axes), centred at `centre`.

@@ -15,12 +15,6 @@
 
 namespace tapeline_test::measurement {
 
-/// A body as a triangle soup in the canonical frame (mm, +Y up, +Z front, floor at y = 0).
-struct Soup {
-    std::vector<Vec3> points;
-    Triangles triangles;
-};
-
 /// A body file brought into the canonical frame by make_body (closed, so nothing is filled).
 Soup canonical_soup(const std::string& path, const BodyOptions& options);
 
