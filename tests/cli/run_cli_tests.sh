@@ -236,9 +236,12 @@ import json
 lines = [json.loads(l) for l in open("sweep.jsonl")]
 w = {l["method"]: l for l in lines}
 assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6", "gcf-window:4/faces", "gcf-window:4/faces/raw"}, set(w)
-assert w["gcf-window:2"]["options"] == {"window": 2, "anchor": "field", "length": "smooth"}
-assert w["gcf-window:4/faces"]["options"] == {"window": 4, "anchor": "field", "length": "faces", "repair": True}
-assert w["gcf-window:4/faces/raw"]["options"] == {"window": 4, "anchor": "field", "length": "faces", "repair": False}
+# "options" is the library's Options as run (every field), plus the method name's length/repair.
+def opt(m, *keys): return {k: w[m]["options"].get(k) for k in keys}
+assert opt("gcf-window:2", "window", "anchor", "length", "smooth_length") == {"window": 2, "anchor": "field", "length": "smooth", "smooth_length": True}
+assert opt("gcf-window:4/faces", "window", "length", "repair", "smooth_length") == {"window": 4, "length": "faces", "repair": True, "smooth_length": False}
+assert opt("gcf-window:4/faces/raw", "window", "length", "repair", "repair_tolerance") == {"window": 4, "length": "faces", "repair": False, "repair_tolerance": -1.0}
+assert w["gcf-window:4/faces"]["options"]["repair_tolerance"] > 0 and "flow" in w["gcf-window:2"]["options"]
 assert w["gcf-window:6"]["options"]["window"] == 6
 assert all(l["threads"] == 2 and l["status"] == "ok" for l in lines)
 assert all(w[m]["max_rel_error"] < 2e-2 for m in ("gcf-window:2", "gcf-window:6"))
