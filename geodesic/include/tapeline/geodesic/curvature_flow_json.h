@@ -63,22 +63,27 @@ inline void to_json(nlohmann::json& j, const CurvatureFlowReport& r) {
     j["solver"] = r.solver;
 }
 
-inline void to_json(nlohmann::json& j, const CurvatureFlowDistanceOptions& o) {
+/// The knobs meshes and point sets share (the base of both distance options).
+inline void to_json(nlohmann::json& j, const FlowPropagationOptions& o) {
     j = nlohmann::json::object();
-    j["window"] = o.window;
     j["sample_spacing"] = o.sample_spacing;
+    j["cut_locus_guard"] = o.cut_locus_guard;
+    j["near_source_samples"] = o.near_source_samples;
+    j["anchor_slides"] = o.anchor_slides;
+}
+
+inline void to_json(nlohmann::json& j, const CurvatureFlowDistanceOptions& o) {
+    to_json(j, static_cast<const FlowPropagationOptions&>(o));
+    j["window"] = o.window;
     j["smooth_length"] = o.smooth_length;
     j["polyhedral_length"] = o.polyhedral_length;
     j["shortest_parent"] = o.shortest_parent;
-    j["cut_locus_guard"] = o.cut_locus_guard;
     j["repair_tolerance"] = o.repair_tolerance;
     j["repair_rounds"] = o.repair_rounds;
     j["repair_flow_iterations"] = o.repair_flow_iterations;
     j["repair_steiner_points"] = o.repair_steiner_points;
     j["repair_graph_margin"] = o.repair_graph_margin;
     j["anchor"] = o.anchor;
-    j["near_source_samples"] = o.near_source_samples;
-    j["anchor_slides"] = o.anchor_slides;
     j["flow"] = o.flow;
 }
 

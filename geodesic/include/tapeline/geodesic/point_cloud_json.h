@@ -20,17 +20,13 @@ inline void to_json(nlohmann::json& j, PointCloudKnn v) {
 }
 
 inline void to_json(nlohmann::json& j, const PointCloudDistanceOptions& o) {
-    j = nlohmann::json::object();
+    to_json(j, static_cast<const FlowPropagationOptions&>(o));
     j["cell_size"] = o.cell_size;
     j["neighbours"] = o.neighbours;
     j["window"] = o.window;
     j["manifold_dimension"] = o.manifold_dimension;
     j["projection"] = o.projection;
     j["knn"] = o.knn;
-    j["sample_spacing"] = o.sample_spacing;
-    j["cut_locus_guard"] = o.cut_locus_guard;
-    j["near_source_samples"] = o.near_source_samples;
-    j["anchor_slides"] = o.anchor_slides;
     j["flow"] = o.flow;
     j["path_flow"] = o.path_flow;
 }
