@@ -1357,11 +1357,16 @@ private:
             // its retriangulated proxy (and the mid-thigh level, halfway up to the crotch, with
             // it). The knee level is the centroid of the narrowing instead: levels weighted by
             // how far their girth is below 3% above the minimum, which moves with the surface.
+            // Only levels within 4 % of the height of the minimum count: a shin narrower than
+            // the knee (the calf search then starts at the ankle) must not pull the knee down.
             const double limit = 1.03 * prof[*k].perimeter;
             double sw = 0, swy = 0;
             for (std::size_t i = *c; i < prof.size(); ++i) {
                 if (prof[i].t > *crotch_y_ - 0.05 * height_) {
                     break;
+                }
+                if (std::abs(prof[i].t - prof[*k].t) > 0.04 * height_) {
+                    continue;
                 }
                 const double w = std::max(0.0, limit - prof[i].perimeter);
                 sw += w;
