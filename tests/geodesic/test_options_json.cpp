@@ -211,6 +211,7 @@ TEST(OptionsJson, PointCloud) {
                        FIELD(r, sample_spacing),
                        FIELD(r, nodes),
                        FIELD(r, node_edges),
+                       FIELD(r, bridged_components),
                        FIELD(r, window),
                        FIELD(r, projection),
                        FIELD(r, knn),

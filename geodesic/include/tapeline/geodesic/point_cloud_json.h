@@ -42,6 +42,7 @@ inline void to_json(nlohmann::json& j, const PointCloudDistanceReport& r) {
     j["sample_spacing"] = r.sample_spacing;
     j["nodes"] = r.nodes;
     j["node_edges"] = r.node_edges;
+    j["bridged_components"] = r.bridged_components;
     j["window"] = r.window;
     j["projection"] = r.projection;
     j["knn"] = r.knn;
