@@ -51,7 +51,8 @@ TEST(MeasurementJson, MeasureReport) {
                       FIELD(r, components),        FIELD(r, sections),
                       FIELD(r, frame_seconds),     FIELD(r, landmark_seconds),
                       FIELD(r, girth_seconds),     FIELD(r, landmarks_found),
-                      FIELD(r, landmarks_missing), FIELD(r, warnings)};
+                      FIELD(r, landmarks_missing), FIELD(r, warnings),
+                      FIELD(r, holes)};
     EXPECT_EQ(tapeline::test::field_count<MeasureReport>(), f.size());
     expect_fields(json(r), f, "MeasureReport");
     EXPECT_EQ(json(r)["warnings"][0], "neck not found");

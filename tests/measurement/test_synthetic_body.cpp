@@ -38,7 +38,8 @@ double level(const Result& r, const std::string& name) {
 
 /// The underbust rule (girths.h) on the construction: on the front profile at the bust point's
 /// x (0.1 of the half-width), the level between waist and bust deepest behind the chord from
-/// the bust point to the waist's front.
+/// the bust point to the waist's front; on a chest without a fold, 2.5 % of the height under
+/// the bust point.
 double underbust_level(const SyntheticBody& body) {
     const double x = 0.1 * body.torso_half_width(SyntheticBody::kBust);
     auto front = [&](double y) {
@@ -48,12 +49,18 @@ double underbust_level(const SyntheticBody& body) {
     const double y1 = SyntheticBody::kBust, y0 = SyntheticBody::kWaist;
     const double z1 = front(y1), z0 = front(y0);
     double best = -INFINITY, at = y1;
+    const double len = std::hypot(y0 - y1, z0 - z1);
     for (double y = y1; y >= y0; y -= 0.01) {
-        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1));
+        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1)) / len;
         if (behind > best) {
             best = behind;
             at = y;
         }
+    }
+    // No fold under the chest (less than 0.2 % of the height behind the chord): 2.5 % of the
+    // height under the bust point, as the rule does on a flat chest.
+    if (best < 0.002 * SyntheticBody::kHeight) {
+        at = y1 - 0.025 * SyntheticBody::kHeight;
     }
     return at;
 }

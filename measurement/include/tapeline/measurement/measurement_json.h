@@ -146,10 +146,6 @@ inline nlohmann::ordered_json body_measurements_json(
 
 // nlohmann to_json of the options and the report.
 
-inline void to_json(nlohmann::json& j, LengthUnit v) {
-    j = to_string(v);
-}
-
 inline void to_json(nlohmann::json& j, Pose v) {
     j = to_string(v);
 }
@@ -160,7 +156,8 @@ inline void to_json(nlohmann::json& j, const Axis& a) {
 
 inline void to_json(nlohmann::json& j, const BodyOptions& o) {
     j = nlohmann::json::object();
-    j["unit"] = o.unit ? nlohmann::json(*o.unit) : nlohmann::json(nullptr);
+    // LengthUnit lives in tapeline (core/units.h): written by name here, not by a to_json.
+    j["unit"] = o.unit ? nlohmann::json(to_string(*o.unit)) : nlohmann::json(nullptr);
     j["up"] = o.up;
     j["front"] = o.front;
     j["pose"] = o.pose;
@@ -172,6 +169,18 @@ inline void to_json(nlohmann::json& j, const MeasureOptions& o) {
     j["scan_step"] = o.scan_step;
     j["level_tolerance"] = o.level_tolerance;
     j["max_neck_tilt_degrees"] = o.max_neck_tilt_degrees;
+}
+
+inline void to_json(nlohmann::json& j, const BodyHole& h) {
+    j = nlohmann::json::object();
+    j["size"] = h.size;
+    j["centre"] = h.centre;
+    j["height"] = h.height;
+    j["region"] = h.region;
+    j["filling"] = h.filling;
+    j["boundary_edges"] = h.boundary_edges;
+    j["faces_added"] = h.faces_added;
+    j["vertices_added"] = h.vertices_added;
 }
 
 inline void to_json(nlohmann::json& j, const MeasureReport& r) {
@@ -186,6 +195,7 @@ inline void to_json(nlohmann::json& j, const MeasureReport& r) {
     j["landmarks_found"] = r.landmarks_found;
     j["landmarks_missing"] = r.landmarks_missing;
     j["warnings"] = r.warnings;
+    j["holes"] = r.holes;
 }
 
 }  // namespace tapeline::measurement

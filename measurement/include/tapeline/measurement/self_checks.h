@@ -176,15 +176,14 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
         }
     }
     // The bust and waist bands overlap (a high waist, a low bust): a bust point also lies
-    // 0.04 of the stature (about 65 mm) above the waist level, far less than any adult's
-    // bust-to-waist drop.
+    // 0.01 of the stature (about 17 mm) above the waist level.
     const auto waist = landmarks.point("waist_front");
     for (const auto& b : landmark_height_bands()) {
         const auto p = landmarks.point(b.landmark);
         double lo = b.lo;
         const bool bust = std::string(b.landmark).rfind("bust_", 0) == 0;
         if (bust && waist) {
-            lo = std::max(lo, (*waist)[1] / h + 0.04);
+            lo = std::max(lo, (*waist)[1] / h + 0.01);
         }
         if (p && ((*p)[1] < lo * h || (*p)[1] > b.hi * h)) {
             out.push_back(
@@ -192,7 +191,7 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
                  std::string(b.landmark) +
                      fmt_num(" at %.3f of the stature, outside %.3f-%.2f (Drillis & Contini 1966",
                              (*p)[1] / h, lo, b.hi) +
-                     (lo > b.lo ? "; at least 0.04 above the waist)" : ")")});
+                     (lo > b.lo ? "; at least 0.01 above the waist)" : ")")});
         }
     }
     for (const char* side : {"left", "right"}) {
