@@ -30,6 +30,8 @@ const char* known_failure(int body) {
             return "knees found at 0.228 of the stature, just below the 0.23-0.34 band";
         case 24:
             return "waist found at 0.705 of the stature, just above the 0.53-0.70 band";
+        case 33:
+            return "knees found at 0.219 of the stature, below the 0.23-0.34 band";
         default:
             return nullptr;
     }
