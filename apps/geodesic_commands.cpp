@@ -118,8 +118,7 @@ void run_point_cloud_distances(const DistancesArgs& args, bool method_given) {
     if (args.mesh.mesh.empty()) {
         throw InvalidInput("--point-cloud needs a points file (.xyz, .csv or .ply)");
     }
-    if (method_given &&
-        parse_method_name(args.method, args.settings.window).base != "gcf-points") {
+    if (method_given && parse_method_name(args.method, args.settings.window).base != "gcf-points") {
         throw InvalidInput("--point-cloud: method '" + args.method +
                            "' needs a mesh; point clouds take gcf-points");
     }
@@ -185,9 +184,10 @@ void run_distances(const DistancesArgs& args) {
         }
     }
     std::cout << "wrote " << args.out << ": " << args.method << " on " << input.name << " ("
-              << num_vertices(input.loaded.mesh) << " vertices), pre " << result.report.prepare_seconds
-              << " s, query " << result.report.query_seconds << " s, max distance " << max_d
-              << ", unreachable " << result.report.unreachable << '\n';
+              << num_vertices(input.loaded.mesh) << " vertices), pre "
+              << result.report.prepare_seconds << " s, query " << result.report.query_seconds
+              << " s, max distance " << max_d << ", unreachable " << result.report.unreachable
+              << '\n';
 }
 
 struct PathArgs {

@@ -266,7 +266,8 @@ void register_grade_commands(CLI::App& app) {
                     "Reference draft of the target size: outline deviation in the report");
     cmd->add_option("--seed", a->seed, "Random seed (NSGA-II)")->capture_default_str();
     cmd->add_option("--population", a->population, "NSGA-II population")->capture_default_str();
-    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)")->capture_default_str();
+    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)")
+        ->capture_default_str();
     cmd->add_option("--threads", a->threads, "Threads (0: all)");
     cmd->add_option("--ease", a->ease, "Ease mode: proportional or keep_mm")->capture_default_str();
     cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");

@@ -146,7 +146,8 @@ TEST(OptionsJson, CurvatureFlowDistances) {
                        FIELD(o, near_source_samples),
                        FIELD(o, anchor_slides),
                        FIELD(o, flow)};
-    // The base (FlowPropagationOptions) counts as one member of the aggregate; its fields are in fo.
+    // The base (FlowPropagationOptions) counts as one member of the aggregate; its fields are in
+    // fo.
     EXPECT_EQ(tapeline::test::field_count<CurvatureFlowDistanceOptions>() - 1 +
                   tapeline::test::field_count<FlowPropagationOptions>(),
               fo.size());

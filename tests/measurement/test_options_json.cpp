@@ -47,11 +47,16 @@ TEST(MeasurementJson, MeasureReport) {
     MeasureReport r;
     r.sections = 12;
     r.warnings = {"neck not found"};
-    const Fields f = {FIELD(r, vertices),          FIELD(r, faces),
-                      FIELD(r, components),        FIELD(r, sections),
-                      FIELD(r, frame_seconds),     FIELD(r, landmark_seconds),
-                      FIELD(r, girth_seconds),     FIELD(r, landmarks_found),
-                      FIELD(r, landmarks_missing), FIELD(r, warnings),
+    const Fields f = {FIELD(r, vertices),
+                      FIELD(r, faces),
+                      FIELD(r, components),
+                      FIELD(r, sections),
+                      FIELD(r, frame_seconds),
+                      FIELD(r, landmark_seconds),
+                      FIELD(r, girth_seconds),
+                      FIELD(r, landmarks_found),
+                      FIELD(r, landmarks_missing),
+                      FIELD(r, warnings),
                       FIELD(r, holes)};
     EXPECT_EQ(tapeline::test::field_count<MeasureReport>(), f.size());
     expect_fields(json(r), f, "MeasureReport");

@@ -40,9 +40,8 @@ Result measure_soup_with_skin_lengths(const Soup& soup, const std::string& name,
     auto m = meas::measure_body(body);
     // The soup has no CGAL mesh of its own: the body's (filled) mesh is the input.
     meas::measure_skin_lengths(body, meas::filled_input_mesh(body), m.landmarks, m.measurements);
-    return to_result(std::move(m), std::chrono::duration<double>(
-                                       std::chrono::steady_clock::now() - t0)
-                                       .count());
+    return to_result(std::move(m),
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 FilledSoup fill_soup(const Soup& soup, const std::string& name) {

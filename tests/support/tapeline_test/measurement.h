@@ -32,7 +32,7 @@ struct Result {
     MeasurementSet measurements;
     MeasureReport report;
     std::vector<CheckWarning> warnings;  ///< self-checks
-    double seconds = 0;  ///< wall clock of the whole call (load excluded)
+    double seconds = 0;                  ///< wall clock of the whole call (load excluded)
 };
 
 /// Moves a measure_body result (measurement::BodyMeasurements, or anything with the same members)

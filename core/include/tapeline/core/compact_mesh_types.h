@@ -34,9 +34,9 @@ struct CompactMesh {
     std::vector<std::uint32_t> nstart, neighbours;
     ///@}
 
-    std::size_t vertex_count() const { return xyz.size() / 3; }  ///< number of vertices
+    std::size_t vertex_count() const { return xyz.size() / 3; }   ///< number of vertices
     std::size_t face_count() const { return corner.size() / 3; }  ///< number of faces
-    std::array<double, 3> point(std::uint32_t v) const {  ///< position of vertex v
+    std::array<double, 3> point(std::uint32_t v) const {          ///< position of vertex v
         return {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
     }
     /// next halfedge in h's face

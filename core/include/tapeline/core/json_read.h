@@ -93,7 +93,7 @@ inline Json parse_json_file(const std::string& path) {
 /// A JSON value together with where it is: "file: pieces[2].paths.seam".
 struct Where {
     std::string source;  ///< file name or other source of the document
-    std::string path;  ///< path inside the document; empty at the top level
+    std::string path;    ///< path inside the document; empty at the top level
     /// "source: path" for messages
     std::string str() const { return source + ": " + (path.empty() ? "(top level)" : path); }
     /// member `k` of this value

@@ -43,10 +43,10 @@ struct LoadedMesh {
     /// A face of the mesh.
     using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
-    TriangleMesh mesh;  ///< the validated, repaired triangle mesh
-    std::vector<vertex_descriptor> vertices;  ///< all mesh vertices, in mesh order
-    std::vector<std::size_t> input_index;     ///< parallel to `vertices`: input vertex of each
-    std::size_t input_vertex_count = 0;       ///< vertices in the input
+    TriangleMesh mesh;                          ///< the validated, repaired triangle mesh
+    std::vector<vertex_descriptor> vertices;    ///< all mesh vertices, in mesh order
+    std::vector<std::size_t> input_index;       ///< parallel to `vertices`: input vertex of each
+    std::size_t input_vertex_count = 0;         ///< vertices in the input
     std::vector<face_descriptor> faces;         ///< all mesh faces, in mesh order
     std::vector<std::size_t> face_input_index;  ///< parallel to `faces`: input face each came from
     /// Positions in `vertices` of the mesh vertices representing input vertex i are

@@ -30,9 +30,9 @@ struct PointSet {
     ///@{
     std::string file, format;  ///< format: "xyz", "csv" or "ply"
     ///@}
-    std::size_t dimension = 0;  ///< coordinates per point
+    std::size_t dimension = 0;        ///< coordinates per point
     std::vector<double> coordinates;  ///< `dimension` per point, in file order
-    std::vector<double> normals;  ///< 3 per point when the PLY has nx, ny, nz; else empty
+    std::vector<double> normals;      ///< 3 per point when the PLY has nx, ny, nz; else empty
     /// number of points
     std::size_t size() const { return dimension ? coordinates.size() / dimension : 0; }
 };

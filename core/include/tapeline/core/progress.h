@@ -28,11 +28,11 @@ enum class ProgressMode { automatic, always, never };
 /// seconds since the phase began, an optional note ("residual 3.1e-4"), and whether the phase
 /// has finished.
 struct ProgressEvent {
-    std::string phase;  ///< what the loop does
-    std::size_t done = 0;  ///< items done
+    std::string phase;      ///< what the loop does
+    std::size_t done = 0;   ///< items done
     std::size_t total = 0;  ///< total items, 0 when unknown
-    double seconds = 0.0;  ///< seconds since the phase began
-    std::string note;  ///< extra figures, may be empty
+    double seconds = 0.0;   ///< seconds since the phase began
+    std::string note;       ///< extra figures, may be empty
     bool finished = false;  ///< the last event of the phase
 };
 

@@ -22,10 +22,10 @@ namespace tapeline::xml {
 
 /// One element of a parsed XML document and its subtree.
 struct Element {
-    std::string name;  ///< tag name
+    std::string name;                               ///< tag name
     std::map<std::string, std::string> attributes;  ///< attributes by name
-    std::vector<Element> children;  ///< child elements in document order
-    std::string text;  ///< concatenated character data directly inside this element
+    std::vector<Element> children;                  ///< child elements in document order
+    std::string text;      ///< concatenated character data directly inside this element
     std::size_t line = 0;  ///< 1-based line of the start tag
 
     /// Attribute value or nullptr.

@@ -78,10 +78,10 @@ inline OrthoView left_side_view() {
 /// viewer, moved by `light_right` along the view's right and `light_up` along its up.
 struct MeshShading {
     Rgb colour{0.86, 0.84, 0.82};  ///< base colour
-    double ambient = 0.32;  ///< light everywhere
-    double diffuse = 0.68;  ///< weight of n·l
-    double light_right = -0.35;  ///< light direction offset along the view's right
-    double light_up = 0.45;  ///< light direction offset along the view's up
+    double ambient = 0.32;         ///< light everywhere
+    double diffuse = 0.68;         ///< weight of n·l
+    double light_right = -0.35;    ///< light direction offset along the view's right
+    double light_up = 0.45;        ///< light direction offset along the view's up
 };
 
 /// A rendered view: the shaded mesh (transparent where there is none) and its depth buffer

@@ -24,12 +24,12 @@ namespace tapeline::draw {
 
 /// One set of points drawn alike, named in the legend (an empty label stays out of the legend).
 struct PlotSeries {
-    std::string label;  ///< legend entry; empty: not in the legend
+    std::string label;         ///< legend entry; empty: not in the legend
     std::vector<Vec2> points;  ///< data coordinates
-    Rgb colour{0, 0, 0};  ///< marker colour
+    Rgb colour{0, 0, 0};       ///< marker colour
     /// Marker shape: filled disc or ring.
     enum class Marker { disc, ring } marker = Marker::disc;  ///< marker shape
-    double radius_px = 3;  ///< marker radius
+    double radius_px = 3;                                    ///< marker radius
 };
 
 /// Size, margins, titles and fonts of a plot.
@@ -50,8 +50,8 @@ struct PlotOptions {
     ///@{
     bool x_from_zero = true, y_from_zero = true;  ///< widen the ranges to include 0
     ///@}
-    int ticks = 5;                                ///< about this many intervals per axis
-    double font_px = 10;                          ///< tick labels, axis titles, legend
+    int ticks = 5;              ///< about this many intervals per axis
+    double font_px = 10;        ///< tick labels, axis titles, legend
     double title_font_px = 20;  ///< plot title
 };
 

@@ -365,7 +365,7 @@ template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_
 class GeodesicPathSolver {
 public:
     using Setup = internal::GcfSetup<TriangleMesh, NamedParameters>;  ///< the prepared mesh
-    using Point_3 = typename Setup::Point_3;  ///< point type of the vertex point map
+    using Point_3 = typename Setup::Point_3;    ///< point type of the vertex point map
     using Result = CurvatureFlowPath<Point_3>;  ///< a path query's answer
 
     /// Checks the mesh and builds its compact arrays and components.
@@ -831,7 +831,7 @@ CurvatureFlowDistanceReport gcf_distances(
         r.status = "solver_failure";
     else if (r.max_iterations > 0)
         r.status = "max_iterations";
-    r.method = options.window == 0                          ? "gcf_exact"
+    r.method = options.window == 0                      ? "gcf_exact"
                : options.anchor == WindowAnchor::prefix ? "gcf_window_thesis"
                                                         : "gcf_window";
     r.sources = 1;

@@ -108,8 +108,8 @@ struct CurvatureFlowOptions {
 
 /// What one flow did. Times are wall-clock seconds.
 struct CurvatureFlowReport {
-    std::size_t vertices = 0;  ///< mesh vertices
-    std::size_t faces = 0;  ///< mesh faces
+    std::size_t vertices = 0;           ///< mesh vertices
+    std::size_t faces = 0;              ///< mesh faces
     std::size_t samples = 0;            ///< samples of the path, endpoints included
     std::size_t iterations = 0;         ///< flow steps taken
     double initial_length = 0;          ///< length of the initial (edge or given) path

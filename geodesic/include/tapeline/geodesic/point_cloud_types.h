@@ -96,20 +96,20 @@ struct PointCloudDistanceOptions : FlowPropagationOptions {
 /// points left at +infinity (other components); status: "ok" when every flow converged or
 /// stalled, "max_iterations", "solver_failure"). Times are wall-clock seconds.
 struct PointCloudDistanceReport : DistanceReport {
-    std::size_t points = 0;  ///< number of input points
-    std::size_t dimension = 0;           ///< D, of the ambient space
-    std::size_t manifold_dimension = 0;  ///< k used (given or estimated)
+    std::size_t points = 0;                     ///< number of input points
+    std::size_t dimension = 0;                  ///< D, of the ambient space
+    std::size_t manifold_dimension = 0;         ///< k used (given or estimated)
     bool manifold_dimension_estimated = false;  ///< k came from the PCA spectra
-    std::size_t neighbours = 0;  ///< neighbours per point used
-    double cell_size = 0;  ///< the cell size used
-    double sample_spacing = 0;  ///< sample spacing used
-    std::size_t nodes = 0;       ///< non-empty cells
-    std::size_t node_edges = 0;  ///< pairs of neighbouring non-empty cells
+    std::size_t neighbours = 0;                 ///< neighbours per point used
+    double cell_size = 0;                       ///< the cell size used
+    double sample_spacing = 0;                  ///< sample spacing used
+    std::size_t nodes = 0;                      ///< non-empty cells
+    std::size_t node_edges = 0;                 ///< pairs of neighbouring non-empty cells
     /// Grid components joined through their closest k-nearest-neighbour pair (sampling sparser
     /// than the cell somewhere); 0 when the grid of non-empty cells was connected.
     std::size_t bridged_components = 0;
-    std::size_t window = 0;  ///< window used (samples flowed per vertex)
-    std::string projection;  ///< local surface used
+    std::size_t window = 0;           ///< window used (samples flowed per vertex)
+    std::string projection;           ///< local surface used
     std::string knn;                  ///< the backend used: "cgal" or "nanoflann"
     std::size_t reached_nodes = 0;    ///< nodes with a finite distance
     std::size_t reached = 0;          ///< input points with a finite distance (source included)
@@ -129,7 +129,7 @@ struct PointCloudDistanceReport : DistanceReport {
 /// A geodesic path between two input points: the flowed samples (endpoints are the two points as
 /// given), D coordinates per sample.
 struct PointCloudPath {
-    std::size_t dimension = 0;  ///< D, coordinates per sample
+    std::size_t dimension = 0;        ///< D, coordinates per sample
     std::vector<double> coordinates;  ///< sample i is [D i, D i + D)
     double length = 0;                ///< polyline length; +infinity if unreachable
     /// number of samples

@@ -40,10 +40,10 @@ struct NamedSpan {
 
 /// How a measurement binds to the named points of a drafted pattern.
 struct NamedSpanRule {
-    std::string measurement;  ///< the measurement bound
+    std::string measurement;       ///< the measurement bound
     std::vector<NamedSpan> spans;  ///< alternatives, first found on a piece wins
-    bool girth = false;  ///< one binding over every piece (else one per piece)
-    double count = 0;    ///< 0: 2 on a fold, else 1 (girth); 1 (per piece)
+    bool girth = false;            ///< one binding over every piece (else one per piece)
+    double count = 0;              ///< 0: 2 on a fold, else 1 (girth); 1 (per piece)
     bool chain = false;  ///< bind the outline edges between the points, not the straight span
 };
 

@@ -55,17 +55,17 @@ using pattern::SeamSpec;
 
 /// Everything grade_pattern can be told; the defaults are the command-line tool's.
 struct GradingOptions {
-    std::uint32_t seed = 42;  ///< seed of the NSGA-II population
+    std::uint32_t seed = 42;       ///< seed of the NSGA-II population
     std::size_t population = 32;   ///< NSGA-II population (rounded up to a multiple of 4, ≥ 8)
     std::size_t generations = 60;  ///< NSGA-II generations; 0 skips the evolutionary search
     EaseMode ease = EaseMode::proportional;  ///< how eases follow their measurements
-    GradingWeights weights;  ///< weights of the residual groups
-    GradingTolerances tolerances;  ///< when a candidate fits
-    std::size_t threads = 0;            ///< 0: TBB's default
-    bool ceres_polish = true;           ///< polish each front member by Ceres least squares
-    std::size_t ceres_iterations = 50;  ///< per solve; more changed no table entry (measured)
-    double reference_length_mm = 100;   ///< L_ref: turns angles and strains into lengths
-    std::size_t neighbours = 8;         ///< k of the per-piece k-nearest-node smoothness graph
+    GradingWeights weights;                  ///< weights of the residual groups
+    GradingTolerances tolerances;            ///< when a candidate fits
+    std::size_t threads = 0;                 ///< 0: TBB's default
+    bool ceres_polish = true;                ///< polish each front member by Ceres least squares
+    std::size_t ceres_iterations = 50;       ///< per solve; more changed no table entry (measured)
+    double reference_length_mm = 100;        ///< L_ref: turns angles and strains into lengths
+    std::size_t neighbours = 8;              ///< k of the per-piece k-nearest-node smoothness graph
     /// Pareto members polished by Ceres get fit weights weights.fit · f, f log-spaced over
     /// [min_fit_factor, max_fit_factor] along the front (low f: style first).
     ///@{
@@ -85,11 +85,11 @@ struct GradingOptions {
 /// ease) against the target.
 struct FitRow {
     std::string measurement;  ///< the bound measurement
-    std::string where;  ///< pieces of the features
-    double target_mm = 0;  ///< value in the target set
-    double ease_mm = 0;  ///< ease the graded pattern keeps
-    double achieved_mm = 0;  ///< pattern dimension minus ease
-    double error_mm = 0;  ///< achieved − target
+    std::string where;        ///< pieces of the features
+    double target_mm = 0;     ///< value in the target set
+    double ease_mm = 0;       ///< ease the graded pattern keeps
+    double achieved_mm = 0;   ///< pattern dimension minus ease
+    double error_mm = 0;      ///< achieved − target
 };
 
 /// One row of the seam table: the two sides' lengths after grading.
@@ -107,23 +107,23 @@ struct SeamRow {
 
 /// Style of the graded pattern against the base (each a change, 0 = unchanged).
 struct StyleMetrics {
-    double max_angle_change_deg = 0;  ///< turn angles at outline vertices
+    double max_angle_change_deg = 0;   ///< turn angles at outline vertices
     double mean_angle_change_deg = 0;  ///< mean over outline vertices
-    double max_curve_change = 0;   ///< Bézier control points in their chord frame (fraction)
-    double proportion_spread = 0;  ///< (max − min)/mean of per-edge stretch within a piece
-    double max_grain_change_deg = 0;  ///< grain lines
-    double cost = 0;  ///< the weighted style objective f2 (mm², see README)
+    double max_curve_change = 0;       ///< Bézier control points in their chord frame (fraction)
+    double proportion_spread = 0;      ///< (max − min)/mean of per-edge stretch within a piece
+    double max_grain_change_deg = 0;   ///< grain lines
+    double cost = 0;                   ///< the weighted style objective f2 (mm², see README)
 };
 
 /// One candidate of the search: its two objectives and how it was made.
 struct ParetoPoint {
-    double fit = 0;    ///< f1: RMS of fit and seam residuals (mm)
-    double style = 0;  ///< f2: RMS of style residuals (mm-equivalent)
-    double max_fit_error_mm = 0;  ///< worst binding error
+    double fit = 0;                   ///< f1: RMS of fit and seam residuals (mm)
+    double style = 0;                 ///< f2: RMS of style residuals (mm-equivalent)
+    double max_fit_error_mm = 0;      ///< worst binding error
     double max_seam_mismatch_mm = 0;  ///< worst seam mismatch
-    bool polished = false;  ///< Ceres polished it
-    bool within_tolerance = false;  ///< within GradingOptions::tolerances
-    std::string origin;  ///< "nsga2", "nsga2+ceres", "ceres"
+    bool polished = false;            ///< Ceres polished it
+    bool within_tolerance = false;    ///< within GradingOptions::tolerances
+    std::string origin;               ///< "nsga2", "nsga2+ceres", "ceres"
 };
 
 /// Wall-clock seconds of the grading phases.
@@ -140,22 +140,22 @@ struct GradingReport {
     ///@{
     std::size_t pieces = 0, nodes = 0, variables = 0, residuals = 0;
     ///@}
-    std::vector<FitRow> fit;  ///< fit table
-    std::vector<SeamRow> seams;  ///< seam table
-    StyleMetrics style;  ///< style change of the chosen pattern
+    std::vector<FitRow> fit;         ///< fit table
+    std::vector<SeamRow> seams;      ///< seam table
+    StyleMetrics style;              ///< style change of the chosen pattern
     std::vector<ParetoPoint> front;  ///< every candidate, NSGA-II members and polished ones
     std::size_t chosen = 0;          ///< index into front
-    std::string chosen_why;  ///< why `chosen` was picked
+    std::string chosen_why;          ///< why `chosen` was picked
     /// Worst fit error and seam mismatch of the chosen pattern.
     ///@{
     double max_fit_error_mm = 0, max_seam_mismatch_mm = 0;
     ///@}
-    bool within_tolerance = false;  ///< both within GradingOptions::tolerances
+    bool within_tolerance = false;     ///< both within GradingOptions::tolerances
     std::size_t ceres_iterations = 0;  ///< of the fast path
-    std::string ceres_status;  ///< Ceres' termination of the fast path
-    std::size_t evaluations = 0;  ///< NSGA-II fitness evaluations
-    GradingTimings timings;  ///< phase timings
-    std::vector<std::string> notes;  ///< remarks for the user
+    std::string ceres_status;          ///< Ceres' termination of the fast path
+    std::size_t evaluations = 0;       ///< NSGA-II fitness evaluations
+    GradingTimings timings;            ///< phase timings
+    std::vector<std::string> notes;    ///< remarks for the user
 };
 
 /// One grade rule: where a named point or outline vertex of a piece goes.
@@ -172,8 +172,8 @@ struct GradeRule {
 
 /// What grade_pattern returns.
 struct GradeResult {
-    pattern::Pattern pattern;  ///< the graded pattern (the chosen candidate)
-    GradingReport report;        ///< fit and seam tables, front, timings
+    pattern::Pattern pattern;      ///< the graded pattern (the chosen candidate)
+    GradingReport report;          ///< fit and seam tables, front, timings
     std::vector<GradeRule> rules;  ///< where every named point and outline vertex went
 };
 

@@ -37,7 +37,9 @@ inline std::string fit_table(const GradingReport& r) {
     return o.str();
 }
 
-inline nlohmann::json report_json(const GradingReport& r) { return r; }
+inline nlohmann::json report_json(const GradingReport& r) {
+    return r;
+}
 
 /// Grade rules as JSON: per piece, per named point or outline vertex, base → graded and the
 /// offset (mm, y up).

@@ -97,8 +97,8 @@ struct BodyOptions {
     std::optional<LengthUnit> unit;  ///< empty: inferred from the height
     Axis up{1, 1};                   ///< +Y
     Axis front{2, 1};                ///< +Z
-    Pose pose = Pose::a_pose;    ///< arms down (A) or out (T)
-    std::string name = "body";  ///< used in messages (the file name, usually)
+    Pose pose = Pose::a_pose;        ///< arms down (A) or out (T)
+    std::string name = "body";       ///< used in messages (the file name, usually)
 };
 
 /// A hole of the input mesh (a loop of boundary edges) that make_body filled (holes.h).
@@ -122,7 +122,7 @@ struct BodyFrame {
     ///@{
     Axis up, front;
     ///@}
-    Pose pose = Pose::a_pose;          ///< the body's pose
+    Pose pose = Pose::a_pose;    ///< the body's pose
     double scale = 1;            ///< millimetres per input unit
     std::array<Vec3, 3> rows{};  ///< R: canonical x (left), y (up), z (front) in input coordinates
     double floor = 0;            ///< input height of the lowest vertex, in mm

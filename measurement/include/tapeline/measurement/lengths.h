@@ -43,7 +43,7 @@ namespace tapeline::measurement {
 /// \tparam TriangleMesh the body mesh type; a model of `FaceGraph`.
 template <class TriangleMesh>
 struct SkinLength {
-    std::string name;  ///< a catalogue name (tapeline/sizes/catalogue.h)
+    std::string name;                    ///< a catalogue name (tapeline/sizes/catalogue.h)
     std::vector<std::string> landmarks;  ///< the landmarks the path passes, in order
     std::vector<geodesic::FaceLocation<TriangleMesh>> waypoints;  ///< their surface points
     double floor_drop = 0;  ///< mm added after the last waypoint: straight down to the floor

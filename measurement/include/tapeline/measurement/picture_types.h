@@ -67,7 +67,7 @@ struct PictureOptions {
 /// One orthographic view. A canonical point p (mm) is drawn at picture millimetres
 /// (origin_x_mm + scale * dot(p, right), origin_y_mm - scale * p[1]) (y down, as in SVG).
 struct PictureView {
-    std::string name;                                             ///< "front" or "side"
+    std::string name;  ///< "front" or "side"
     /// The body's box.
     ///@{
     double left_mm = 0, top_mm = 0, width_mm = 0, height_mm = 0;  ///< the body's box
@@ -83,11 +83,11 @@ struct PictureView {
 /// One measurement label: which view it is drawn beside, its text, where its leader ends.
 struct PictureLabel {
     std::string measurement;  ///< measurement name
-    std::string text;  ///< "waist_girth 712.3 mm"
-    std::string view;  ///< "front" or "side"
+    std::string text;         ///< "waist_girth 712.3 mm"
+    std::string view;         ///< "front" or "side"
     /// Text anchor (baseline).
     ///@{
-    double x_mm = 0, y_mm = 0;                ///< text anchor (baseline)
+    double x_mm = 0, y_mm = 0;  ///< text anchor (baseline)
     ///@}
     /// The point of the tape the leader points at.
     ///@{
@@ -102,7 +102,7 @@ struct PictureReport {
     ///@{
     double width_mm = 0, height_mm = 0, scale = 0;
     ///@}
-    std::vector<PictureView> views;  ///< front, then side
+    std::vector<PictureView> views;    ///< front, then side
     std::vector<PictureLabel> labels;  ///< one per measurement drawn
     /// Counts of what was drawn.
     ///@{
@@ -112,7 +112,7 @@ struct PictureReport {
     ///@{
     std::size_t width_px = 0, height_px = 0;  ///< PNG
     ///@}
-    std::size_t bytes = 0;                    ///< written to the stream or file
+    std::size_t bytes = 0;  ///< written to the stream or file
 };
 
 }  // namespace tapeline::measurement

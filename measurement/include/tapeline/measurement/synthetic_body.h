@@ -72,8 +72,8 @@ struct HermiteProfile {
 
 /// Resolution of the synthetic mesh.
 struct SyntheticBodyOptions {
-    int around = 48;       ///< vertices around each ring
-    double ring_step = 8;  ///< mm between rings along each axis
+    int around = 48;                ///< vertices around each ring
+    double ring_step = 8;           ///< mm between rings along each axis
     double arm_angle_degrees = 40;  ///< arms' angle from the vertical
 };
 
@@ -128,7 +128,7 @@ public:
     }
     /// Girth of the arm perpendicular to its axis, t mm from the arm's start.
     double arm_girth(double t) const { return ellipse_perimeter(arm_a_(t), arm_b_(t)); }
-    double torso_depth(double y) const { return torso_b_(y); }  ///< depth semi-axis at y
+    double torso_depth(double y) const { return torso_b_(y); }       ///< depth semi-axis at y
     double torso_half_width(double y) const { return torso_a_(y); }  ///< lateral semi-axis at y
     /// Lateral semi-axis of a leg's section at height y (depth: leg_b_ratio() times it), of the
     /// neck's (depth: neck_b_ratio() times it), and of the arm's t mm along its axis (and its

@@ -38,9 +38,9 @@ namespace tapeline::pattern {
 /// How patterns are quantised and compressed.
 struct CompressionOptions {
     std::int64_t units_per_mm = 1000;  ///< grid of 1/units_per_mm mm (0.001 mm)
-    int zstd_level = 19;  ///< zstd compression level
-    double max_error_mm = 0.005;      ///< an edge moving more than this keeps exact coordinates
-    bool measure_plain_zstd = false;  ///< also compress the plain JSON, for the report only
+    int zstd_level = 19;               ///< zstd compression level
+    double max_error_mm = 0.005;       ///< an edge moving more than this keeps exact coordinates
+    bool measure_plain_zstd = false;   ///< also compress the plain JSON, for the report only
 };
 
 /// Sizes and error of one compressed pattern.

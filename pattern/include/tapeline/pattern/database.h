@@ -52,10 +52,10 @@ inline constexpr std::int32_t pattern_database_application_id = 0x54504C4E;  // 
 
 /// How PatternDatabase opens and writes its file.
 struct DatabaseOptions {
-    bool read_only = false;       ///< never writes; refuses a file that needs migrating
-    bool create = true;           ///< create the file and its directory when missing
-    int busy_timeout_ms = 10000;  ///< how long a writer waits for another writer's lock
-    bool synchronous_full = false;  ///< SQLite synchronous=FULL (else NORMAL under WAL)
+    bool read_only = false;          ///< never writes; refuses a file that needs migrating
+    bool create = true;              ///< create the file and its directory when missing
+    int busy_timeout_ms = 10000;     ///< how long a writer waits for another writer's lock
+    bool synchronous_full = false;   ///< SQLite synchronous=FULL (else NORMAL under WAL)
     CompressionOptions compression;  ///< how stored patterns are compressed
     /// Called with the running count after each pattern row written inside a transaction
     /// (store, store_all, migration); fault-injection tests stop the process at a chosen row.
@@ -71,7 +71,7 @@ struct StoreOptions {
 struct StoreReport {
     CompressionReport compression;  ///< sizes before and after compression
     bool replaced = false;          ///< a pattern of the same name was overwritten
-    double seconds = 0;  ///< compression + transaction
+    double seconds = 0;             ///< compression + transaction
 };
 
 /// One row of list() / search(): the searchable fields without decoding the geometry.

@@ -57,9 +57,9 @@ struct Arc {
     ///@{
     Point2 a, b;
     ///@}
-    double radius = 0;        ///< mm
+    double radius = 0;       ///< mm
     bool large_arc = false;  ///< the arc of more than half a turn
-    bool ccw = true;          ///< counter-clockwise (y up)
+    bool ccw = true;         ///< counter-clockwise (y up)
 };
 
 /// The curve of an edge.
@@ -133,10 +133,10 @@ inline bool is_finite(const Curve& c) {
 /// half the chord (a half circle), as SVG does; `radius_too_small` says so and validation reports
 /// it.
 struct ArcFrame {
-    Point2 center;            ///< centre of the circle
-    double radius = 0;        ///< mm, after raising
-    double start_angle = 0;   ///< radians, of the start point
-    double sweep = 0;  ///< signed radians, > 0 counter-clockwise
+    Point2 center;                  ///< centre of the circle
+    double radius = 0;              ///< mm, after raising
+    double start_angle = 0;         ///< radians, of the start point
+    double sweep = 0;               ///< signed radians, > 0 counter-clockwise
     bool radius_too_small = false;  ///< the radius was raised to half the chord
 };
 

@@ -44,7 +44,7 @@ struct BoundaryParam {
 
 /// The triangle mesh of one piece; boundary vertices come first.
 struct PieceMesh {
-    std::string piece;  ///< piece name
+    std::string piece;                                    ///< piece name
     std::vector<Point2> uv;                               ///< 2D pattern coordinates, mm
     std::vector<std::array<double, 3>> xyz;               ///< 3D rest position, mm
     std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise in 2D
@@ -81,9 +81,9 @@ struct MeshingReport {
     std::size_t boundary_steiner_points = 0;  ///< vertices the refinement put on the outline: 0
     double max_edge_mm = 0;                   ///< longest triangle edge
     double max_boundary_edge_mm = 0;          ///< longest boundary segment
-    double min_angle_deg = 180;  ///< smallest triangle angle
-    double area_mm2 = 0;  ///< total area
-    double seconds = 0;  ///< wall-clock time
+    double min_angle_deg = 180;               ///< smallest triangle angle
+    double area_mm2 = 0;                      ///< total area
+    double seconds = 0;                       ///< wall-clock time
 };
 
 /// Wavefront OBJ: one object per piece; v = 3D position (mm), vt = 2D pattern coordinates ×

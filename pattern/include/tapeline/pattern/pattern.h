@@ -35,62 +35,62 @@ struct GrainLine {
 
 /// A notch on the outline, `offset` mm along edge `edge` from its start.
 struct Notch {
-    std::size_t edge = 0;  ///< outline edge the notch is on
-    double offset = 0;  ///< mm along the edge from its start
-    std::string name;  ///< notch name, may be empty
+    std::size_t edge = 0;       ///< outline edge the notch is on
+    double offset = 0;          ///< mm along the edge from its start
+    std::string name;           ///< notch name, may be empty
     std::string kind = "slit";  ///< slit, v, t, castle, u, check (ASTM D6673 layers 4, 80–83)
 };
 
 /// A line drawn on the piece but not cut: fold, placement, button line, help line.
 struct InternalLine {
-    std::string name;  ///< line name
-    std::string kind;  ///< source class: "fold", "help", "dotted", ...
+    std::string name;         ///< line name
+    std::string kind;         ///< source class: "fold", "help", "dotted", ...
     std::vector<Edge> edges;  ///< the drawn line
 };
 
 /// A dart: its stitching lines (legs to the tip), drawn on the piece.
 struct Dart {
-    std::string name;  ///< dart name
+    std::string name;         ///< dart name
     std::vector<Edge> edges;  ///< its stitching lines
 };
 
 /// The piece is half of a symmetric piece cut on the fold along `line`; `edge` is the outline
 /// edge lying on the fold when there is one.
 struct Fold {
-    Line line;  ///< the fold line
+    Line line;                        ///< the fold line
     std::optional<std::size_t> edge;  ///< outline edge on the fold, if any
 };
 
 /// Where a piece sits in 3D before stitching (GarmentCode): translation in mm and Euler angles in
 /// degrees, applied to (x, y, 0) as R·p + t with R = Rx·Ry·Rz for order "XYZ" (intrinsic).
 struct Placement3D {
-    std::array<double, 3> translation{0, 0, 0};  ///< mm
+    std::array<double, 3> translation{0, 0, 0};   ///< mm
     std::array<double, 3> rotation_deg{0, 0, 0};  ///< Euler angles, degrees
-    std::string rotation_order = "XYZ";  ///< axis order of the rotation
+    std::string rotation_order = "XYZ";           ///< axis order of the rotation
 };
 
 /// One pattern piece: its cut outline and what is drawn or marked on it.
 struct Piece {
-    std::string name;  ///< piece name, unique in the pattern
-    Outline outline;  ///< the cut outline
-    std::map<std::string, Point2> points;  ///< named points (FreeSewing points, landmarks)
-    std::optional<GrainLine> grain;  ///< fabric grain, if given
-    std::vector<Notch> notches;  ///< notches on the outline
+    std::string name;                          ///< piece name, unique in the pattern
+    Outline outline;                           ///< the cut outline
+    std::map<std::string, Point2> points;      ///< named points (FreeSewing points, landmarks)
+    std::optional<GrainLine> grain;            ///< fabric grain, if given
+    std::vector<Notch> notches;                ///< notches on the outline
     std::vector<InternalLine> internal_lines;  ///< lines drawn, not cut
-    std::vector<Dart> darts;  ///< darts drawn on the piece
-    std::optional<Fold> fold;  ///< set when the piece is cut on the fold
-    int cut_count = 1;      ///< how many times the piece is cut
-    bool mirrored = false;  ///< half of those cuts are mirrored (a left/right pair)
+    std::vector<Dart> darts;                   ///< darts drawn on the piece
+    std::optional<Fold> fold;                  ///< set when the piece is cut on the fold
+    int cut_count = 1;                         ///< how many times the piece is cut
+    bool mirrored = false;                 ///< half of those cuts are mirrored (a left/right pair)
     std::optional<Placement3D> placement;  ///< 3D placement (GarmentCode), if given
-    std::string label;  ///< free text from the source (GarmentCode panel label)
+    std::string label;                     ///< free text from the source (GarmentCode panel label)
 };
 
 /// `count` consecutive outline edges of `piece` starting at `first_edge`, in outline order,
 /// wrapping past the last edge.
 struct EdgeRange {
-    std::string piece;  ///< piece name
+    std::string piece;           ///< piece name
     std::size_t first_edge = 0;  ///< first outline edge of the range
-    std::size_t count = 1;  ///< number of edges
+    std::size_t count = 1;       ///< number of edges
 };
 
 /// How the two sides of a seam meet: `same` joins the start of side A to the start of side B,
@@ -111,7 +111,7 @@ struct Seam {
 /// (`edges` non-empty) or the straight distance between two named points of `piece`. `count`
 /// says how often the feature occurs on the body (2 for a half piece cut on the fold, ...).
 struct BoundFeature {
-    std::string piece;  ///< piece name
+    std::string piece;               ///< piece name
     std::vector<std::size_t> edges;  ///< outline edges (length form)
     /// Named points of the straight-distance form (empty with `edges`).
     ///@{
@@ -122,31 +122,31 @@ struct BoundFeature {
 
 /// A body measurement and the features that realise it: Σ count·length(feature) = value + ease.
 struct MeasurementBinding {
-    std::string measurement;  ///< measurement name, as in the measurement set
+    std::string measurement;             ///< measurement name, as in the measurement set
     std::vector<BoundFeature> features;  ///< features whose lengths add up to it
-    double ease_mm = 0;  ///< the ease: Σ count·length(feature) − value
+    double ease_mm = 0;                  ///< the ease: Σ count·length(feature) − value
 };
 
 /// A sewing pattern: pieces, seams and the measurements it was drafted for, in mm.
 struct Pattern {
-    std::string name;  ///< pattern name (database key)
-    std::string designer;  ///< designer or source project
-    std::string garment_type;  ///< garment type ("shirt", "trousers", ...)
-    std::string size;  ///< size label of the draft
+    std::string name;               ///< pattern name (database key)
+    std::string designer;           ///< designer or source project
+    std::string garment_type;       ///< garment type ("shirt", "trousers", ...)
+    std::string size;               ///< size label of the draft
     std::vector<std::string> tags;  ///< free search tags
-    std::string units = "mm";  ///< always "mm" inside the model; validation rejects anything else
-    std::string source;        ///< file or generator it came from
+    std::string units = "mm";   ///< always "mm" inside the model; validation rejects anything else
+    std::string source;         ///< file or generator it came from
     std::vector<Piece> pieces;  ///< pieces in source order
-    std::vector<Seam> seams;  ///< seams between piece edges
+    std::vector<Seam> seams;    ///< seams between piece edges
     std::map<std::string, double> measurements_used;  ///< name → mm (degrees for angles)
-    std::vector<MeasurementBinding> bindings;  ///< what grading fits
+    std::vector<MeasurementBinding> bindings;         ///< what grading fits
 };
 
 /// What an importer did besides building the pattern: pieces it skipped, gaps it closed, ...
 struct ImportReport {
-    std::size_t pieces = 0;  ///< pieces imported
+    std::size_t pieces = 0;          ///< pieces imported
     std::size_t skipped_pieces = 0;  ///< pieces left out (see notes)
-    std::size_t seams = 0;  ///< seams imported or derived
+    std::size_t seams = 0;           ///< seams imported or derived
     std::vector<std::string> notes;  ///< one line each, naming the piece
 };
 
@@ -190,7 +190,7 @@ inline double length(const Piece& piece, const EdgeRange& range) {
 /// last edge (so the first point is repeated at the end of a closed outline), and for each point
 /// the edge it ends (the first point: edge 0).
 struct OutlinePolyline {
-    std::vector<Point2> points;  ///< polyline points, mm
+    std::vector<Point2> points;              ///< polyline points, mm
     std::vector<std::size_t> edge_of_point;  ///< per point: the edge it ends
 };
 
@@ -213,9 +213,9 @@ inline double signed_area(const Outline& o, double tolerance = 0.01) {
 /// Nearest outline position to a point: edge index, distance along that edge, distance away.
 struct OutlinePosition {
     std::size_t edge = 0;  ///< outline edge index
-    double offset = 0;  ///< mm along the edge from its start
-    double distance = 0;  ///< distance from the point to the outline
-    Point2 point;  ///< the nearest outline point
+    double offset = 0;     ///< mm along the edge from its start
+    double distance = 0;   ///< distance from the point to the outline
+    Point2 point;          ///< the nearest outline point
 };
 
 /// Projects `p` on the outline (on a polyline within `tolerance` of it).

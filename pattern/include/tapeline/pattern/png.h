@@ -54,8 +54,8 @@ struct PngReport {
     ///@{
     std::size_t width_px = 0, height_px = 0;
     ///@}
-    double pixels_per_mm = 0;  ///< resolution used
-    SvgReport layout;  ///< page size in mm and piece offsets, as in the SVG
+    double pixels_per_mm = 0;   ///< resolution used
+    SvgReport layout;           ///< page size in mm and piece offsets, as in the SVG
     std::size_t png_bytes = 0;  ///< size of the encoded file
 };
 

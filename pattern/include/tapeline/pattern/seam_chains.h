@@ -86,7 +86,7 @@ struct NamedChain {
 /// A seam of a design given by the named points of its pieces.
 struct NamedSeamRule {
     std::string design;  ///< design name (Pattern::name starts with it)
-    std::string name;  ///< seam name
+    std::string name;    ///< seam name
     /// The chains of side A and side B.
     ///@{
     std::vector<NamedChain> a, b;

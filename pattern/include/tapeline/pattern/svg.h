@@ -26,14 +26,14 @@ namespace tapeline::pattern {
 
 /// Page layout and marks of the SVG drawing (the PNG uses the same layout).
 struct SvgOptions {
-    double margin_mm = 20;  ///< around the page
+    double margin_mm = 20;           ///< around the page
     double gap_mm = 30;              ///< between pieces
     double max_row_width_mm = 1600;  ///< start a new row beyond this
-    double scale_bar_mm = 100;  ///< length of the scale bar
-    double notch_length_mm = 6;  ///< length of a notch tick
+    double scale_bar_mm = 100;       ///< length of the scale bar
+    double notch_length_mm = 6;      ///< length of a notch tick
     /// Chord tolerance of the bounding boxes only; curves are written exactly.
     double sample_tolerance_mm = 0.05;  // for bounding boxes only; curves are written exactly
-    bool seam_marks = true;  ///< draw seam names at the middle of their edges
+    bool seam_marks = true;             ///< draw seam names at the middle of their edges
 };
 
 /// Where each piece went, for tests and callers that annotate the drawing.

@@ -23,8 +23,8 @@ namespace tapeline::pattern {
 
 /// Tolerances and limits of validate().
 struct ValidationOptions {
-    double closure_tolerance_mm = 1e-3;  ///< largest gap between consecutive edges
-    double sample_tolerance_mm = 0.01;   ///< polyline tolerance of the self-intersection test
+    double closure_tolerance_mm = 1e-3;   ///< largest gap between consecutive edges
+    double sample_tolerance_mm = 0.01;    ///< polyline tolerance of the self-intersection test
     bool check_self_intersection = true;  ///< test outlines for self-intersection
     /// Seam sides differing by more than max(absolute, relative · longer side) are reported.
     double seam_length_tolerance_mm = 0.5;
@@ -41,16 +41,16 @@ struct ValidationIssue {
     std::string code;   ///< open_outline, self_intersection, non_finite, missing_edge, ...
     std::string piece;  ///< empty when the issue is not about one piece
     std::optional<std::size_t> edge;  ///< the outline edge concerned, if one
-    std::string message;  ///< one line naming the piece and edge
+    std::string message;              ///< one line naming the piece and edge
 };
 
 /// What validate() found: errors make a pattern unusable, warnings do not.
 struct ValidationReport {
-    std::vector<ValidationIssue> errors;  ///< problems that make the pattern unusable
-    std::vector<ValidationIssue> warnings;  ///< problems worth a look
-    std::size_t pieces_checked = 0;  ///< pieces validated
-    std::size_t seams_checked = 0;  ///< seams validated
-    double largest_seam_mismatch_mm = 0;  ///< over all seams, |length A − length B|
+    std::vector<ValidationIssue> errors;        ///< problems that make the pattern unusable
+    std::vector<ValidationIssue> warnings;      ///< problems worth a look
+    std::size_t pieces_checked = 0;             ///< pieces validated
+    std::size_t seams_checked = 0;              ///< seams validated
+    double largest_seam_mismatch_mm = 0;        ///< over all seams, |length A − length B|
     bool ok() const { return errors.empty(); }  ///< no errors
 };
 

@@ -50,8 +50,8 @@ struct CatalogueEntry {
     const char* iso_title;   ///< ISO 8559-1:2017 item title ("waist girth"); empty: no such item
     const char* freesewing;  ///< FreeSewing name ("waist")
     const char* seamly;      ///< Seamly2D known name ("waist_circ")
-    MeasurementKind kind;  ///< length, girth or angle
-    bool sided;  ///< also taken per side as name_left, name_right
+    MeasurementKind kind;    ///< length, girth or angle
+    bool sided;              ///< also taken per side as name_left, name_right
 
     /// "mm" for lengths, "degree" for angles (which are never unit-scaled).
     const char* unit() const { return kind == MeasurementKind::angle ? "degree" : "mm"; }

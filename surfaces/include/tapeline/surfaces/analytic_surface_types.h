@@ -50,14 +50,14 @@ enum class SurfaceKind { icosphere, uvsphere, ellipsoid, torus, cylinder };
 /// length; `seed=N` (default 1) selects the random stream.
 struct SurfaceSpec {
     SurfaceKind kind = SurfaceKind::icosphere;  ///< which surface
-    int level = 0;                                ///< subdivision level: icosphere, ellipsoid
+    int level = 0;                              ///< subdivision level: icosphere, ellipsoid
     /// Latitude and longitude segments (uvsphere).
     ///@{
-    int nlat = 0, nlon = 0;                       // uvsphere
+    int nlat = 0, nlon = 0;  // uvsphere
     ///@}
     /// Ellipsoid semi-axes along x, y, z.
     ///@{
-    double a = 1, b = 1, c = 1;                   // ellipsoid semi-axes along x, y, z
+    double a = 1, b = 1, c = 1;  // ellipsoid semi-axes along x, y, z
     ///@}
     /// Torus radii: of the tube's centre circle and of the tube.
     ///@{
@@ -65,11 +65,11 @@ struct SurfaceSpec {
     ///@}
     /// Cylinder radius and height.
     ///@{
-    double radius = 1, height = 1;                // cylinder
+    double radius = 1, height = 1;  // cylinder
     ///@}
     /// Segments around and along (torus, cylinder).
     ///@{
-    int nu = 0, nv = 0;                           // torus, cylinder
+    int nu = 0, nv = 0;  // torus, cylinder
     ///@}
     double jitter = 0;       ///< tangential vertex jitter, times the local mean edge length
     std::uint64_t seed = 1;  ///< random stream of the jitter
