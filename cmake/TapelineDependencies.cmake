@@ -17,6 +17,8 @@ find_dependency(Eigen3 3.3 NO_MODULE)
 find_package(Ceres 2.1 QUIET)
 # Optional: only tapeline::grading needs it (Debian package libpagmo-dev; NSGA-II).
 find_package(Pagmo QUIET NAMES pagmo)
+# Optional: only tapeline::garment_gltf needs it (Debian package libtinygltf-dev).
+find_package(TinyGLTF CONFIG QUIET)
 include(CGAL_Eigen3_support)
 if(NOT TARGET CGAL::Eigen3_support)
   message(FATAL_ERROR "tapeline: Eigen 3 not found (Debian package libeigen3-dev)")

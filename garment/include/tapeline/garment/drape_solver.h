@@ -1,0 +1,1188 @@
+// Cloth drape solver: extended position-based dynamics with small sub-steps.
+//
+// Papers:
+//  - M. Macklin, M. Müller, N. Chentanez, "XPBD: Position-Based Simulation of Compliant
+//    Constrained Dynamics", MIG 2016: compliant constraints, the λ update below.
+//  - M. Macklin, K. Storey, M. Lu, P. Terdiman, N. Chentanez, S. Jeschke, M. Müller, "Small
+//    Steps in Physics Simulation", SCA 2019: many sub-steps with one constraint pass each beat
+//    many iterations of one big step, and keep every sub-step's motion small (no tunnelling).
+//  - M. Müller, N. Chentanez, T.-Y. Kim, M. Macklin, "Strain Based Dynamics", SCA 2014:
+//    in-plane stretch (warp, weft) and shear as constraints on the deformation gradient
+//    F = [x1 − x0, x2 − x0]·Dm⁻¹, Dm in the fabric's grain frame.
+//  - R. Bridson, S. Marino, R. Fedkiw, "Simulation of clothing with folds and wrinkles", SCA 2003:
+//    the dihedral-angle gradients of the bending constraint.
+//  - M. Macklin, M. Müller, N. Chentanez, T.-Y. Kim, "Unified Particle Physics for Real-Time
+//    Applications", SIGGRAPH 2014: position-level Coulomb friction of contacts.
+//  - M. Teschner et al., "Optimized Spatial Hashing for Collision Detection of Deformable
+//    Objects", VMV 2003: the self-collision broad phase.
+//
+// Units and compliance. Positions mm, time s, mass kg; energy is then kg·mm²/s² = 1e-6 J.
+//  - Stretch/shear: energy A·½·k·ε², k in N/m, A the rest area: in J that is ½·k·(A_mm²·1e-6)·ε²,
+//    i.e. ½·(k·A_mm²)·ε² in kg·mm²/s², so the XPBD compliance of the strain constraint is
+//    α = 1/(k·A_mm²) (s²/(kg·mm²)).
+//  - Bending: energy ½·B·(|e|²/A_e)·θ² per interior edge (B in N·m, |e| its length, A_e the rest
+//    area of its two triangles, θ the dihedral angle, flat at rest): B = bending_un_m·1e-6 N·m,
+//    so α = A_e/(bending_un_m·|e|²). Calibration: a cylindrical bend across a grid of right
+//    triangles gives ½·B·κ² per unit area exactly; an equilateral mesh comes out half as stiff.
+//  - Attachments and stitches: user compliance α_u in mm/N = 1/k with k in N/mm; energy
+//    ½·k·C² N·mm = ½·k·1e3·C² kg·mm²/s², so α = α_u·1e-3 (s²/kg).
+//  - Mass per vertex: a third of each incident rest triangle's area times the areal density:
+//    density_g_m2·1e-9 kg/mm².
+//
+// Parallelism and determinism: constraints are greedily coloured once (serially, in index order)
+// so that no two constraints of one colour share a vertex; Gauss–Seidel runs colour after colour
+// with tbb::parallel_for inside a colour, so every update sees exactly the same values whatever
+// the thread count and the result is bit-identical for any number of threads. Sums (energies) are
+// taken serially; self-contacts are detected in parallel into fixed blocks and resolved serially.
+//
+// Collisions. Body: each sub-step first sweeps every vertex's motion through the collider by
+// sphere tracing (the distance is 1-Lipschitz, so stepping by it never skips the surface) and
+// stops a vertex at the body's surface; then every constraint pass pushes vertices out to the
+// fabric thickness along the distance gradient, with Coulomb friction. Cloth–cloth: vertex–
+// triangle proximity within the thickness, detected once per sub-step through a spatial hash of
+// the predicted positions; the side is taken from the sub-step's start, so a vertex that crossed
+// a triangle within one sub-step is pushed back. Edge–edge pairs, continuous self-collision and
+// self-friction are not done (small sub-steps keep the misses rare). Edges against the body:
+// see contact_edges().
+//
+// Limit to know: with one constraint pass per sub-step a hard constraint acts like a spring of
+// stiffness m/h² (m the vertex mass), whatever the fabric's stiffness, so a chain of N elements
+// hanging from a support stretches by about g·h²·N²/2 (measured: 12 elements of 10 mm, h = 1/300 s:
+// 7 %; 40 sub-steps: 0.4 %). Fine meshes therefore need sub-steps in proportion to the number of
+// elements between supports (or more iterations, which help less), as Macklin et al. 2019 do.
+// Tried and left out: over-relaxing the λ update (ω = 1.5 blows up within two frames) and
+// warm-starting each sub-step from a fraction β of the previous multipliers (β = 0.5 halves the
+// stretch, β ≥ 0.9 blows up).
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/core/vec3.h>
+#include <tapeline/garment/collider.h>
+#include <tapeline/garment/drape_types.h>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tapeline::garment {
+
+/// XPBD cloth solver (see the header comment for the model, units and papers).
+class DrapeSolver {
+public:
+    /// Validates everything and precomputes masses, rest shapes and constraint colours. Throws
+    /// InvalidInput naming the triangle, vertex or field. `collider` (may be null) must outlive
+    /// the solver.
+    DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOptions options,
+                const Collider* collider = nullptr);
+
+    /// Advances one frame (options().frame_seconds). Throws SolverFailure("frame N: ...") when a
+    /// position is not finite, a speed exceeds max_speed_mm_s or the kinetic energy explodes; the
+    /// state is then unusable until reset().
+    StepReport step();
+
+    /// Replace the attachments / stitches; they act from the next step.
+    void set_attachments(std::vector<Attachment> attachments);
+    void set_stitches(std::vector<Stitch> stitches);
+
+    const std::vector<Vec3>& positions() const { return x_; }
+    const std::vector<Vec3>& velocities() const { return v_; }
+    const ClothModel& model() const { return model_; }
+    const FabricParams& fabric() const { return fabric_; }
+    const DrapeOptions& options() const { return options_; }
+
+    /// Back to the initial positions, zero velocity, frame 0 (attachments and stitches stay).
+    void reset();
+
+private:
+    struct TriangleConstraint {
+        std::uint32_t v[3];
+        double c1[3], c2[3];  // F·e_warp = Σ c1_i x_i, F·e_weft = Σ c2_i x_i
+        double alpha_warp, alpha_weft, alpha_shear;  // compliance; < 0: no constraint
+        double area;                                 // rest area, mm²
+    };
+    struct BendConstraint {
+        std::uint32_t v[4];  // wing of triangle A, wing of triangle B, edge start, edge end
+        double alpha;
+    };
+    struct SelfContact {
+        std::uint32_t v, t;
+        double b[3];
+        Vec3 n;  // unit, pointing to the vertex's side
+    };
+    using Colouring = std::vector<std::vector<std::uint32_t>>;  // constraint ids per colour
+
+    template <typename VertexOf>
+    static Colouring colour(std::size_t count, int arity, std::size_t vertex_count,
+                            VertexOf vertex_of);
+    template <typename F>
+    void for_each_coloured(const Colouring& colours, F&& f);
+    void substep(double h, std::size_t frame_number);
+    void sweep_body(std::size_t i);
+    bool first_hit(std::size_t i);
+    bool contact_body(std::size_t i);
+    void contact_edges();
+    void detect_self_contacts();
+    void solve_self_contacts();
+    void project_triangle(std::size_t t, double h);
+    void project_bend(std::size_t e, double h);
+    void project_stitch(std::size_t s, double h);
+    void project_attachment(std::size_t a, double h);
+    [[noreturn]] void fail(std::size_t frame_number, const std::string& what);
+
+    ClothModel model_;
+    FabricParams fabric_;
+    DrapeOptions options_;
+    const Collider* collider_;
+    std::unique_ptr<tbb::task_arena> arena_;
+
+    std::vector<Vec3> x_, v_, p_;
+    std::vector<double> mass_, w_;
+    std::vector<TriangleConstraint> tris_;
+    std::vector<BendConstraint> bends_;
+    std::vector<Attachment> attachments_;
+    std::vector<Stitch> stitches_;
+    std::vector<double> stitch_alpha_, attachment_alpha_;
+    Colouring tri_colours_, bend_colours_, stitch_colours_;
+    std::vector<double> lambda_tri_, lambda_bend_, lambda_stitch_, lambda_attachment_;
+    std::vector<std::uint32_t> neighbour_start_, neighbours_;            // one-ring, CSR, sorted
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> stitch_pairs_;  // both ways, sorted
+    std::vector<std::uint8_t> in_contact_;
+    std::vector<double> start_distance_;  // collider distance at the sub-step's start
+    std::vector<double> end_distance_;    // after the last contact pass (a lower bound)
+    std::vector<Vec3> end_normal_;        // collider gradient there
+    struct EdgeContact {
+        std::uint32_t a, b;
+        double t;
+    };
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edge_list_;  // each edge once, a < b
+    std::vector<std::vector<EdgeContact>> edge_blocks_;
+    std::vector<SelfContact> self_contacts_;
+    std::vector<std::vector<SelfContact>> self_blocks_;
+    std::vector<std::uint32_t> hash_start_, hash_vertices_;
+    std::vector<std::array<std::int64_t, 3>> vertex_cell_;
+    double hash_cell_ = 1;
+    std::size_t frame_ = 0;
+    bool failed_ = false;
+};
+
+// ---------------------------------------------------------------------------------------------
+
+namespace internal {
+
+inline bool finite3(const Vec3& p) {
+    return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+// Closest point of triangle (a, b, c) to p as barycentric coordinates (Ericson, "Real-Time
+// Collision Detection", 5.1.5).
+inline std::array<double, 3> closest_barycentric(const Vec3& p, const Vec3& a, const Vec3& b,
+                                                 const Vec3& c) {
+    using namespace tapeline::vec3;
+    const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+    const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) {
+        return {1, 0, 0};
+    }
+    const Vec3 bp = sub(p, b);
+    const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) {
+        return {0, 1, 0};
+    }
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+        const double v = d1 / (d1 - d3);
+        return {1 - v, v, 0};
+    }
+    const Vec3 cp = sub(p, c);
+    const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) {
+        return {0, 0, 1};
+    }
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+        const double w = d2 / (d2 - d6);
+        return {1 - w, 0, w};
+    }
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+        const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return {0, 1 - w, w};
+    }
+    const double denom = 1 / (va + vb + vc);
+    const double v = vb * denom, w = vc * denom;
+    return {1 - v - w, v, w};
+}
+
+}  // namespace internal
+
+inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOptions options,
+                                const Collider* collider)
+    : model_(std::move(cloth)), fabric_(std::move(fabric)), options_(options), collider_(collider) {
+    using namespace tapeline::vec3;
+    const std::string where = "DrapeSolver: ";
+    auto num = [](double v) { return std::to_string(v); };
+    // Options.
+    if (!(std::isfinite(options_.frame_seconds) && options_.frame_seconds > 0)) {
+        throw InvalidInput(where + "options.frame_seconds must be finite and > 0, got " +
+                           num(options_.frame_seconds));
+    }
+    if (options_.substeps < 1) {
+        throw InvalidInput(where + "options.substeps must be >= 1, got " +
+                           std::to_string(options_.substeps));
+    }
+    if (options_.iterations < 1) {
+        throw InvalidInput(where + "options.iterations must be >= 1, got " +
+                           std::to_string(options_.iterations));
+    }
+    if (!internal::finite3(options_.gravity)) {
+        throw InvalidInput(where + "options.gravity is not finite");
+    }
+    if (!(std::isfinite(options_.damping_per_second) && options_.damping_per_second >= 0)) {
+        throw InvalidInput(where + "options.damping_per_second must be finite and >= 0, got " +
+                           num(options_.damping_per_second));
+    }
+    if (options_.threads < 0) {
+        throw InvalidInput(where + "options.threads must be >= 0, got " +
+                           std::to_string(options_.threads));
+    }
+    if (!(options_.max_speed_mm_s > 0)) {
+        throw InvalidInput(where + "options.max_speed_mm_s must be > 0, got " +
+                           num(options_.max_speed_mm_s));
+    }
+    if (!(options_.max_energy_growth > 0)) {
+        throw InvalidInput(where + "options.max_energy_growth must be > 0, got " +
+                           num(options_.max_energy_growth));
+    }
+    // Fabric.
+    const std::pair<const char*, double> fabric_fields[] = {
+        {"density_g_m2", fabric_.density_g_m2},
+        {"stretch_warp_n_m", fabric_.stretch_warp_n_m},
+        {"stretch_weft_n_m", fabric_.stretch_weft_n_m},
+        {"shear_n_m", fabric_.shear_n_m},
+        {"bending_un_m", fabric_.bending_un_m},
+        {"friction", fabric_.friction},
+        {"thickness_mm", fabric_.thickness_mm}};
+    for (const auto& [name, value] : fabric_fields) {
+        if (!(std::isfinite(value) && value >= 0)) {
+            throw InvalidInput(where + "fabric." + name + " must be finite and >= 0, got " +
+                               num(value));
+        }
+    }
+    if (!(fabric_.density_g_m2 > 0)) {
+        throw InvalidInput(where + "fabric.density_g_m2 must be > 0");
+    }
+    // Cloth.
+    const std::size_t n = model_.positions.size(), nt = model_.triangles.size();
+    if (n == 0 || nt == 0) {
+        throw InvalidInput(where + "empty cloth (" + std::to_string(n) + " vertices, " +
+                           std::to_string(nt) + " triangles)");
+    }
+    if (n >= std::numeric_limits<std::uint32_t>::max()) {
+        throw InvalidInput(where + "too many vertices");
+    }
+    if (model_.rest_uv.size() != nt) {
+        throw InvalidInput(where + "rest_uv has " + std::to_string(model_.rest_uv.size()) +
+                           " entries for " + std::to_string(nt) + " triangles");
+    }
+    if (model_.grain.size() != nt) {
+        throw InvalidInput(where + "grain has " + std::to_string(model_.grain.size()) +
+                           " entries for " + std::to_string(nt) + " triangles");
+    }
+    if (!model_.pinned.empty() && model_.pinned.size() != n) {
+        throw InvalidInput(where + "pinned has " + std::to_string(model_.pinned.size()) +
+                           " entries for " + std::to_string(n) + " vertices");
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!internal::finite3(model_.positions[i])) {
+            throw InvalidInput(where + "vertex " + std::to_string(i) +
+                               " has a non-finite position " +
+                               internal::vec_to_string(model_.positions[i]));
+        }
+    }
+    mass_.assign(n, 0.0);
+    tris_.resize(nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+        const Tri& tri = model_.triangles[t];
+        const std::string name = "triangle " + std::to_string(t);
+        for (std::uint32_t v : tri) {
+            if (v >= n) {
+                throw InvalidInput(where + name + " has vertex index " + std::to_string(v) +
+                                   " out of range (" + std::to_string(n) + " vertices)");
+            }
+        }
+        if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) {
+            throw InvalidInput(where + name + " repeats a vertex");
+        }
+        const UV g0 = model_.grain[t];
+        const double glen = std::hypot(g0[0], g0[1]);
+        if (!(std::isfinite(glen) && glen > 1e-12)) {
+            throw InvalidInput(where + name + ": grain direction is zero or not finite");
+        }
+        const UV g{g0[0] / glen, g0[1] / glen}, gp{-g[1], g[0]};
+        double a[3][2];
+        double longest = 0;
+        for (int c = 0; c < 3; ++c) {
+            const UV& u = model_.rest_uv[t][c];
+            if (!std::isfinite(u[0]) || !std::isfinite(u[1])) {
+                throw InvalidInput(where + name + ": rest_uv corner " + std::to_string(c) +
+                                   " is not finite");
+            }
+            a[c][0] = u[0] * g[0] + u[1] * g[1];    // warp coordinate
+            a[c][1] = u[0] * gp[0] + u[1] * gp[1];  // weft coordinate
+        }
+        const double m00 = a[1][0] - a[0][0], m10 = a[1][1] - a[0][1];
+        const double m01 = a[2][0] - a[0][0], m11 = a[2][1] - a[0][1];
+        for (int c = 0; c < 3; ++c) {
+            const int d = (c + 1) % 3;
+            longest = std::max(longest, std::hypot(a[d][0] - a[c][0], a[d][1] - a[c][1]));
+        }
+        const double det = m00 * m11 - m01 * m10;
+        const double area = 0.5 * std::abs(det);
+        // Relative test: a sliver whose area is a millionth of its longest edge squared has an
+        // ill-conditioned Dm⁻¹ and would make its constraints infinitely stiff.
+        if (!(area > 1e-6 * longest * longest) || !(area > 0)) {
+            throw InvalidInput(where + name + ": degenerate rest triangle (area " + num(area) +
+                               " mm², longest edge " + num(longest) + " mm)");
+        }
+        const double i00 = m11 / det, i01 = -m01 / det, i10 = -m10 / det, i11 = m00 / det;
+        TriangleConstraint& tc = tris_[t];
+        for (int c = 0; c < 3; ++c) {
+            tc.v[c] = tri[c];
+        }
+        tc.c1[0] = -(i00 + i10);
+        tc.c1[1] = i00;
+        tc.c1[2] = i10;
+        tc.c2[0] = -(i01 + i11);
+        tc.c2[1] = i01;
+        tc.c2[2] = i11;
+        auto compliance = [&](double k) { return k > 0 ? 1.0 / (k * area) : -1.0; };
+        tc.alpha_warp = compliance(fabric_.stretch_warp_n_m);
+        tc.alpha_weft = compliance(fabric_.stretch_weft_n_m);
+        tc.alpha_shear = compliance(fabric_.shear_n_m);
+        tc.area = area;
+        for (std::uint32_t v : tri) {
+            mass_[v] += fabric_.density_g_m2 * 1e-9 * area / 3;
+        }
+    }
+    w_.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const bool pinned = !model_.pinned.empty() && model_.pinned[i];
+        // A vertex in no triangle has no mass: it stays put like a pinned one.
+        w_[i] = (pinned || mass_[i] <= 0) ? 0.0 : 1.0 / mass_[i];
+    }
+
+    // Edges: one-ring neighbours, and bending across each edge shared by exactly two triangles.
+    struct HalfEdge {
+        std::uint64_t key;
+        std::uint32_t t, opposite;
+        bool operator<(const HalfEdge& o) const { return key < o.key || (key == o.key && t < o.t); }
+    };
+    std::vector<HalfEdge> half;
+    half.reserve(3 * nt);
+    for (std::size_t t = 0; t < nt; ++t) {
+        for (int c = 0; c < 3; ++c) {
+            std::uint64_t a = model_.triangles[t][c], b = model_.triangles[t][(c + 1) % 3];
+            if (a > b) {
+                std::swap(a, b);
+            }
+            half.push_back(
+                {(a << 32) | b, static_cast<std::uint32_t>(t), model_.triangles[t][(c + 2) % 3]});
+        }
+    }
+    std::sort(half.begin(), half.end());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (std::size_t e = 0; e < half.size();) {
+        std::size_t f = e;
+        while (f < half.size() && half[f].key == half[e].key) {
+            ++f;
+        }
+        const auto a = static_cast<std::uint32_t>(half[e].key >> 32);
+        const auto b = static_cast<std::uint32_t>(half[e].key & 0xffffffffu);
+        edges.emplace_back(a, b);
+        edges.emplace_back(b, a);
+        if (f - e == 2 && fabric_.bending_un_m > 0) {
+            const double area_e = tris_[half[e].t].area + tris_[half[e + 1].t].area;
+            // Rest length of the edge from the rest shape of the first triangle.
+            const Tri& tri = model_.triangles[half[e].t];
+            int ca = 0, cb = 0;
+            for (int c = 0; c < 3; ++c) {
+                if (tri[c] == a) {
+                    ca = c;
+                }
+                if (tri[c] == b) {
+                    cb = c;
+                }
+            }
+            const UV& ua = model_.rest_uv[half[e].t][ca];
+            const UV& ub = model_.rest_uv[half[e].t][cb];
+            const double len2 =
+                (ua[0] - ub[0]) * (ua[0] - ub[0]) + (ua[1] - ub[1]) * (ua[1] - ub[1]);
+            bends_.push_back({{half[e].opposite, half[e + 1].opposite, a, b},
+                              area_e / (fabric_.bending_un_m * len2)});
+        }
+        e = f;
+    }
+    std::sort(edges.begin(), edges.end());
+    for (const auto& [a, b] : edges) {
+        if (a < b) {
+            edge_list_.emplace_back(a, b);
+        }
+    }
+    neighbour_start_.assign(n + 1, 0);
+    for (const auto& [a, b] : edges) {
+        ++neighbour_start_[a + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        neighbour_start_[i + 1] += neighbour_start_[i];
+    }
+    neighbours_.resize(edges.size());
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        neighbours_[k] = edges[k].second;  // sorted by (a, b): CSR rows come out sorted
+    }
+    double edge_sum = 0;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+        edge_sum += norm(sub(model_.positions[edges[k].first], model_.positions[edges[k].second]));
+    }
+    const double mean_edge = edges.empty() ? 1.0 : edge_sum / edges.size();
+    hash_cell_ = std::max({mean_edge, 2 * fabric_.thickness_mm, 1e-6});
+
+    tri_colours_ = colour(tris_.size(), 3, n, [&](std::size_t c, int k) { return tris_[c].v[k]; });
+    bend_colours_ =
+        colour(bends_.size(), 4, n, [&](std::size_t c, int k) { return bends_[c].v[k]; });
+    lambda_tri_.assign(3 * tris_.size(), 0.0);
+    lambda_bend_.assign(bends_.size(), 0.0);
+    in_contact_.assign(n, 0);
+    start_distance_.assign(n, 0.0);
+    end_distance_.assign(n, 0.0);
+    end_normal_.assign(n, Vec3{0, 0, 0});
+    arena_ = std::make_unique<tbb::task_arena>(
+        options_.threads > 0 ? options_.threads : static_cast<int>(tbb::task_arena::automatic));
+    reset();
+}
+
+template <typename VertexOf>
+inline DrapeSolver::Colouring DrapeSolver::colour(std::size_t count, int arity,
+                                                  std::size_t vertex_count, VertexOf vertex_of) {
+    // Greedy, in index order: deterministic. Colours beyond 63 (a vertex of huge valence) go to
+    // the last group, which is processed serially.
+    std::vector<std::uint64_t> used(vertex_count, 0);
+    Colouring colours;
+    std::vector<std::uint32_t> serial;
+    for (std::size_t c = 0; c < count; ++c) {
+        std::uint64_t taken = 0;
+        for (int k = 0; k < arity; ++k) {
+            taken |= used[vertex_of(c, k)];
+        }
+        if (~taken == 0) {
+            serial.push_back(static_cast<std::uint32_t>(c));
+            continue;
+        }
+        int bit = 0;
+        while (taken & (std::uint64_t{1} << bit)) {
+            ++bit;
+        }
+        for (int k = 0; k < arity; ++k) {
+            used[vertex_of(c, k)] |= std::uint64_t{1} << bit;
+        }
+        if (colours.size() <= static_cast<std::size_t>(bit)) {
+            colours.resize(bit + 1);
+        }
+        colours[bit].push_back(static_cast<std::uint32_t>(c));
+    }
+    if (!serial.empty()) {
+        colours.push_back(std::move(serial));
+        colours.emplace_back();  // marker: the group before an empty one is serial
+    }
+    return colours;
+}
+
+template <typename F>
+inline void DrapeSolver::for_each_coloured(const Colouring& colours, F&& f) {
+    for (std::size_t c = 0; c < colours.size(); ++c) {
+        const auto& ids = colours[c];
+        const bool serial = c + 1 < colours.size() && colours[c + 1].empty();
+        if (serial || ids.size() < 512) {
+            for (std::uint32_t id : ids) {
+                f(id);
+            }
+        } else {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size(), 256),
+                              [&](const tbb::blocked_range<std::size_t>& r) {
+                                  for (std::size_t k = r.begin(); k != r.end(); ++k) {
+                                      f(ids[k]);
+                                  }
+                              });
+        }
+    }
+}
+
+inline void DrapeSolver::set_attachments(std::vector<Attachment> attachments) {
+    for (std::size_t a = 0; a < attachments.size(); ++a) {
+        const Attachment& at = attachments[a];
+        const std::string name = "DrapeSolver: attachment " + std::to_string(a);
+        if (at.vertex >= x_.size()) {
+            throw InvalidInput(name + ": vertex " + std::to_string(at.vertex) + " out of range (" +
+                               std::to_string(x_.size()) + " vertices)");
+        }
+        if (!internal::finite3(at.target)) {
+            throw InvalidInput(name + ": target is not finite");
+        }
+        if (!(std::isfinite(at.compliance) && at.compliance >= 0)) {
+            throw InvalidInput(name + ": compliance must be finite and >= 0");
+        }
+    }
+    attachments_ = std::move(attachments);
+    attachment_alpha_.resize(attachments_.size());
+    for (std::size_t a = 0; a < attachments_.size(); ++a) {
+        attachment_alpha_[a] = attachments_[a].compliance * 1e-3;
+    }
+    lambda_attachment_.assign(attachments_.size(), 0.0);
+}
+
+inline void DrapeSolver::set_stitches(std::vector<Stitch> stitches) {
+    for (std::size_t s = 0; s < stitches.size(); ++s) {
+        const Stitch& st = stitches[s];
+        const std::string name = "DrapeSolver: stitch " + std::to_string(s);
+        if (st.a >= x_.size() || st.b >= x_.size()) {
+            throw InvalidInput(name + ": vertex " + std::to_string(std::max(st.a, st.b)) +
+                               " out of range (" + std::to_string(x_.size()) + " vertices)");
+        }
+        if (st.a == st.b) {
+            throw InvalidInput(name + " joins vertex " + std::to_string(st.a) + " to itself");
+        }
+        if (!(std::isfinite(st.rest_mm) && st.rest_mm >= 0)) {
+            throw InvalidInput(name + ": rest_mm must be finite and >= 0");
+        }
+        if (!(std::isfinite(st.compliance) && st.compliance >= 0)) {
+            throw InvalidInput(name + ": compliance must be finite and >= 0");
+        }
+    }
+    stitches_ = std::move(stitches);
+    stitch_alpha_.resize(stitches_.size());
+    for (std::size_t s = 0; s < stitches_.size(); ++s) {
+        stitch_alpha_[s] = stitches_[s].compliance * 1e-3;
+    }
+    stitch_colours_ = colour(stitches_.size(), 2, x_.size(), [&](std::size_t c, int k) {
+        return k == 0 ? stitches_[c].a : stitches_[c].b;
+    });
+    lambda_stitch_.assign(stitches_.size(), 0.0);
+    stitch_pairs_.clear();
+    for (const Stitch& st : stitches_) {
+        stitch_pairs_.emplace_back(st.a, st.b);
+        stitch_pairs_.emplace_back(st.b, st.a);
+    }
+    std::sort(stitch_pairs_.begin(), stitch_pairs_.end());
+}
+
+inline void DrapeSolver::reset() {
+    x_ = model_.positions;
+    p_ = x_;
+    v_.assign(x_.size(), Vec3{0, 0, 0});
+    if (collider_) {
+        // Vertices the contact pass skips (pinned, massless) keep these; the others are
+        // refreshed by every contact pass.
+        for (std::size_t i = 0; i < x_.size(); ++i) {
+            end_distance_[i] = collider_->signed_distance(x_[i], &end_normal_[i]);
+        }
+    }
+    frame_ = 0;
+    failed_ = false;
+}
+
+inline void DrapeSolver::fail(std::size_t frame_number, const std::string& what) {
+    failed_ = true;
+    throw SolverFailure("frame " + std::to_string(frame_number) + ": " + what);
+}
+
+inline StepReport DrapeSolver::step() {
+    using namespace tapeline::vec3;
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t frame_number = frame_ + 1;
+    if (failed_) {
+        throw SolverFailure("frame " + std::to_string(frame_number) +
+                            ": the solver failed earlier; call reset()");
+    }
+    const std::size_t n = x_.size();
+    const std::vector<Vec3> x_start = x_;
+    double ke_start = 0, gravity_work = 0, total_mass = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (w_[i] > 0) {
+            ke_start += 0.5 * mass_[i] * dot(v_[i], v_[i]);
+            total_mass += mass_[i];
+        }
+    }
+    const double h = options_.frame_seconds / options_.substeps;
+    arena_->execute([&] {
+        for (int s = 0; s < options_.substeps; ++s) {
+            substep(h, frame_number);
+        }
+    });
+    StepReport report;
+    double ke = 0;
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec3 move = sub(x_[i], x_start[i]);
+        const double len = norm(move);
+        report.max_move_mm = std::max(report.max_move_mm, len);
+        moving += len > 0.3 ? 1 : 0;
+        if (w_[i] > 0) {
+            ke += 0.5 * mass_[i] * dot(v_[i], v_[i]);
+            gravity_work += mass_[i] * dot(options_.gravity, move);
+        }
+        report.contacts += in_contact_[i];
+    }
+    // Energy floor: the whole cloth moving at 1 m/s, so that starting from rest is no blow-up.
+    const double floor = 0.5 * total_mass * 1e6;
+    if (ke > options_.max_energy_growth * (ke_start + std::max(gravity_work, 0.0) + floor)) {
+        fail(frame_number, "kinetic energy " + std::to_string(ke * 1e-6) + " J grew more than " +
+                               std::to_string(options_.max_energy_growth) +
+                               " times over the frame (blow-up; smaller frame_seconds or more "
+                               "substeps)");
+    }
+    frame_ = frame_number;
+    report.frame = frame_;
+    report.simulated_seconds = frame_ * options_.frame_seconds;
+    report.moving_fraction = static_cast<double>(moving) / static_cast<double>(n);
+    report.kinetic_energy_j = ke * 1e-6;
+    report.self_contacts = self_contacts_.size();
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+inline void DrapeSolver::substep(double h, std::size_t frame_number) {
+    using namespace tapeline::vec3;
+    const std::size_t n = x_.size();
+    const double keep = std::exp(-options_.damping_per_second * h);
+    const Vec3 dv = scale(options_.gravity, h);
+    auto parallel_vertices = [&](auto&& f) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 512),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                                  f(i);
+                              }
+                          });
+    };
+    parallel_vertices([&](std::size_t i) {
+        if (w_[i] > 0) {
+            v_[i] = add(scale(v_[i], keep), dv);
+            p_[i] = add(x_[i], scale(v_[i], h));
+        } else {
+            v_[i] = {0, 0, 0};
+            p_[i] = x_[i];
+        }
+        in_contact_[i] = 0;
+    });
+    if (collider_) {
+        parallel_vertices([&](std::size_t i) { sweep_body(i); });
+    }
+    if (options_.self_collision) {
+        detect_self_contacts();
+    } else {
+        self_contacts_.clear();
+    }
+    std::fill(lambda_tri_.begin(), lambda_tri_.end(), 0.0);
+    std::fill(lambda_bend_.begin(), lambda_bend_.end(), 0.0);
+    std::fill(lambda_stitch_.begin(), lambda_stitch_.end(), 0.0);
+    std::fill(lambda_attachment_.begin(), lambda_attachment_.end(), 0.0);
+    for (int it = 0; it < options_.iterations; ++it) {
+        for_each_coloured(tri_colours_, [&](std::uint32_t t) { project_triangle(t, h); });
+        for_each_coloured(bend_colours_, [&](std::uint32_t e) { project_bend(e, h); });
+        for_each_coloured(stitch_colours_, [&](std::uint32_t s) { project_stitch(s, h); });
+        for (std::size_t a = 0; a < attachments_.size(); ++a) {
+            project_attachment(a, h);
+        }
+        solve_self_contacts();
+        if (collider_) {
+            // Last in the pass: no vertex ends the sub-step inside the body.
+            // Edges first, vertices last: an edge push may move an end into the body, the vertex
+            // pass (with its swept check) then has the last word.
+            contact_edges();
+            parallel_vertices([&](std::size_t i) {
+                if (contact_body(i)) {
+                    in_contact_[i] = 1;
+                }
+            });
+        }
+    }
+    // Velocities from positions; the first offending vertex (lowest index) is reported.
+    std::atomic<std::size_t> bad{n};
+    const double inv_h = 1 / h;
+    const double max_speed2 = options_.max_speed_mm_s * options_.max_speed_mm_s;
+    parallel_vertices([&](std::size_t i) {
+        const Vec3 v = scale(sub(p_[i], x_[i]), inv_h);
+        const double s2 = dot(v, v);
+        if (!(s2 <= max_speed2)) {  // NaN too
+            std::size_t cur = bad.load();
+            while (i < cur && !bad.compare_exchange_weak(cur, i)) {
+            }
+        }
+        v_[i] = v;
+        x_[i] = p_[i];
+    });
+    if (bad.load() < n) {
+        const std::size_t i = bad.load();
+        if (!internal::finite3(x_[i]) || !internal::finite3(v_[i])) {
+            fail(frame_number, "vertex " + std::to_string(i) + " position is not finite");
+        }
+        fail(frame_number, "vertex " + std::to_string(i) + " speed " + std::to_string(norm(v_[i])) +
+                               " mm/s exceeds max_speed_mm_s " +
+                               std::to_string(options_.max_speed_mm_s));
+    }
+}
+
+inline void DrapeSolver::sweep_body(std::size_t i) {
+    start_distance_[i] = w_[i] > 0 ? collider_->signed_distance(x_[i], nullptr) : 0.0;
+    first_hit(i);
+}
+
+// Moves p_[i] back to the last point clear of the body on the segment from the sub-step's start
+// x_[i]; returns whether it did. Sphere tracing: the distance is 1-Lipschitz (the grid's bound
+// outside its band is a lower bound, which keeps that true), so a step of d never crosses the
+// surface.
+inline bool DrapeSolver::first_hit(std::size_t i) {
+    using namespace tapeline::vec3;
+    const double d0 = start_distance_[i];
+    if (w_[i] <= 0 || d0 < 0) {
+        return false;  // pinned, or starts inside (the contact pass pushes it out)
+    }
+    const Vec3 move = sub(p_[i], x_[i]);
+    const double length = norm(move);
+    if (length < d0) {
+        return false;  // cannot reach the surface
+    }
+    const Vec3 dir = scale(move, 1 / length);
+    const double min_step = std::max(0.05, 0.1 * fabric_.thickness_mm);
+    double t = std::max(d0, min_step), safe = 0;
+    for (int k = 0; k < 64; ++k) {
+        if (t >= length) {
+            t = length;
+        }
+        const double d = collider_->signed_distance(add(x_[i], scale(dir, t)), nullptr);
+        if (d < 0) {
+            p_[i] = add(x_[i], scale(dir, safe));
+            return true;
+        }
+        safe = t;
+        if (t >= length) {
+            return false;
+        }
+        t += std::max(d, min_step);
+    }
+    p_[i] = add(x_[i], scale(dir, safe));  // undecided: keep the part known to be clear
+    return true;
+}
+
+inline bool DrapeSolver::contact_body(std::size_t i) {
+    using namespace tapeline::vec3;
+    if (w_[i] <= 0) {
+        return false;
+    }
+    // The constraints may have dragged the vertex through a thin limb since the sweep: stop it
+    // where it entered, then push it out to the thickness.
+    first_hit(i);
+    Vec3 n;
+    const double d = collider_->signed_distance(p_[i], &n);
+    const double depth = fabric_.thickness_mm - d;
+    end_normal_[i] = n;
+    end_distance_[i] = d;
+    if (!(depth > 0)) {
+        return false;
+    }
+    // After the push and the friction below, thickness − slide bounds the distance from below
+    // (1-Lipschitz).
+    p_[i] = add(p_[i], scale(n, depth));
+    // Coulomb friction on the sub-step's tangential motion: static while it is within μ times
+    // the normal correction, kinetic (reduced by that much) beyond.
+    const Vec3 dx = sub(p_[i], x_[i]);
+    const Vec3 tangential = sub(dx, scale(n, dot(dx, n)));
+    const double slide = norm(tangential);
+    const double limit = fabric_.friction * depth;
+    if (slide <= limit) {
+        p_[i] = sub(p_[i], tangential);
+        end_distance_[i] = fabric_.thickness_mm - slide;
+    } else {
+        p_[i] = sub(p_[i], scale(tangential, limit / slide));
+        end_distance_[i] = fabric_.thickness_mm - limit;
+    }
+    return true;
+}
+
+// Edge–body contact: vertices alone let an edge cut through a thin limb or a sharp rim with both
+// ends outside. Only edges that could (the balls of radius d − thickness around the two ends do
+// not cover the edge) and that bend around the body (the end normals differ by more than 25°)
+// are sampled at seven points; the deepest sample is pushed out to the thickness, the two ends
+// moving as a lever (PBD point-on-edge constraint). Sampled, not exact: an edge can still clip
+// a rim sharper than the grid resolves (tests/garment/test_sewing.cpp sees 6 such edges).
+inline void DrapeSolver::contact_edges() {
+    using namespace tapeline::vec3;
+    const double th = fabric_.thickness_mm;
+    const std::size_t block = 4096;
+    const std::size_t blocks = (edge_list_.size() + block - 1) / block;
+    edge_blocks_.resize(blocks);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t bl) {
+        auto& out = edge_blocks_[bl];
+        out.clear();
+        const std::size_t end = std::min(edge_list_.size(), (bl + 1) * block);
+        for (std::size_t e = bl * block; e < end; ++e) {
+            const auto [a, b] = edge_list_[e];
+            if (w_[a] + w_[b] == 0) {
+                continue;
+            }
+            const double len = norm(sub(p_[a], p_[b]));
+            if (end_distance_[a] + end_distance_[b] - 2 * th >= len ||
+                dot(end_normal_[a], end_normal_[b]) > 0.9) {
+                continue;
+            }
+            double best = th, best_t = -1;
+            for (double t : {0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875}) {
+                const double d =
+                    collider_->signed_distance(add(scale(p_[a], 1 - t), scale(p_[b], t)), nullptr);
+                if (d < best) {
+                    best = d;
+                    best_t = t;
+                }
+            }
+            if (best_t >= 0) {
+                out.push_back({a, b, best_t});
+            }
+        }
+    });
+    for (const auto& bl : edge_blocks_) {
+        for (const EdgeContact& c : bl) {
+            const double t = c.t;
+            Vec3 n;
+            const double d =
+                collider_->signed_distance(add(scale(p_[c.a], 1 - t), scale(p_[c.b], t)), &n);
+            const double depth = th - d;
+            const double denom = w_[c.a] * (1 - t) * (1 - t) + w_[c.b] * t * t;
+            if (!(depth > 0) || !(denom > 0)) {
+                continue;
+            }
+            const double dl = depth / denom;
+            p_[c.a] = add(p_[c.a], scale(n, w_[c.a] * (1 - t) * dl));
+            p_[c.b] = add(p_[c.b], scale(n, w_[c.b] * t * dl));
+        }
+    }
+}
+
+inline void DrapeSolver::project_triangle(std::size_t t, double h) {
+    using namespace tapeline::vec3;
+    const TriangleConstraint& c = tris_[t];
+    const double inv_h2 = 1 / (h * h);
+    Vec3& p0 = p_[c.v[0]];
+    Vec3& p1 = p_[c.v[1]];
+    Vec3& p2 = p_[c.v[2]];
+    Vec3* p[3] = {&p0, &p1, &p2};
+    const double w[3] = {w_[c.v[0]], w_[c.v[1]], w_[c.v[2]]};
+    if (w[0] + w[1] + w[2] == 0) {
+        return;
+    }
+    auto column = [&](const double* coef) {
+        Vec3 f{0, 0, 0};
+        for (int k = 0; k < 3; ++k) {
+            f = add(f, scale(*p[k], coef[k]));
+        }
+        return f;
+    };
+    auto apply = [&](double C, const Vec3* grad, double alpha, double& lambda) {
+        double denom = alpha * inv_h2;
+        for (int k = 0; k < 3; ++k) {
+            denom += w[k] * dot(grad[k], grad[k]);
+        }
+        if (!(denom > 0)) {
+            return;
+        }
+        const double dl = (-C - alpha * inv_h2 * lambda) / denom;
+        lambda += dl;
+        for (int k = 0; k < 3; ++k) {
+            *p[k] = add(*p[k], scale(grad[k], w[k] * dl));
+        }
+    };
+    // Warp and weft: C = |F·e| − 1.
+    const double* coefs[2] = {c.c1, c.c2};
+    const double alphas[2] = {c.alpha_warp, c.alpha_weft};
+    for (int dir = 0; dir < 2; ++dir) {
+        if (alphas[dir] < 0) {
+            continue;
+        }
+        const Vec3 f = column(coefs[dir]);
+        const double len = norm(f);
+        if (len < 1e-12) {
+            continue;
+        }
+        const Vec3 u = scale(f, 1 / len);
+        const Vec3 grad[3] = {scale(u, coefs[dir][0]), scale(u, coefs[dir][1]),
+                              scale(u, coefs[dir][2])};
+        apply(len - 1, grad, alphas[dir], lambda_tri_[3 * t + dir]);
+    }
+    // Shear: C = cos of the angle between the deformed warp and weft (≈ the shear angle).
+    if (c.alpha_shear >= 0) {
+        const Vec3 f1 = column(c.c1), f2 = column(c.c2);
+        const double l1 = norm(f1), l2 = norm(f2);
+        if (l1 > 1e-12 && l2 > 1e-12) {
+            const Vec3 u1 = scale(f1, 1 / l1), u2 = scale(f2, 1 / l2);
+            const double C = dot(u1, u2);
+            const Vec3 d1 = scale(sub(u2, scale(u1, C)), 1 / l1);
+            const Vec3 d2 = scale(sub(u1, scale(u2, C)), 1 / l2);
+            Vec3 grad[3];
+            for (int k = 0; k < 3; ++k) {
+                grad[k] = add(scale(d1, c.c1[k]), scale(d2, c.c2[k]));
+            }
+            apply(C, grad, c.alpha_shear, lambda_tri_[3 * t + 2]);
+        }
+    }
+}
+
+inline void DrapeSolver::project_bend(std::size_t e, double h) {
+    using namespace tapeline::vec3;
+    const BendConstraint& c = bends_[e];
+    Vec3& x1 = p_[c.v[0]];
+    Vec3& x2 = p_[c.v[1]];
+    Vec3& x3 = p_[c.v[2]];
+    Vec3& x4 = p_[c.v[3]];
+    const double w[4] = {w_[c.v[0]], w_[c.v[1]], w_[c.v[2]], w_[c.v[3]]};
+    if (w[0] + w[1] + w[2] + w[3] == 0) {
+        return;
+    }
+    const Vec3 edge = sub(x4, x3);
+    const double el = norm(edge);
+    const Vec3 n1 = cross(sub(x1, x3), sub(x1, x4)), n2 = cross(sub(x2, x4), sub(x2, x3));
+    const double n1l2 = dot(n1, n1), n2l2 = dot(n2, n2);
+    if (el < 1e-12 || n1l2 < 1e-24 || n2l2 < 1e-24) {
+        return;
+    }
+    const Vec3 ee = scale(edge, 1 / el);
+    // Dihedral angle, zero when flat; gradients of Bridson et al. 2003.
+    const Vec3 m1 = scale(n1, 1 / std::sqrt(n1l2)), m2 = scale(n2, 1 / std::sqrt(n2l2));
+    const double theta = std::atan2(dot(cross(m2, m1), ee), dot(m1, m2));
+    const Vec3 a1 = scale(n1, 1 / n1l2), a2 = scale(n2, 1 / n2l2);
+    Vec3 g[4];
+    g[0] = scale(a1, el);
+    g[1] = scale(a2, el);
+    g[2] = add(scale(a1, dot(sub(x1, x4), ee)), scale(a2, dot(sub(x2, x4), ee)));
+    g[3] = scale(add(scale(a1, dot(sub(x1, x3), ee)), scale(a2, dot(sub(x2, x3), ee))), -1);
+    double denom = c.alpha / (h * h);
+    for (int k = 0; k < 4; ++k) {
+        denom += w[k] * dot(g[k], g[k]);
+    }
+    if (!(denom > 0)) {
+        return;
+    }
+    const double dl = (-theta - c.alpha / (h * h) * lambda_bend_[e]) / denom;
+    lambda_bend_[e] += dl;
+    Vec3* x[4] = {&x1, &x2, &x3, &x4};
+    for (int k = 0; k < 4; ++k) {
+        *x[k] = add(*x[k], scale(g[k], w[k] * dl));
+    }
+}
+
+inline void DrapeSolver::project_stitch(std::size_t s, double h) {
+    using namespace tapeline::vec3;
+    const Stitch& st = stitches_[s];
+    const double wa = w_[st.a], wb = w_[st.b];
+    const Vec3 d = sub(p_[st.a], p_[st.b]);
+    const double len = norm(d);
+    if (wa + wb == 0 || len < 1e-12) {
+        return;
+    }
+    const Vec3 u = scale(d, 1 / len);
+    const double alpha = stitch_alpha_[s] / (h * h);
+    const double dl = (-(len - st.rest_mm) - alpha * lambda_stitch_[s]) / (wa + wb + alpha);
+    lambda_stitch_[s] += dl;
+    p_[st.a] = add(p_[st.a], scale(u, wa * dl));
+    p_[st.b] = sub(p_[st.b], scale(u, wb * dl));
+}
+
+inline void DrapeSolver::project_attachment(std::size_t a, double h) {
+    using namespace tapeline::vec3;
+    const Attachment& at = attachments_[a];
+    const double w = w_[at.vertex];
+    const Vec3 d = sub(p_[at.vertex], at.target);
+    const double len = norm(d);
+    if (w == 0 || len < 1e-12) {
+        return;
+    }
+    const double alpha = attachment_alpha_[a] / (h * h);
+    const double dl = (-len - alpha * lambda_attachment_[a]) / (w + alpha);
+    lambda_attachment_[a] += dl;
+    p_[at.vertex] = add(p_[at.vertex], scale(d, w * dl / len));
+}
+
+inline void DrapeSolver::detect_self_contacts() {
+    using namespace tapeline::vec3;
+    const std::size_t n = x_.size();
+    // Spatial hash of the predicted vertex positions (Teschner et al. 2003), counting-sorted so
+    // that each bucket lists its vertices in index order.
+    std::size_t buckets = 1;
+    while (buckets < 2 * n) {
+        buckets <<= 1;
+    }
+    const double inv_cell = 1 / hash_cell_;
+    auto cell_of = [&](const Vec3& p) {
+        return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p[0] * inv_cell)),
+                                           static_cast<std::int64_t>(std::floor(p[1] * inv_cell)),
+                                           static_cast<std::int64_t>(std::floor(p[2] * inv_cell))};
+    };
+    auto bucket_of = [&](const std::array<std::int64_t, 3>& c) {
+        const std::uint64_t hsh = static_cast<std::uint64_t>(c[0]) * 73856093u ^
+                                  static_cast<std::uint64_t>(c[1]) * 19349663u ^
+                                  static_cast<std::uint64_t>(c[2]) * 83492791u;
+        return static_cast<std::size_t>(hsh & (buckets - 1));
+    };
+    std::vector<std::uint32_t> bucket(n);
+    vertex_cell_.resize(n);
+    hash_start_.assign(buckets + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        vertex_cell_[i] = cell_of(p_[i]);
+        bucket[i] = static_cast<std::uint32_t>(bucket_of(vertex_cell_[i]));
+        ++hash_start_[bucket[i] + 1];
+    }
+    for (std::size_t b = 0; b < buckets; ++b) {
+        hash_start_[b + 1] += hash_start_[b];
+    }
+    hash_vertices_.resize(n);
+    {
+        std::vector<std::uint32_t> fill(hash_start_.begin(), hash_start_.end() - 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            hash_vertices_[fill[bucket[i]]++] = static_cast<std::uint32_t>(i);
+        }
+    }
+    const double thickness = fabric_.thickness_mm;
+    const std::size_t block = 1024;
+    const std::size_t blocks = (tris_.size() + block - 1) / block;
+    self_blocks_.resize(blocks);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t bl) {
+        std::vector<SelfContact>& out = self_blocks_[bl];
+        out.clear();
+        const std::size_t end = std::min(tris_.size(), (bl + 1) * block);
+        for (std::size_t t = bl * block; t < end; ++t) {
+            const std::uint32_t* tv = tris_[t].v;
+            const Vec3& a = p_[tv[0]];
+            const Vec3& b = p_[tv[1]];
+            const Vec3& c = p_[tv[2]];
+            Vec3 lo, hi;
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min({a[k], b[k], c[k]}) - thickness;
+                hi[k] = std::max({a[k], b[k], c[k]}) + thickness;
+            }
+            const auto clo = cell_of(lo), chi = cell_of(hi);
+            if ((chi[0] - clo[0] + 1) * (chi[1] - clo[1] + 1) * (chi[2] - clo[2] + 1) > 64) {
+                continue;  // a wildly stretched triangle: leave it to the stretch constraints
+            }
+            const bool triangle_moves = w_[tv[0]] + w_[tv[1]] + w_[tv[2]] > 0;
+            Vec3 nn{0, 0, 0}, normal_start{0, 0, 0};  // computed at the first candidate
+            bool normals = false;
+            for (std::int64_t i = clo[0]; i <= chi[0]; ++i) {
+                for (std::int64_t j = clo[1]; j <= chi[1]; ++j) {
+                    for (std::int64_t k = clo[2]; k <= chi[2]; ++k) {
+                        const std::array<std::int64_t, 3> cell{i, j, k};
+                        const std::size_t bk = bucket_of(cell);
+                        for (std::uint32_t q = hash_start_[bk]; q < hash_start_[bk + 1]; ++q) {
+                            const std::uint32_t v = hash_vertices_[q];
+                            const Vec3& pv = p_[v];
+                            if (pv[0] < lo[0] || pv[1] < lo[1] || pv[2] < lo[2] || pv[0] > hi[0] ||
+                                pv[1] > hi[1] || pv[2] > hi[2] || vertex_cell_[v] != cell) {
+                                continue;  // outside the box, or met through a hash collision
+                            }
+                            if (v == tv[0] || v == tv[1] || v == tv[2] ||
+                                (!triangle_moves && w_[v] == 0)) {
+                                continue;
+                            }
+                            if (!normals) {
+                                normals = true;
+                                const Vec3 normal_now = cross(sub(b, a), sub(c, a));
+                                const double normal_len = norm(normal_now);
+                                if (normal_len > 1e-12) {
+                                    nn = scale(normal_now, 1 / normal_len);
+                                }
+                                normal_start =
+                                    cross(sub(x_[tv[1]], x_[tv[0]]), sub(x_[tv[2]], x_[tv[0]]));
+                            }
+                            if (nn == Vec3{0, 0, 0} || std::abs(dot(sub(pv, a), nn)) >= thickness) {
+                                continue;  // degenerate triangle, or off its plane's slab
+                            }
+                            // A neighbour of a corner, or a corner's stitch partner, touches the
+                            // triangle by construction: that is not a collision.
+                            bool adjacent = false;
+                            for (int m = 0; m < 3 && !adjacent; ++m) {
+                                adjacent =
+                                    std::binary_search(
+                                        neighbours_.begin() + neighbour_start_[v],
+                                        neighbours_.begin() + neighbour_start_[v + 1], tv[m]) ||
+                                    (!stitch_pairs_.empty() &&
+                                     std::binary_search(stitch_pairs_.begin(), stitch_pairs_.end(),
+                                                        std::make_pair(v, tv[m])));
+                            }
+                            if (adjacent) {
+                                continue;
+                            }
+                            const auto bary = internal::closest_barycentric(pv, a, b, c);
+                            const Vec3 q3 =
+                                add(add(scale(a, bary[0]), scale(b, bary[1])), scale(c, bary[2]));
+                            const Vec3 delta = sub(pv, q3);
+                            if (dot(delta, delta) >= thickness * thickness) {
+                                continue;
+                            }
+                            // The side the vertex was on at the start of the sub-step.
+                            const Vec3 q0 =
+                                add(add(scale(x_[tv[0]], bary[0]), scale(x_[tv[1]], bary[1])),
+                                    scale(x_[tv[2]], bary[2]));
+                            double side = dot(sub(x_[v], q0), normal_start);
+                            if (side == 0) {
+                                side = dot(delta, nn);
+                            }
+                            out.push_back({v,
+                                           static_cast<std::uint32_t>(t),
+                                           {bary[0], bary[1], bary[2]},
+                                           side < 0 ? scale(nn, -1) : nn});
+                        }
+                    }
+                }
+            }
+        }
+    });
+    self_contacts_.clear();
+    for (const auto& b : self_blocks_) {
+        self_contacts_.insert(self_contacts_.end(), b.begin(), b.end());
+    }
+}
+
+inline void DrapeSolver::solve_self_contacts() {
+    using namespace tapeline::vec3;
+    const double thickness = fabric_.thickness_mm;
+    for (const SelfContact& sc : self_contacts_) {
+        const std::uint32_t* tv = tris_[sc.t].v;
+        const Vec3 q = add(add(scale(p_[tv[0]], sc.b[0]), scale(p_[tv[1]], sc.b[1])),
+                           scale(p_[tv[2]], sc.b[2]));
+        const double C = dot(sub(p_[sc.v], q), sc.n) - thickness;
+        if (C >= 0) {
+            continue;
+        }
+        double denom = w_[sc.v];
+        for (int k = 0; k < 3; ++k) {
+            denom += w_[tv[k]] * sc.b[k] * sc.b[k];
+        }
+        if (!(denom > 0)) {
+            continue;
+        }
+        const double dl = -C / denom;
+        p_[sc.v] = add(p_[sc.v], scale(sc.n, w_[sc.v] * dl));
+        for (int k = 0; k < 3; ++k) {
+            p_[tv[k]] = sub(p_[tv[k]], scale(sc.n, w_[tv[k]] * sc.b[k] * dl));
+        }
+    }
+}
+
+}  // namespace tapeline::garment

@@ -1,0 +1,103 @@
+// Options, inputs and reports of the cloth solver (drape_solver.h), without CGAL or Eigen, so that
+// loggers, the command-line tool and test facades can include them cheaply (DESIGN.md §3, §5).
+//
+// Units: positions in millimetres, time in seconds, mass from the fabric's areal density; the
+// solver works in whatever frame the caller gives it (the garment module uses the body's canonical
+// frame: y up, z to the front).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tapeline::garment {
+
+using Vec3 = std::array<double, 3>;
+using Tri = std::array<std::uint32_t, 3>;
+using UV = std::array<double, 2>;
+
+/// Mechanical parameters of a fabric, as the solver uses them (SI units per metre of width; the
+/// fabric catalogue maps lab measurements to these).
+struct FabricParams {
+    std::string name = "cotton_jersey";  ///< catalogue name or file
+    double density_g_m2 = 180;           ///< areal density, g/m²
+    /// Tensile stiffness along the warp (grain) and the weft: force per unit width per unit
+    /// strain, N/m.
+    ///@{
+    double stretch_warp_n_m = 2000, stretch_weft_n_m = 1000;
+    ///@}
+    double shear_n_m = 300;     ///< in-plane shear stiffness, N/m
+    double bending_un_m = 10;   ///< bending rigidity, µN·m (= 1e-6 N·m²/m)
+    double friction = 0.3;      ///< Coulomb friction coefficient against the body
+    double thickness_mm = 1.0;  ///< collision thickness (cloth–body and cloth–cloth)
+};
+
+/// How the solver steps (XPBD with small sub-steps).
+struct DrapeOptions {
+    double frame_seconds = 1.0 / 30;  ///< one step() advances this much simulated time
+    int substeps = 10;                ///< sub-steps per frame
+    int iterations = 1;               ///< constraint passes per sub-step
+    Vec3 gravity{0, -9810, 0};        ///< mm/s²
+    double damping_per_second = 0.5;  ///< velocity damping rate (fraction lost per second)
+    bool self_collision = true;       ///< cloth–cloth proximity constraints
+    int threads = 0;                  ///< 0: all cores (TBB default)
+    /// A step fails (SolverFailure naming the frame) when a position is not finite, a speed
+    /// exceeds this (mm/s), or kinetic energy grows this many times over a frame while no
+    /// external work explains it.
+    double max_speed_mm_s = 2.0e5;
+    /// Kinetic energy may grow at most this many times over a frame beyond what gravity's work
+    /// and a floor (the whole cloth moving at 1 m/s) explain.
+    double max_energy_growth = 100;
+};
+
+/// How the body's signed-distance grid (collider.h) is built.
+struct ColliderOptions {
+    double cell_mm = 5;  ///< grid spacing, mm
+    /// Half-width of the stored band around the surface, mm (0: four cells). Inside it the
+    /// distance is interpolated from the grid; outside it see `exact_outside_band`.
+    double band_mm = 0;
+    int threads = 0;  ///< build threads, 0: all cores (TBB default)
+    /// Outside the band: false returns a cheap bound (right sign, magnitude between the band and
+    /// the true distance); true queries the triangles exactly (slower, about a microsecond).
+    bool exact_outside_band = false;
+};
+
+/// A vertex pulled to a point (moving targets are set again between steps).
+struct Attachment {
+    std::uint32_t vertex = 0;
+    Vec3 target{0, 0, 0};
+    double compliance = 0;  ///< XPBD compliance (inverse stiffness), mm/N; 0: hard
+};
+
+/// Two vertices held at `rest_mm` apart (stitches: the rest length shrinks to zero).
+struct Stitch {
+    std::uint32_t a = 0, b = 0;
+    double rest_mm = 0;
+    double compliance = 0;  ///< XPBD compliance, mm/N; 0: hard
+};
+
+/// The cloth as the solver sees it: vertices, triangles, and per triangle its rest shape (the 2D
+/// pattern triangle, mm) with the warp direction in those coordinates.
+struct ClothModel {
+    std::vector<Vec3> positions;             ///< initial positions, mm
+    std::vector<Tri> triangles;              ///< vertex indices
+    std::vector<std::array<UV, 3>> rest_uv;  ///< per triangle corner: pattern coords, mm
+    std::vector<UV> grain;                   ///< per triangle: unit warp direction in uv
+    std::vector<std::uint8_t> pinned;        ///< per vertex (empty: none); pinned stay put
+};
+
+/// What one step() did.
+struct StepReport {
+    std::size_t frame = 0;          ///< frames done so far
+    double simulated_seconds = 0;   ///< simulated time so far
+    double max_move_mm = 0;         ///< largest vertex displacement over this frame
+    double moving_fraction = 0;     ///< fraction of vertices that moved more than 0.3 mm
+    double kinetic_energy_j = 0;    ///< at the end of the frame
+    std::size_t contacts = 0;       ///< cloth vertices in contact with the collider
+    std::size_t self_contacts = 0;  ///< cloth–cloth proximity pairs handled
+    double seconds = 0;             ///< wall time of the step
+};
+
+}  // namespace tapeline::garment

@@ -1,0 +1,391 @@
+// DrapeSolver against analytic truth (free fall, catenary), contact with analytic solids (sphere,
+// thin cylinder at a large step), stitches and attachments, determinism across thread counts,
+// blow-up detection and the refusals of bad input.
+#include <tapeline/garment/collider.h>
+#include <tapeline/garment/drape_solver.h>
+
+#include <gtest/gtest.h>
+#include <tapeline_test/garment_shapes.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+using tapeline::garment::Attachment;
+using tapeline::garment::ClothModel;
+using tapeline::garment::ColliderOptions;
+using tapeline::garment::DrapeOptions;
+using tapeline::garment::DrapeSolver;
+using tapeline::garment::FabricParams;
+using tapeline::garment::SignedDistanceGrid;
+using tapeline::garment::StepReport;
+using tapeline::garment::Stitch;
+using tapeline::garment::Vec3;
+using tapeline_test::cloth_grid;
+using tapeline_test::grid_vertex;
+
+template <typename F>
+std::string message_of(F&& f) {
+    try {
+        f();
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "(no exception)";
+}
+
+double distance(const Vec3& a, const Vec3& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                     (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// A horizontal square cloth (in the x–z plane) centred on (cx, y, cz).
+ClothModel horizontal_square(int cells, double cell, double cx, double y, double cz) {
+    const double half = cells * cell / 2;
+    return cloth_grid(cells, cells, cell, {cx - half, y, cz - half}, {1, 0, 0}, {0, 0, 1});
+}
+
+// Appends cloth b to cloth a (two separate pieces in one model).
+ClothModel join(ClothModel a, const ClothModel& b) {
+    const auto offset = static_cast<std::uint32_t>(a.positions.size());
+    a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+    for (auto t : b.triangles) {
+        a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+    a.rest_uv.insert(a.rest_uv.end(), b.rest_uv.begin(), b.rest_uv.end());
+    a.grain.insert(a.grain.end(), b.grain.begin(), b.grain.end());
+    return a;
+}
+
+// Free fall under symplectic Euler sub-steps: after N sub-steps of h from rest the drop is
+// g·h²·N(N+1)/2 = g·t²/2 + g·t·h/2 exactly (the O(h) term is the scheme's known bias). The cloth
+// is unstrained, so its constraints move nothing beyond rounding (1e-9 mm).
+TEST(GarmentDrapeSolver, FreeFallMatchesTheDiscreteParabola) {
+    DrapeOptions options;
+    options.damping_per_second = 0;
+    options.self_collision = false;
+    DrapeSolver solver(horizontal_square(10, 10, 0, 0, 0), FabricParams{}, options);
+    const double g = 9810, h = options.frame_seconds / options.substeps;
+    StepReport report;
+    for (int f = 0; f < 15; ++f) {
+        report = solver.step();
+    }
+    const double n = 15.0 * options.substeps, t = 15 * options.frame_seconds;
+    const double expected = g * h * h * n * (n + 1) / 2;
+    EXPECT_NEAR(expected - g * t * t / 2, g * t * h / 2, 1e-9);
+    for (std::size_t i = 0; i < solver.positions().size(); ++i) {
+        const Vec3& p = solver.positions()[i];
+        const Vec3& p0 = solver.model().positions[i];
+        ASSERT_NEAR(p0[1] - p[1], expected, 1e-9) << "vertex " << i;
+        ASSERT_NEAR(p[0], p0[0], 1e-9);
+        ASSERT_NEAR(p[2], p0[2], 1e-9);
+        ASSERT_NEAR(solver.velocities()[i][1], -g * t, 1e-6);
+    }
+    EXPECT_EQ(report.frame, 15u);
+    EXPECT_NEAR(report.simulated_seconds, t, 1e-12);
+    EXPECT_DOUBLE_EQ(report.moving_fraction, 1.0);
+    EXPECT_EQ(report.contacts, 0u);
+    // Kinetic energy: ½·M·(g·t)², M = area × density.
+    const double mass = 0.1 * 0.1 * 0.180;  // kg
+    EXPECT_NEAR(report.kinetic_energy_j, 0.5 * mass * (g * t * 1e-3) * (g * t * 1e-3), 1e-9);
+}
+
+// Catenary: a narrow, nearly inextensible strip without bending stiffness hung from both ends
+// settles to y = a·cosh(x/a) with L = 2a·sinh(D/2a). The sag is measured on the strip's centre
+// line. XPBD with one pass per sub-step leaves a hanging chain of N elements stretched by about
+// g·h²·N²/2 (each hard constraint acts like a spring of stiffness m/h²): with N = 30 and 60
+// sub-steps per frame that is 0.3 mm, 0.1 % of the length, i.e. about 0.15 % of the sag (the sag
+// moves 1.5 times as much as the length relative to the slack); 1 % leaves room for the strip's
+// 20 mm width.
+TEST(GarmentDrapeSolver, HangingStripSettlesToTheCatenary) {
+    const double length = 300, span = 200, cell = 10;
+    const int nx = 30, ny = 2;
+    ClothModel strip = cloth_grid(nx, ny, cell, {0, 0, -cell}, {1, 0, 0}, {0, 0, 1});
+    // Start as a V of the right length: each half is straight, so every triangle is at rest.
+    const double drop = std::sqrt((length / 2) * (length / 2) - (span / 2) * (span / 2));
+    for (Vec3& p : strip.positions) {
+        const double s = p[0];
+        const double along = s <= length / 2 ? s : length - s;
+        p[0] = s <= length / 2 ? along * span / length : span - along * span / length;
+        p[1] = -along * 2 * drop / length;
+    }
+    strip.pinned.assign(strip.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        strip.pinned[grid_vertex(nx, 0, j)] = 1;
+        strip.pinned[grid_vertex(nx, nx, j)] = 1;
+    }
+    FabricParams fabric;
+    fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 1e5;
+    fabric.bending_un_m = 0;
+    DrapeOptions options;
+    options.self_collision = false;
+    options.damping_per_second = 4;  // the rest shape does not depend on damping
+    options.substeps = 60;
+    DrapeSolver solver(strip, fabric, options);
+    StepReport report;
+    for (int f = 0; f < 240; ++f) {
+        report = solver.step();
+    }
+    EXPECT_LT(report.max_move_mm, 0.01);
+    // a from L = 2a·sinh(D/2a), by bisection (the right side decreases in a).
+    double lo = 1, hi = 1e5;
+    for (int k = 0; k < 200; ++k) {
+        const double a = 0.5 * (lo + hi);
+        (2 * a * std::sinh(span / (2 * a)) > length ? lo : hi) = a;
+    }
+    const double a = 0.5 * (lo + hi);
+    const double sag = a * (std::cosh(span / (2 * a)) - 1);
+    double lowest = 0;
+    for (int i = 0; i <= nx; ++i) {
+        lowest = std::min(lowest, solver.positions()[grid_vertex(nx, i, 1)][1]);
+    }
+    EXPECT_NEAR(-lowest, sag, 0.01 * sag) << "catenary parameter a = " << a;
+    RecordProperty("sag_mm", std::to_string(-lowest));
+    RecordProperty("catenary_sag_mm", std::to_string(sag));
+}
+
+// A square dropped on a sphere: no vertex inside (the contact pass runs last, leaving every
+// vertex at least the thickness (1 mm) from the mesh by the grid's measure; the mesh is inside
+// the sphere by its sagitta ≤ 0.24 mm and the grid errs by ≤ 0.08 mm, so the analytic distance
+// stays above 1 − 0.32 mm; we require ≥ 0.5 mm) and it comes to rest.
+TEST(GarmentDrapeSolver, SquareDroppedOnASphereRestsOutsideIt) {
+    const double radius = 100;
+    const auto sphere = tapeline_test::uv_sphere({0, 0, 0}, radius, 64, 32);
+    const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{5});
+    DrapeSolver solver(horizontal_square(30, 10, 0, radius + 20, 0), FabricParams{}, DrapeOptions{},
+                       &body);
+    StepReport report;
+    int still = 0;
+    for (int f = 0; f < 300 && still < 10; ++f) {
+        report = solver.step();
+        still = report.moving_fraction == 0 ? still + 1 : 0;
+    }
+    EXPECT_EQ(still, 10) << "still moving after " << report.frame << " frames: fraction "
+                         << report.moving_fraction;
+    EXPECT_GT(report.contacts, 50u);
+    double closest = 1e300;
+    for (const Vec3& p : solver.positions()) {
+        closest = std::min(closest, distance(p, {0, 0, 0}) - radius);
+    }
+    EXPECT_GE(closest, 0.5);
+    RecordProperty("frames_to_rest", std::to_string(report.frame));
+}
+
+// A cloth falling 500 mm onto a horizontal cylinder of radius 20 mm, with five times the usual
+// frame step: at impact each sub-step moves it more than the cylinder's diameter, so only the
+// swept test keeps it from tunnelling. Through the impact frame and the next, no vertex may be
+// inside (grid error ≤ 25/8·2/20 ≈ 0.3 mm and sagitta 0.2 mm, against a 1 mm thickness), and at
+// the impact frame the column that fell onto the axis must lie on top of the cylinder. (Later
+// the cloth may slide off sideways: at h = 1/60 s one pass per sub-step makes it very stretchy,
+// see the catenary test; that is not tunnelling.)
+TEST(GarmentDrapeSolver, ThinCylinderAtFiveTimesTheFrameStepIsNotTunnelled) {
+    const double radius = 20, length = 400, height = 500;
+    const auto cylinder = tapeline_test::capped_cylinder({0, 0, 0}, radius, length, 32, 8);
+    const SignedDistanceGrid body(cylinder.points, cylinder.triangles, ColliderOptions{5});
+    DrapeOptions options;
+    options.frame_seconds *= 5;
+    const double h = options.frame_seconds / options.substeps;
+    ASSERT_GT(std::sqrt(2 * 9810 * (height - radius - 1)) * h, 2 * radius);
+    const int nx = 16, nz = 40;
+    const ClothModel cloth = cloth_grid(nx, nz, 5, {-40, height, -100}, {1, 0, 0}, {0, 0, 1});
+    DrapeSolver solver(cloth, FabricParams{}, options, &body);
+    int impact = 0;
+    for (int f = 1; f <= 12 && (impact == 0 || f <= impact + 1); ++f) {
+        const StepReport report = solver.step();
+        if (impact == 0 && report.contacts > 0) {
+            impact = f;
+            for (int j = 0; j <= nz; ++j) {
+                const Vec3& p = solver.positions()[grid_vertex(nx, nx / 2, j)];
+                ASSERT_GT(p[1], radius) << "the centre column went through the cylinder";
+            }
+        }
+        for (std::size_t i = 0; i < solver.positions().size(); ++i) {
+            const Vec3& p = solver.positions()[i];
+            ASSERT_GE(tapeline_test::cylinder_signed_distance({0, 0, 0}, radius, length, p), 0.4)
+                << "vertex " << i << " inside the cylinder after frame " << f;
+        }
+    }
+    EXPECT_EQ(impact, 2);  // 500 mm takes 0.32 s: the second frame
+}
+
+// Same run with 1 and 2 threads: every position bit-identical.
+TEST(GarmentDrapeSolver, BitIdenticalForAnyThreadCount) {
+    const auto sphere = tapeline_test::uv_sphere({0, 0, 0}, 80, 48, 24);
+    const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{5});
+    std::vector<std::vector<Vec3>> results;
+    std::vector<std::size_t> self_contacts;
+    for (int threads : {1, 2}) {
+        DrapeOptions options;
+        options.threads = threads;
+        // 3721 vertices, 7200 triangles: every parallel path runs in several blocks.
+        DrapeSolver solver(horizontal_square(60, 4, 0, 90, 0), FabricParams{}, options, &body);
+        std::size_t most_self = 0;
+        for (int f = 0; f < 12; ++f) {
+            most_self = std::max(most_self, solver.step().self_contacts);
+        }
+        results.push_back(solver.positions());
+        self_contacts.push_back(most_self);
+    }
+    ASSERT_EQ(results[0].size(), results[1].size());
+    for (std::size_t i = 0; i < results[0].size(); ++i) {
+        ASSERT_EQ(results[0][i], results[1][i]) << "vertex " << i;
+    }
+    EXPECT_EQ(self_contacts[0], self_contacts[1]);
+    EXPECT_GT(self_contacts[0], 0u);  // the self-collision path ran too
+}
+
+// reset() brings back the initial state, and the rerun reproduces the first run exactly.
+TEST(GarmentDrapeSolver, ResetReplaysTheSameRun) {
+    DrapeSolver solver(horizontal_square(8, 10, 0, 0, 0), FabricParams{}, DrapeOptions{});
+    for (int f = 0; f < 5; ++f) {
+        solver.step();
+    }
+    const std::vector<Vec3> first = solver.positions();
+    solver.reset();
+    EXPECT_EQ(solver.positions(), solver.model().positions);
+    for (const Vec3& v : solver.velocities()) {
+        EXPECT_EQ(v, (Vec3{0, 0, 0}));
+    }
+    StepReport report;
+    for (int f = 0; f < 5; ++f) {
+        report = solver.step();
+    }
+    EXPECT_EQ(report.frame, 5u);
+    EXPECT_EQ(solver.positions(), first);
+}
+
+TEST(GarmentDrapeSolver, BlowUpThrowsNamingTheFrame) {
+    {  // a speed limit every falling cloth exceeds within the first frame
+        DrapeOptions options;
+        options.max_speed_mm_s = 100;
+        DrapeSolver solver(horizontal_square(4, 10, 0, 0, 0), FabricParams{}, options);
+        EXPECT_THROW(solver.step(), tapeline::SolverFailure);
+        solver.reset();
+        const std::string message = message_of([&] { solver.step(); });
+        EXPECT_EQ(message.rfind("frame 1: ", 0), 0u) << message;
+        EXPECT_NE(message.find("max_speed_mm_s"), std::string::npos) << message;
+        // The state is unusable until reset().
+        EXPECT_NE(message_of([&] { solver.step(); }).find("reset()"), std::string::npos);
+    }
+    {  // hard stitches yanking two squares 5 m apart together within one sub-step
+        ClothModel two =
+            join(horizontal_square(4, 10, 0, 0, 0), horizontal_square(4, 10, 5000, 0, 0));
+        DrapeOptions options;
+        options.substeps = 1;
+        DrapeSolver solver(two, FabricParams{}, options);
+        solver.step();
+        solver.step();
+        solver.set_stitches({Stitch{grid_vertex(4, 4, 2), 25 + grid_vertex(4, 0, 2), 0, 0}});
+        const std::string message = message_of([&] { solver.step(); });
+        EXPECT_EQ(message.rfind("frame 3: ", 0), 0u) << message;
+    }
+}
+
+// Two squares 40 mm apart: a hard attachment holds a corner of the first where it is, a hard
+// stitch of rest 0 joins the facing edge midpoints. Gravity pulls both down; after settling the
+// stitched vertices coincide within 0.1 mm and the attached corner is on its target within
+// 0.1 mm (each sub-step ends with those constraints projected, up to the contact passes after).
+TEST(GarmentDrapeSolver, StitchPullsTwoPiecesTogetherAndAttachmentHolds) {
+    const int cells = 10;
+    const ClothModel a = horizontal_square(cells, 10, 0, 0, 0);
+    const ClothModel b = horizontal_square(cells, 10, 140, 0, 0);
+    const ClothModel two = join(a, b);
+    const auto offset = static_cast<std::uint32_t>(a.positions.size());
+    DrapeOptions options;
+    options.damping_per_second = 3;
+    DrapeSolver solver(two, FabricParams{}, options);
+    const std::uint32_t corner = grid_vertex(cells, 0, 0);
+    const std::uint32_t sa = grid_vertex(cells, cells, cells / 2);
+    const std::uint32_t sb = offset + grid_vertex(cells, 0, cells / 2);
+    ASSERT_NEAR(distance(two.positions[sa], two.positions[sb]), 40, 1e-9);
+    solver.set_attachments({Attachment{corner, two.positions[corner], 0}});
+    solver.set_stitches({Stitch{sa, sb, 0, 0}});
+    for (int f = 0; f < 150; ++f) {
+        solver.step();
+    }
+    EXPECT_LT(distance(solver.positions()[sa], solver.positions()[sb]), 0.1);
+    EXPECT_LT(distance(solver.positions()[corner], two.positions[corner]), 0.1);
+    // It hangs: the far corner of the second square is well below the attachment.
+    EXPECT_LT(solver.positions()[offset + grid_vertex(cells, cells, cells)][1], -100);
+}
+
+TEST(GarmentDrapeSolver, RefusesBadInputNamingTheElement) {
+    const ClothModel good = horizontal_square(4, 10, 0, 0, 0);
+    auto refuse = [&](ClothModel cloth, DrapeOptions options, FabricParams fabric,
+                      const std::string& expected) {
+        const std::string message = message_of([&] { DrapeSolver(cloth, fabric, options); });
+        EXPECT_NE(message.find(expected), std::string::npos)
+            << "expected '" << expected << "' in: " << message;
+        EXPECT_THROW(DrapeSolver(cloth, fabric, options), tapeline::InvalidInput);
+    };
+    {
+        ClothModel c = good;
+        c.rest_uv.pop_back();
+        refuse(c, {}, {}, "rest_uv has 31 entries for 32 triangles");
+    }
+    {
+        ClothModel c = good;
+        c.grain.pop_back();
+        refuse(c, {}, {}, "grain has 31 entries");
+    }
+    {
+        ClothModel c = good;
+        c.triangles[3][1] = 999;
+        refuse(c, {}, {}, "triangle 3 has vertex index 999 out of range");
+    }
+    {
+        ClothModel c = good;
+        c.rest_uv[5][2] = c.rest_uv[5][0];
+        refuse(c, {}, {}, "triangle 5: degenerate rest triangle");
+    }
+    {
+        ClothModel c = good;
+        c.positions[7][2] = std::nan("");
+        refuse(c, {}, {}, "vertex 7 has a non-finite position");
+    }
+    {
+        ClothModel c = good;
+        c.pinned.assign(3, 1);
+        refuse(c, {}, {}, "pinned has 3 entries for 25 vertices");
+    }
+    {
+        ClothModel c = good;
+        c.grain[2] = {0, 0};
+        refuse(c, {}, {}, "triangle 2: grain direction is zero");
+    }
+    {
+        DrapeOptions o;
+        o.substeps = 0;
+        refuse(good, o, {}, "options.substeps must be >= 1, got 0");
+    }
+    {
+        DrapeOptions o;
+        o.frame_seconds = -1;
+        refuse(good, o, {}, "options.frame_seconds");
+    }
+    {
+        FabricParams f;
+        f.stretch_weft_n_m = -3;
+        refuse(good, {}, f, "fabric.stretch_weft_n_m");
+    }
+    refuse(ClothModel{}, {}, {}, "empty cloth");
+
+    DrapeSolver solver(good, FabricParams{}, DrapeOptions{});
+    EXPECT_THROW(solver.set_attachments({Attachment{25, {0, 0, 0}, 0}}), tapeline::InvalidInput);
+    EXPECT_NE(message_of([&] {
+                  solver.set_attachments({Attachment{25, {0, 0, 0}, 0}});
+              }).find("attachment 0: vertex 25 out of range"),
+              std::string::npos);
+    EXPECT_NE(message_of([&] {
+                  solver.set_stitches({Stitch{1, 2, 0, 0}, Stitch{3, 3, 0, 0}});
+              }).find("stitch 1 joins vertex 3 to itself"),
+              std::string::npos);
+    EXPECT_NE(message_of([&] {
+                  solver.set_stitches({Stitch{1, 2, -1, 0}});
+              }).find("rest_mm"),
+              std::string::npos);
+}
+
+}  // namespace
