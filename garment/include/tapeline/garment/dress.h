@@ -1,0 +1,395 @@
+// Dressing a body: place the pieces of a pattern around it (placement.h), sew them along
+// geodesic strings (stitching.h), drape them under gravity with the cloth solver
+// (drape_solver.h) against the body's signed-distance grid (collider.h), weld the seams and
+// measure the result (quality.h).
+//
+// The simulation runs in two phases. Sewing: gravity off, each stitch pair pulled along its string
+// to the string's middle over SewingOptions::sew_seconds (garment tools sew before they drape,
+// so that unsewn pieces do not fall off the body). Drape: a new solver from the sewn state with
+// gravity on and the pairs held by zero-length stitches, for settle_seconds and then until at most
+// 1 % of the vertices still move more than 0.3 mm per frame (or max_extra_seconds more).
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/core/progress.h>
+#include <tapeline/garment/collider.h>
+#include <tapeline/garment/drape_solver.h>
+#include <tapeline/garment/garment_types.h>
+#include <tapeline/garment/placement.h>
+#include <tapeline/garment/quality.h>
+#include <tapeline/garment/stitching.h>
+#include <tapeline/garment/unfold.h>
+#include <tapeline/measurement/body.h>
+#include <tapeline/pattern/meshing.h>
+#include <tapeline/pattern/validate.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace tapeline::garment {
+
+/// The draped garment and how it was made.
+struct DressResult {
+    GarmentMesh garment;          ///< welded, canonical mm of the body
+    std::vector<Vec3> placed;     ///< cloth after placement (unwelded), canonical mm
+    ClothModel cloth;             ///< the unwelded cloth the solver ran on
+    std::vector<Vec3> draped;     ///< cloth after the drape (unwelded)
+    std::vector<double> stretch;  ///< per garment triangle: largest principal stretch
+    SewingPlan sewing;            ///< pairs and strings
+    DressReport report;
+};
+
+namespace internal {
+
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Cloth edges crossing cloth triangles of another piece (placement check).
+inline std::size_t piece_crossings(const std::vector<Vec3>& x, const std::vector<Tri>& tris,
+                                   const std::vector<std::uint32_t>& tri_piece) {
+    GarmentMesh g;
+    g.positions = x;
+    g.triangles = tris;
+    g.uv.assign(tris.size(), {});
+    g.triangle_piece = tri_piece;
+    // Reuse the self-intersection count of quality.h on a body-free mesh: every crossing counts;
+    // pieces are disjoint meshes here, so a crossing is two pieces (or one folded piece) meeting.
+    std::vector<Vec3> no_points;
+    std::vector<Tri> no_tris;
+    (void)no_points;
+    (void)no_tris;
+    using K = CGAL::Simple_cartesian<double>;
+    using P = K::Point_3;
+    using Triangle = K::Triangle_3;
+    std::vector<Triangle> ts;
+    for (const Tri& t : tris) {
+        ts.emplace_back(P(x[t[0]][0], x[t[0]][1], x[t[0]][2]),
+                        P(x[t[1]][0], x[t[1]][1], x[t[1]][2]),
+                        P(x[t[2]][0], x[t[2]][1], x[t[2]][2]));
+    }
+    using Iterator = std::vector<Triangle>::const_iterator;
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Iterator>>>;
+    Tree tree(ts.cbegin(), ts.cend());
+    std::size_t n = 0;
+    std::vector<Tree::Primitive_id> hits;
+    for (std::size_t f = 0; f < tris.size(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = tris[f][k], b = tris[f][(k + 1) % 3];
+            if (a > b) {
+                continue;  // each interior edge once (boundary edges in one direction only)
+            }
+            hits.clear();
+            tree.all_intersected_primitives(
+                K::Segment_3(P(x[a][0], x[a][1], x[a][2]), P(x[b][0], x[b][1], x[b][2])),
+                std::back_inserter(hits));
+            for (const auto& h : hits) {
+                const std::size_t g2 = std::size_t(h - ts.cbegin());
+                if (tri_piece[g2] != tri_piece[f]) {
+                    ++n;
+                }
+            }
+        }
+    }
+    return n;
+}
+
+}  // namespace internal
+
+/// Dresses `body` (canonical mm, closed: make_body fills small holes) whose landmarks are
+/// `landmarks` in `pattern` (graded or not, mm). See the file comment.
+///
+/// \throws InvalidInput naming the pattern or piece: no seams, a piece with no body region (leave
+///         it out with DressOptions::without_pieces), an unknown piece to leave out, a landmark
+///         placement needs that was not found, bad options.
+/// \throws SolverFailure naming the frame when the simulation blows up.
+inline DressResult dress(const measurement::Body& body, const measurement::LandmarkSet& landmarks,
+                         pattern::Pattern pattern, const DressOptions& o) {
+    using Clock = std::chrono::steady_clock;
+    const auto t_start = Clock::now();
+    DressResult out;
+    DressReport& rep = out.report;
+    const std::string where = "dress: pattern '" + pattern.name + "'";
+    if (!(o.resolution_mm >= 2 && o.resolution_mm <= 100)) {
+        throw InvalidInput(where + ": resolution " + std::to_string(o.resolution_mm) +
+                           " mm is outside [2, 100] mm");
+    }
+    // Pieces left out, with their seams.
+    for (const std::string& name : o.without_pieces) {
+        if (!pattern::find_piece(pattern, name)) {
+            throw InvalidInput(where + " has no piece '" + name + "' to leave out");
+        }
+    }
+    const auto left_out = [&](const std::string& n) {
+        return std::find(o.without_pieces.begin(), o.without_pieces.end(), n) !=
+               o.without_pieces.end();
+    };
+    pattern.pieces.erase(std::remove_if(pattern.pieces.begin(), pattern.pieces.end(),
+                                        [&](const pattern::Piece& p) { return left_out(p.name); }),
+                         pattern.pieces.end());
+    pattern.seams.erase(std::remove_if(pattern.seams.begin(), pattern.seams.end(),
+                                       [&](const pattern::Seam& s) {
+                                           return left_out(s.a.piece) || left_out(s.b.piece);
+                                       }),
+                        pattern.seams.end());
+    pattern.bindings.clear();  // they may name pieces left out; dressing does not use them
+    if (pattern.pieces.empty()) {
+        throw InvalidInput(where + " has no pieces left to dress");
+    }
+    if (pattern.seams.empty()) {
+        throw InvalidInput(where +
+                           " has no seams: there is nothing to sew the pieces together "
+                           "with (a pattern without seams cannot be dressed)");
+    }
+    pattern = unfold_pieces(std::move(pattern));
+    std::vector<Region> regions;
+    for (const pattern::Piece& p : pattern.pieces) {
+        std::string why;
+        const auto r = piece_region(p, why);
+        if (!r) {
+            throw InvalidInput(where + ": piece '" + p.name + "' has no body region (" + why +
+                               "); leave it out with --without '" + p.name + "'");
+        }
+        regions.push_back(*r);
+    }
+    // --- mesh, place
+    auto t0 = Clock::now();
+    pattern::MeshingOptions mo;
+    mo.target_edge_mm = o.resolution_mm;
+    const pattern::PatternMesh pm = pattern::mesh_pattern(pattern, mo);
+    const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
+    double gc_top = -1e300, gc_skirt_top = -1e300;
+    for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
+        const auto& p = pattern.pieces[i];
+        if (!p.placement) {
+            continue;
+        }
+        for (const auto& q : pm.pieces[i].uv) {
+            const double y = pattern::placed_point(*p.placement, q)[1];
+            if (regions[i] == Region::torso_front || regions[i] == Region::torso_back) {
+                gc_top = std::max(gc_top, y);
+            } else if (regions[i] == Region::skirt_front || regions[i] == Region::skirt_back) {
+                gc_skirt_top = std::max(gc_skirt_top, y);
+            }
+        }
+    }
+    const double top_y = shape.neck_y + o.placement.gap_mm;
+    const double gc_shift = gc_top > -1e300 ? top_y - gc_top
+                            : gc_skirt_top > -1e300
+                                ? shape.waist_y + o.placement.gap_mm - gc_skirt_top
+                                : 0.0;
+    std::vector<PieceLayout> layouts;
+    for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
+        layouts.push_back(piece_layout(pattern.pieces[i], pm.pieces[i], regions[i], top_y,
+                                       shape.waist_y + o.placement.gap_mm, gc_shift));
+    }
+    std::vector<std::vector<Vec3>> xyz;
+    wrap_pieces(shape, layouts, pm, o.placement, xyz);
+    // --- the cloth
+    ClothModel& cloth = out.cloth;
+    std::vector<std::uint32_t> tri_piece;
+    const auto offsets = piece_offsets(pm);
+    for (std::size_t i = 0; i < pm.pieces.size(); ++i) {
+        const pattern::PieceMesh& m = pm.pieces[i];
+        const pattern::Piece& piece = pattern.pieces[i];
+        UV grain{0, 1};
+        if (piece.grain) {
+            const double gx = piece.grain->to.x - piece.grain->from.x;
+            const double gy = piece.grain->to.y - piece.grain->from.y;
+            const double gl = std::hypot(gx, gy);
+            if (gl > 1e-9) {
+                grain = {gx / gl, gy / gl};
+            }
+        }
+        for (std::size_t v = 0; v < m.uv.size(); ++v) {
+            cloth.positions.push_back(xyz[i][v]);
+        }
+        for (const auto& t : m.triangles) {
+            cloth.triangles.push_back({offsets[i] + t[0], offsets[i] + t[1], offsets[i] + t[2]});
+            cloth.rest_uv.push_back({UV{m.uv[t[0]].x, m.uv[t[0]].y}, UV{m.uv[t[1]].x, m.uv[t[1]].y},
+                                     UV{m.uv[t[2]].x, m.uv[t[2]].y}});
+            cloth.grain.push_back(grain);
+            tri_piece.push_back(std::uint32_t(i));
+        }
+        rep.pieces.push_back({piece.name, to_string(regions[i]), m.uv.size(), m.triangles.size()});
+    }
+    out.placed = cloth.positions;
+    rep.cloth_vertices = cloth.positions.size();
+    rep.cloth_triangles = cloth.triangles.size();
+    rep.placement_seconds = internal::seconds_since(t0);
+    // --- the body's signed distance
+    t0 = Clock::now();
+    ColliderOptions co;
+    co.cell_mm = o.sdf_cell_mm;
+    const SignedDistanceGrid sdf(body.points(), body.triangles(), co);
+    rep.sdf_seconds = internal::seconds_since(t0);
+    // The wrap keeps its distance from the trunk and the arms' axes, not from every bump of the
+    // skin: a vertex that still ends up closer than half the gap (or inside: a bust, a shoulder
+    // blade, a hand near the hip) is moved out along the distance gradient to half the gap.
+    for (Vec3& x : cloth.positions) {
+        Vec3 grad{0, 0, 0};
+        const double d = sdf.signed_distance(x, &grad);
+        if (d < 0.5 * o.placement.gap_mm) {
+            x = vec3::add(x, vec3::scale(grad, 0.5 * o.placement.gap_mm - d));
+        }
+    }
+    out.placed = cloth.positions;
+    for (std::size_t i = 0; i < pm.pieces.size(); ++i) {
+        std::size_t inside = 0;
+        for (std::uint32_t v = offsets[i]; v < offsets[i + 1]; ++v) {
+            inside += sdf.signed_distance(cloth.positions[v], nullptr) < 0 ? 1 : 0;
+        }
+        rep.placement_vertices_inside += inside;
+        rep.pieces[i].placed_inside = inside;
+    }
+    rep.placement_piece_intersections =
+        internal::piece_crossings(cloth.positions, cloth.triangles, tri_piece);
+    // --- strings
+    t0 = Clock::now();
+    out.sewing = sewing_pairs(pm);
+    SewingPlan& plan = out.sewing;
+    std::vector<std::uint8_t> cloth_limb(cloth.positions.size(), 0);
+    for (std::size_t i = 0; i < pm.pieces.size(); ++i) {
+        if (regions[i] == Region::sleeve_left || regions[i] == Region::sleeve_right) {
+            std::fill(cloth_limb.begin() + offsets[i], cloth_limb.begin() + offsets[i + 1], 1);
+        }
+    }
+    compute_strings(plan, cloth.positions, body.points(), body.triangles(), sdf,
+                    o.sewing.string_offset_mm, shape.is_arm, cloth_limb);
+    rep.strings_seconds = internal::seconds_since(t0);
+    for (std::size_t s = 0; s < pattern.seams.size(); ++s) {
+        const pattern::Seam& seam = pattern.seams[s];
+        SeamReport sr;
+        sr.name = seam.name;
+        sr.side_a_mm = pattern::length(*pattern::find_piece(pattern, seam.a.piece), seam.a);
+        sr.side_b_mm = pattern::length(*pattern::find_piece(pattern, seam.b.piece), seam.b);
+        double sum = 0;
+        for (std::size_t k = 0; k < plan.pairs.size(); ++k) {
+            if (plan.seam_of_pair[k] == s) {
+                ++sr.pairs;
+                sum += plan.strings[k].length();
+            }
+        }
+        sr.string_mm = sr.pairs ? sum / double(sr.pairs) : 0;
+        const double longer = std::max(sr.side_a_mm, sr.side_b_mm);
+        if (longer > 0 &&
+            std::abs(sr.side_a_mm - sr.side_b_mm) > o.sewing.length_mismatch * longer) {
+            sr.closable = false;
+            sr.problem = "its sides differ by " +
+                         std::to_string(int(std::lround(std::abs(sr.side_a_mm - sr.side_b_mm)))) +
+                         " mm (" + std::to_string(int(std::lround(sr.side_a_mm))) + " against " +
+                         std::to_string(int(std::lround(sr.side_b_mm))) + " mm)";
+        }
+        rep.seams.push_back(sr);
+    }
+    // --- sewing phase (no gravity), then drape
+    t0 = Clock::now();
+    const double frame = o.drape.frame_seconds;
+    DrapeOptions sew_options = o.drape;
+    sew_options.gravity = {0, 0, 0};
+    StepReport last;
+    std::size_t frames = 0;
+    {
+        DrapeSolver sew(cloth, o.fabric, sew_options, &sdf);
+        const std::size_t n = std::size_t(std::ceil(o.sewing.sew_seconds / frame));
+        Progress progress("dress: sewing", n);
+        for (std::size_t f = 0; f < n; ++f) {
+            const double sigma = double(f + 1) / double(n);
+            sew.set_attachments(sewing_targets(plan, sigma, o.sewing.compliance));
+            last = sew.step();
+            ++frames;
+            progress.note("t " + std::to_string(last.simulated_seconds).substr(0, 5) +
+                          " s, moving " + std::to_string(int(100 * last.moving_fraction)) + " %");
+            progress.advance();
+        }
+        cloth.positions = sew.positions();
+    }
+    double simulated = frames * frame;
+    {
+        DrapeSolver drape(cloth, o.fabric, o.drape, &sdf);
+        std::vector<Stitch> stitches = plan.pairs;
+        for (Stitch& s : stitches) {
+            s.rest_mm = 0;
+            s.compliance = 0;
+        }
+        drape.set_stitches(stitches);
+        const std::size_t n_settle = std::size_t(std::ceil(o.sewing.settle_seconds / frame));
+        const std::size_t n_max =
+            n_settle + std::size_t(std::ceil(o.sewing.max_extra_seconds / frame));
+        Progress progress("dress: draping", n_settle);
+        for (std::size_t f = 0; f < n_max; ++f) {
+            last = drape.step();
+            ++frames;
+            progress.note("t " + std::to_string(last.simulated_seconds).substr(0, 5) +
+                          " s, moving " + std::to_string(int(100 * last.moving_fraction)) + " %");
+            progress.advance();
+            if (f + 1 >= n_settle && last.moving_fraction <= 0.01) {
+                break;
+            }
+        }
+        simulated += double(drape.positions().empty() ? 0 : last.frame) * frame;
+        out.draped = drape.positions();
+    }
+    rep.drape_seconds = internal::seconds_since(t0);
+    rep.frames = frames;
+    rep.simulated_seconds = simulated;
+    rep.ms_per_step_per_10k = rep.drape_seconds * 1000.0 /
+                              double(std::max<std::size_t>(frames, 1)) * 10000.0 /
+                              double(std::max<std::size_t>(cloth.positions.size(), 1));
+    // --- seam gaps, welding
+    double gap_max = 0;
+    for (std::size_t k = 0; k < plan.pairs.size(); ++k) {
+        const double g =
+            vec3::norm(vec3::sub(out.draped[plan.pairs[k].a], out.draped[plan.pairs[k].b]));
+        SeamReport& sr = rep.seams[plan.seam_of_pair[k]];
+        sr.gap_mean_mm += g / double(std::max<std::size_t>(sr.pairs, 1));
+        sr.gap_max_mm = std::max(sr.gap_max_mm, g);
+        gap_max = std::max(gap_max, g);
+    }
+    // Placement only (no sewing, no drape): the pieces as placed, not welded, so that they can be
+    // looked at.
+    const bool placement_only = o.sewing.sew_seconds == 0 && o.sewing.settle_seconds == 0 &&
+                                o.sewing.max_extra_seconds == 0;
+    const Welding w =
+        weld_pairs(out.draped.size(), placement_only ? std::vector<Stitch>{} : plan.pairs);
+    GarmentMesh& g = out.garment;
+    g.positions.assign(w.count, {0, 0, 0});
+    std::vector<int> count(w.count, 0);
+    for (std::size_t v = 0; v < out.draped.size(); ++v) {
+        g.positions[w.weld_map[v]] = vec3::add(g.positions[w.weld_map[v]], out.draped[v]);
+        ++count[w.weld_map[v]];
+    }
+    for (std::size_t v = 0; v < w.count; ++v) {
+        g.positions[v] = vec3::scale(g.positions[v], 1.0 / count[v]);
+    }
+    for (std::size_t f = 0; f < cloth.triangles.size(); ++f) {
+        const Tri& t = cloth.triangles[f];
+        g.triangles.push_back({w.weld_map[t[0]], w.weld_map[t[1]], w.weld_map[t[2]]});
+    }
+    g.uv = cloth.rest_uv;
+    g.triangle_piece = tri_piece;
+    for (const auto& p : pattern.pieces) {
+        g.piece_names.push_back(p.name);
+    }
+    rep.garment_vertices = w.count;
+    rep.boundary_loops = boundary_loops(w.count, g.triangles);
+    // --- quality
+    t0 = Clock::now();
+    rep.quality =
+        garment_quality(body.points(), body.triangles(), g, last.moving_fraction, gap_max);
+    out.stretch = triangle_stretch(g.positions, g.triangles, g.uv);
+    rep.gates = quality_gates(rep.quality);
+    rep.passed =
+        std::all_of(rep.gates.begin(), rep.gates.end(), [](const Gate& x) { return x.passed; });
+    rep.quality_seconds = internal::seconds_since(t0);
+    rep.threads = o.drape.threads;
+    rep.total_seconds = internal::seconds_since(t_start);
+    return out;
+}
+
+}  // namespace tapeline::garment

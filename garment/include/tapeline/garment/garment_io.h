@@ -1,0 +1,166 @@
+// Files of a dressed body: the garment as Wavefront OBJ (seams welded, one group per piece,
+// per-corner UVs = pattern coordinates in mm) and as PLY with per-vertex stretch, and the report
+// as JSON. Positions are written through a caller-given map so that the garment lands in the
+// body's own coordinates and unit and loads together with the body in any viewer.
+#pragma once
+
+#include <tapeline/core/atomic_write.h>
+#include <tapeline/garment/garment_types.h>
+#include <tapeline/garment/quality.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace tapeline::garment {
+
+/// Maps a garment position (canonical mm) to the coordinates written.
+using PositionMap = std::function<Vec3(const Vec3&)>;
+
+/// OBJ: `v` per welded vertex, `vt` per triangle corner (pattern mm), `g` per piece, `f v/vt`.
+inline void write_garment_obj(std::ostream& out, const GarmentMesh& g, const PositionMap& map) {
+    char buf[160];
+    out << "# Tapeline draped garment: v in the body's coordinates, vt = pattern coordinates "
+           "(mm)\n";
+    for (const Vec3& p : g.positions) {
+        const Vec3 q = map(p);
+        std::snprintf(buf, sizeof buf, "v %.9g %.9g %.9g\n", q[0], q[1], q[2]);
+        out << buf;
+    }
+    for (const auto& corners : g.uv) {
+        for (const UV& t : corners) {
+            std::snprintf(buf, sizeof buf, "vt %.9g %.9g\n", t[0], t[1]);
+            out << buf;
+        }
+    }
+    std::uint32_t current = std::uint32_t(-1);
+    for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+        if (g.triangle_piece[f] != current) {
+            current = g.triangle_piece[f];
+            std::string name = current < g.piece_names.size() ? g.piece_names[current] : "piece";
+            for (char& c : name) {
+                c = (c == ' ' || c == '\t' || c == '\n' || c == '\r') ? '_' : c;
+            }
+            out << "g " << name << '\n';
+        }
+        const Tri& t = g.triangles[f];
+        out << "f";
+        for (int k = 0; k < 3; ++k) {
+            out << ' ' << t[k] + 1 << '/' << 3 * f + k + 1;
+        }
+        out << '\n';
+    }
+}
+
+/// ASCII PLY: x y z (body coordinates) and `stretch` per vertex (the largest principal stretch of
+/// its triangles); faces with their `piece` index.
+inline void write_garment_ply(std::ostream& out, const GarmentMesh& g,
+                              const std::vector<double>& triangle_stretch, const PositionMap& map) {
+    std::vector<double> vs(g.positions.size(), 0.0);
+    for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+        for (std::uint32_t v : g.triangles[f]) {
+            vs[v] = std::max(vs[v], triangle_stretch[f]);
+        }
+    }
+    out << "ply\nformat ascii 1.0\ncomment Tapeline draped garment; stretch = largest principal "
+           "stretch of the vertex's triangles against the pattern\n";
+    for (std::size_t i = 0; i < g.piece_names.size(); ++i) {
+        out << "comment piece " << i << ' ' << g.piece_names[i] << '\n';
+    }
+    out << "element vertex " << g.positions.size()
+        << "\nproperty double x\nproperty double y\nproperty double z\nproperty double stretch\n"
+           "element face "
+        << g.triangles.size() << "\nproperty list uchar int vertex_indices\nproperty int piece\n"
+        << "end_header\n";
+    char buf[160];
+    for (std::size_t v = 0; v < g.positions.size(); ++v) {
+        const Vec3 q = map(g.positions[v]);
+        std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g %.6g\n", q[0], q[1], q[2], vs[v]);
+        out << buf;
+    }
+    for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+        const Tri& t = g.triangles[f];
+        out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << g.triangle_piece[f] << '\n';
+    }
+}
+
+/// The report as JSON (mm, seconds).
+inline nlohmann::ordered_json dress_report_json(const DressReport& r, const FabricParams& fabric,
+                                                const DressOptions& o) {
+    nlohmann::ordered_json j;
+    j["passed"] = r.passed;
+    nlohmann::ordered_json gates = nlohmann::ordered_json::array();
+    for (const Gate& g : r.gates) {
+        gates.push_back(
+            {{"name", g.name}, {"value", g.value}, {"limit", g.limit}, {"passed", g.passed}});
+    }
+    j["gates"] = gates;
+    const QualityFigures& q = r.quality;
+    j["quality"] = {{"stitch_gap_max_mm", q.stitch_gap_max_mm},
+                    {"vertices_inside_body", q.vertices_inside_body},
+                    {"max_depth_mm", q.max_depth_mm},
+                    {"edges_crossing_body", q.edges_crossing_body},
+                    {"self_intersections", q.self_intersections},
+                    {"stretch_median", q.stretch_median},
+                    {"stretch_p95", q.stretch_p95},
+                    {"stretch_max", q.stretch_max},
+                    {"stretch_above_105_percent", q.stretch_above_105_percent},
+                    {"moving_fraction", q.moving_fraction}};
+    nlohmann::ordered_json seams = nlohmann::ordered_json::array();
+    for (const SeamReport& s : r.seams) {
+        seams.push_back({{"name", s.name},
+                         {"pairs", s.pairs},
+                         {"side_a_mm", s.side_a_mm},
+                         {"side_b_mm", s.side_b_mm},
+                         {"string_mm", s.string_mm},
+                         {"gap_mean_mm", s.gap_mean_mm},
+                         {"gap_max_mm", s.gap_max_mm},
+                         {"closable", s.closable},
+                         {"problem", s.problem}});
+    }
+    j["seams"] = seams;
+    nlohmann::ordered_json pieces = nlohmann::ordered_json::array();
+    for (const PieceReport& p : r.pieces) {
+        pieces.push_back({{"name", p.name},
+                          {"region", p.region},
+                          {"vertices", p.vertices},
+                          {"triangles", p.triangles},
+                          {"placed_inside", p.placed_inside}});
+    }
+    j["pieces"] = pieces;
+    j["placement"] = {{"vertices_inside_body", r.placement_vertices_inside},
+                      {"piece_crossings", r.placement_piece_intersections}};
+    j["mesh"] = {{"cloth_vertices", r.cloth_vertices},
+                 {"cloth_triangles", r.cloth_triangles},
+                 {"garment_vertices", r.garment_vertices},
+                 {"boundary_loops", r.boundary_loops}};
+    j["simulation"] = {{"frames", r.frames},
+                       {"simulated_seconds", r.simulated_seconds},
+                       {"ms_per_step_per_10k_vertices", r.ms_per_step_per_10k},
+                       {"threads", r.threads}};
+    j["timings_seconds"] = {{"measure", r.measure_seconds},     {"sdf", r.sdf_seconds},
+                            {"placement", r.placement_seconds}, {"strings", r.strings_seconds},
+                            {"drape", r.drape_seconds},         {"quality", r.quality_seconds},
+                            {"total", r.total_seconds}};
+    j["options"] = {
+        {"resolution_mm", o.resolution_mm},       {"gap_mm", o.placement.gap_mm},
+        {"sew_seconds", o.sewing.sew_seconds},    {"settle_seconds", o.sewing.settle_seconds},
+        {"frame_seconds", o.drape.frame_seconds}, {"substeps", o.drape.substeps},
+        {"iterations", o.drape.iterations},       {"self_collision", o.drape.self_collision},
+        {"sdf_cell_mm", o.sdf_cell_mm},           {"without", o.without_pieces}};
+    j["fabric"] = {{"name", fabric.name},
+                   {"density_g_m2", fabric.density_g_m2},
+                   {"stretch_warp_n_m", fabric.stretch_warp_n_m},
+                   {"stretch_weft_n_m", fabric.stretch_weft_n_m},
+                   {"shear_n_m", fabric.shear_n_m},
+                   {"bending_un_m", fabric.bending_un_m},
+                   {"friction", fabric.friction},
+                   {"thickness_mm", fabric.thickness_mm}};
+    return j;
+}
+
+}  // namespace tapeline::garment

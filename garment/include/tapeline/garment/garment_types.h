@@ -1,0 +1,129 @@
+// Options and reports of dressing a body (dress.h): placement of the pieces, sewing along geodesic
+// strings, the drape and the quality gates. No CGAL or Eigen here (DESIGN.md §3, §5).
+//
+// Lengths are millimetres in the body's canonical frame (x to the body's left, y up from the
+// floor, z to the front); the outputs are converted back to the body's own coordinates and unit.
+#pragma once
+
+#include <tapeline/garment/drape_types.h>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace tapeline::garment {
+
+/// The part of the body a piece is wrapped around before sewing.
+enum class Region { torso_front, torso_back, sleeve_left, sleeve_right, skirt_front, skirt_back };
+
+inline const char* to_string(Region r) {
+    switch (r) {
+        case Region::torso_front:
+            return "torso_front";
+        case Region::torso_back:
+            return "torso_back";
+        case Region::sleeve_left:
+            return "sleeve_left";
+        case Region::sleeve_right:
+            return "sleeve_right";
+        case Region::skirt_front:
+            return "skirt_front";
+        case Region::skirt_back:
+            return "skirt_back";
+    }
+    return "?";
+}
+
+/// How pieces are wrapped around the body.
+struct PlacementOptions {
+    double gap_mm = 15;       ///< clearance between the body and the wrapped pieces
+    double slice_mm = 10;     ///< height step of the torso cross-sections
+    double layer_gap_mm = 6;  ///< extra radial offset between overlapping pieces
+};
+
+/// How seams are sewn: strings along the body, pulled shut over `sew_seconds`.
+struct SewingOptions {
+    double sew_seconds = 0.6;      ///< the strings shrink to zero over this simulated time
+    double settle_seconds = 1.4;   ///< simulated time after the seams are closed
+    double max_extra_seconds = 2;  ///< more settling while the cloth still moves
+    double string_offset_mm = 8;   ///< strings run this far outside the skin
+    double compliance = 1e-4;      ///< XPBD compliance of the sewing pull, mm/N
+    /// Seams whose two sides differ by more than this fraction of the longer are reported as not
+    /// closable (they are still sewn; the report names them).
+    double length_mismatch = 0.15;
+};
+
+/// Everything dress() needs besides the body and the pattern.
+struct DressOptions {
+    double resolution_mm = 10;  ///< target cloth edge length
+    PlacementOptions placement;
+    SewingOptions sewing;
+    DrapeOptions drape;
+    FabricParams fabric;
+    std::vector<std::string> without_pieces;  ///< pieces left out (with their seams), by name
+    double sdf_cell_mm = 5;                   ///< cell of the body's signed-distance grid
+};
+
+/// Sewing quality of one seam at the end of the drape.
+struct SeamReport {
+    std::string name;
+    std::size_t pairs = 0;
+    double side_a_mm = 0, side_b_mm = 0;  ///< lengths of the two sides in the pattern
+    double string_mm = 0;                 ///< mean length of its strings before sewing
+    double gap_mean_mm = 0, gap_max_mm = 0;
+    bool closable = true;
+    std::string problem;  ///< why it is not closable (empty when it is)
+};
+
+/// Where each piece went.
+struct PieceReport {
+    std::string name;
+    std::string region;
+    std::size_t vertices = 0, triangles = 0;
+    std::size_t placed_inside = 0;  ///< its vertices inside the body after placement
+};
+
+/// One quality gate: a measured value against its limit.
+struct Gate {
+    std::string name;
+    double value = 0, limit = 0;
+    bool passed = false;
+};
+
+/// Quality figures of a draped garment (quality.h).
+struct QualityFigures {
+    std::size_t vertices_inside_body = 0;
+    double max_depth_mm = 0;              ///< deepest cloth vertex inside the body
+    std::size_t edges_crossing_body = 0;  ///< cloth edges crossing body triangles
+    std::size_t self_intersections = 0;   ///< cloth edges crossing cloth triangles
+    double stretch_median = 1, stretch_p95 = 1, stretch_max = 1;
+    double stretch_above_105_percent = 0;  ///< % of triangles with a stretch above 1.05
+    double moving_fraction = 0;            ///< vertices that moved > 0.3 mm in the last frame
+    double stitch_gap_max_mm = 0;
+};
+
+/// What dress() did and how good the garment is.
+struct DressReport {
+    std::vector<PieceReport> pieces;
+    std::vector<SeamReport> seams;
+    std::size_t cloth_vertices = 0, cloth_triangles = 0;  ///< before welding
+    std::size_t garment_vertices = 0;                     ///< after welding
+    std::size_t boundary_loops = 0;                       ///< openings of the welded garment
+    std::size_t placement_vertices_inside = 0;            ///< after placement (must be 0)
+    std::size_t placement_piece_intersections = 0;        ///< after placement (must be 0)
+    QualityFigures quality;
+    std::vector<Gate> gates;
+    bool passed = false;
+    std::size_t frames = 0;
+    double simulated_seconds = 0;
+    double ms_per_step_per_10k = 0;  ///< wall ms per frame per 10 000 cloth vertices
+    /// Wall times, seconds.
+    ///@{
+    double measure_seconds = 0, sdf_seconds = 0, placement_seconds = 0, strings_seconds = 0,
+           drape_seconds = 0, quality_seconds = 0, total_seconds = 0;
+    ///@}
+    int threads = 0;
+};
+
+}  // namespace tapeline::garment

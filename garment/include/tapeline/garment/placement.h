@@ -1,0 +1,572 @@
+// Placement of pattern pieces around a body before sewing (the first step of dressing).
+//
+// Each piece gets a body region (torso front/back, left/right sleeve, skirt front/back) from the
+// pattern: GarmentCode panels by their names and by where their own placement puts them (front or
+// back, left or right: the absolute coordinates, meant for GarmentCode's own body, are not
+// trusted); FreeSewing pieces by the design's piece names. The piece is then wrapped, as a tailor
+// holds a piece against a dress form and as CLO's arrangement points do:
+//  - torso and skirt pieces around generalized cylinders whose cross-section at each height is
+//    the convex hull of the body's trunk there (arms removed), offset outwards by a gap, with the
+//    piece's centre line on the body's centre front (back) line and its width laid out in arc
+//    length along the section;
+//  - sleeves around a circular cylinder along the arm's axis (acromion to wrist), the sleeve cap
+//    at the shoulder.
+// Heights come from the body's landmarks: the top of the upper-body pieces at the side-neck
+// height, skirts hang from the waist. Where front and back would overlap, the section is offset
+// further so that its perimeter holds both. The result is checked by the caller (dress.h): no
+// cloth vertex inside the body, no two pieces crossing.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/core/vec3.h>
+#include <tapeline/garment/garment_types.h>
+#include <tapeline/measurement/measurement_types.h>
+#include <tapeline/pattern/io_garmentcode.h>
+#include <tapeline/pattern/meshing_types.h>
+#include <tapeline/pattern/pattern.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tapeline::garment {
+
+/// The landmarks and trunk of a body that placement needs (canonical mm).
+struct BodyShape {
+    std::vector<Vec3> points;  ///< body vertices, canonical mm
+    double height = 0;         ///< stature, mm
+    double neck_y = 0;         ///< side-neck height
+    double waist_y = 0;        ///< waist height
+    double armpit_y = 0;       ///< armpit height
+    double crotch_y = 0;       ///< crotch height
+    /// Per side (0: left, +x; 1: right, −x): arm axis from the shoulder to the wrist centre.
+    std::array<Vec3, 2> shoulder{}, wrist{};
+    std::array<double, 2> armpit_x{};  ///< |x| of the armpits
+    std::vector<std::uint8_t> is_arm;  ///< per body vertex: on an arm (or hand)
+};
+
+namespace internal {
+
+using vec3::add;
+using vec3::cross;
+using vec3::dot;
+using vec3::norm;
+using vec3::normalized;
+using vec3::scale;
+using vec3::sub;
+
+inline Vec3 landmark_point(const measurement::LandmarkSet& lm, const std::string& name,
+                           bool axis = false) {
+    const measurement::Landmark* l = lm.find(name);
+    if (!l || !l->available()) {
+        throw InvalidInput("dress: the body's landmark '" + name +
+                           "' was not found, so the garment cannot be placed (" +
+                           (l ? l->reason : std::string("unknown landmark")) + ")");
+    }
+    return axis ? l->axis_point : l->point;
+}
+
+/// Distance from p to the segment a–b and the segment parameter of its projection (unclamped).
+inline double axis_distance(const Vec3& p, const Vec3& a, const Vec3& b, double* t_out) {
+    const Vec3 d = sub(b, a);
+    const double t = dot(sub(p, a), d) / dot(d, d);
+    if (t_out) {
+        *t_out = t;
+    }
+    return norm(sub(p, add(a, scale(d, std::clamp(t, 0.0, 1.0)))));
+}
+
+/// Convex hull (Andrew's monotone chain) of 2D points, counter-clockwise.
+inline std::vector<std::array<double, 2>> convex_hull(std::vector<std::array<double, 2>> p) {
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3) {
+        return p;
+    }
+    const auto turn = [](const auto& o, const auto& a, const auto& b) {
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    };
+    std::vector<std::array<double, 2>> h(2 * p.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        while (k >= 2 && turn(h[k - 2], h[k - 1], p[i]) <= 0) {
+            --k;
+        }
+        h[k++] = p[i];
+    }
+    for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+        while (k >= t && turn(h[k - 2], h[k - 1], p[i - 1]) <= 0) {
+            --k;
+        }
+        h[k++] = p[i - 1];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+/// A closed convex curve in the (x, z) plane sampled densely, with arc lengths, and the arc
+/// positions of its centre-front and centre-back points.
+struct Section {
+    std::vector<std::array<double, 2>> pts;  ///< counter-clockwise seen from above? see make
+    std::vector<double> arc;                 ///< arc length at each point; arc.back() = perimeter
+    double front_arc = 0, back_arc = 0;
+    /// +1 when increasing arc at the centre front goes towards +x.
+    double dir_front = 1;
+};
+
+/// The hull of `xz` offset by `offset` (Minkowski sum with a disc, sampled), with arc lengths.
+inline Section make_section(const std::vector<std::array<double, 2>>& xz, double offset) {
+    std::vector<std::array<double, 2>> cloud;
+    cloud.reserve(xz.size() * 24);
+    for (const auto& p : xz) {
+        for (int k = 0; k < 24; ++k) {
+            const double a = 2 * M_PI * k / 24;
+            cloud.push_back({p[0] + offset * std::cos(a), p[1] + offset * std::sin(a)});
+        }
+    }
+    Section s;
+    s.pts = convex_hull(std::move(cloud));
+    s.pts.push_back(s.pts.front());
+    s.arc.assign(s.pts.size(), 0.0);
+    for (std::size_t i = 1; i < s.pts.size(); ++i) {
+        s.arc[i] =
+            s.arc[i - 1] + std::hypot(s.pts[i][0] - s.pts[i - 1][0], s.pts[i][1] - s.pts[i - 1][1]);
+    }
+    // Centre front/back: where the curve crosses x = centre of its x range, at max/min z.
+    double xmin = 1e300, xmax = -1e300;
+    for (const auto& p : s.pts) {
+        xmin = std::min(xmin, p[0]);
+        xmax = std::max(xmax, p[0]);
+    }
+    const double xc = 0.0 * (xmin + xmax);  // the body's mid-sagittal plane is x = 0
+    double best_front = -1e300, best_back = 1e300;
+    for (std::size_t i = 0; i + 1 < s.pts.size(); ++i) {
+        const auto& a = s.pts[i];
+        const auto& b = s.pts[i + 1];
+        if ((a[0] - xc) * (b[0] - xc) > 0 || a[0] == b[0]) {
+            if (!(a[0] == xc)) {
+                continue;
+            }
+        }
+        const double t = a[0] == b[0] ? 0.0 : (xc - a[0]) / (b[0] - a[0]);
+        const double z = a[1] + t * (b[1] - a[1]);
+        const double arc = s.arc[i] + t * (s.arc[i + 1] - s.arc[i]);
+        if (z > best_front) {
+            best_front = z;
+            s.front_arc = arc;
+            s.dir_front = b[0] > a[0] ? 1 : -1;
+        }
+        if (z < best_back) {
+            best_back = z;
+            s.back_arc = arc;
+        }
+    }
+    return s;
+}
+
+/// The point at arc position `a` (wrapped onto [0, perimeter)).
+inline std::array<double, 2> section_point(const Section& s, double a) {
+    const double per = s.arc.back();
+    a = std::fmod(a, per);
+    if (a < 0) {
+        a += per;
+    }
+    const auto it = std::upper_bound(s.arc.begin(), s.arc.end(), a);
+    const std::size_t i = std::min<std::size_t>(std::max<std::ptrdiff_t>(it - s.arc.begin(), 1) - 1,
+                                                s.arc.size() - 2);
+    const double len = s.arc[i + 1] - s.arc[i];
+    const double t = len > 0 ? (a - s.arc[i]) / len : 0.0;
+    return {s.pts[i][0] + t * (s.pts[i + 1][0] - s.pts[i][0]),
+            s.pts[i][1] + t * (s.pts[i + 1][1] - s.pts[i][1])};
+}
+
+inline bool contains(const std::string& s, const char* sub) {
+    return s.find(sub) != std::string::npos;
+}
+
+}  // namespace internal
+
+/// The body's trunk, arms and the heights placement needs, from its landmarks (canonical mm).
+/// An arm is the part of the surface joined to its wrist through vertices lying beyond the armpit
+/// sideways (|x| above the armpit's by 0.5 % of the stature) and below the acromion: the mesh's
+/// connectivity, not a distance to an axis, so a hand held away from the hip or a bent elbow
+/// stays an arm and a wide hip stays trunk. InvalidInput naming the landmark when one that
+/// placement needs was not found.
+inline BodyShape body_shape(const std::vector<Vec3>& points, const std::vector<Tri>& triangles,
+                            double height, const measurement::LandmarkSet& lm) {
+    using namespace internal;
+    BodyShape b;
+    b.points = points;
+    b.height = height;
+    b.neck_y =
+        0.5 * (landmark_point(lm, "side_neck_left")[1] + landmark_point(lm, "side_neck_right")[1]);
+    b.waist_y = landmark_point(lm, "waist_front")[1];
+    b.crotch_y = landmark_point(lm, "crotch")[1];
+    const char* side[2] = {"left", "right"};
+    std::array<double, 2> acromion_y{};
+    for (int s = 0; s < 2; ++s) {
+        const Vec3 acromion = landmark_point(lm, std::string("acromion_") + side[s]);
+        const Vec3 armpit = landmark_point(lm, std::string("armpit_") + side[s]);
+        b.wrist[s] = landmark_point(lm, std::string("wrist_") + side[s], true);
+        // The shoulder joint sits about halfway between the acromion and the armpit.
+        b.shoulder[s] = {acromion[0], 0.5 * (acromion[1] + armpit[1]), acromion[2]};
+        b.armpit_x[s] = std::abs(armpit[0]);
+        b.armpit_y += 0.5 * armpit[1];
+        acromion_y[std::size_t(s)] = acromion[1];
+    }
+    const auto side_of = [](const Vec3& p) { return p[0] >= 0 ? 0 : 1; };
+    const auto candidate = [&](const Vec3& p) {
+        const int s = side_of(p);
+        return std::abs(p[0]) > b.armpit_x[std::size_t(s)] + 0.005 * height &&
+               p[1] < acromion_y[std::size_t(s)];
+    };
+    std::vector<std::vector<std::uint32_t>> adj(points.size());
+    for (const Tri& t : triangles) {
+        for (int k = 0; k < 3; ++k) {
+            adj[t[k]].push_back(t[(k + 1) % 3]);
+            adj[t[(k + 1) % 3]].push_back(t[k]);
+        }
+    }
+    b.is_arm.assign(points.size(), 0);
+    for (int s = 0; s < 2; ++s) {
+        // Seed: the candidate vertex nearest to the wrist's axis point.
+        std::uint32_t seed = std::uint32_t(-1);
+        double best = 1e300;
+        for (std::size_t v = 0; v < points.size(); ++v) {
+            if (candidate(points[v]) && side_of(points[v]) == s && !adj[v].empty()) {
+                const double d = norm(sub(points[v], b.wrist[std::size_t(s)]));
+                if (d < best) {
+                    best = d;
+                    seed = std::uint32_t(v);
+                }
+            }
+        }
+        if (seed == std::uint32_t(-1)) {
+            continue;
+        }
+        std::vector<std::uint32_t> stack{seed};
+        b.is_arm[seed] = 1;
+        while (!stack.empty()) {
+            const std::uint32_t v = stack.back();
+            stack.pop_back();
+            for (std::uint32_t w : adj[v]) {
+                if (!b.is_arm[w] && candidate(points[w])) {
+                    b.is_arm[w] = 1;
+                    stack.push_back(w);
+                }
+            }
+        }
+    }
+    return b;
+}
+
+/// A piece's region and its layout coordinates: per vertex `s` (arc position, mm) and `h`
+/// (height for torso and skirt pieces; distance down the arm from the shoulder for sleeves).
+struct PieceLayout {
+    Region region = Region::torso_front;
+    std::vector<double> s, h;
+};
+
+/// The region of a piece, or nullopt with `why` set. GarmentCode panels: "sleeve" → sleeve (side
+/// by the panel's placement x), "skirt" → skirt, "torso" → torso (front or back by placement z).
+/// FreeSewing pieces: "front*" → torso front, "back" and "yoke" → torso back.
+inline std::optional<Region> piece_region(const pattern::Piece& piece, std::string& why) {
+    using internal::contains;
+    const std::string& n = piece.name;
+    if (piece.placement) {
+        const auto& t = piece.placement->translation;
+        const bool front = t[2] >= 0;
+        if (contains(n, "sleeve")) {
+            return t[0] >= 0 ? Region::sleeve_left : Region::sleeve_right;
+        }
+        if (contains(n, "skirt")) {
+            return front ? Region::skirt_front : Region::skirt_back;
+        }
+        if (contains(n, "torso")) {
+            return front ? Region::torso_front : Region::torso_back;
+        }
+        why = contains(n, "pant")   ? "trouser legs are not placed yet"
+              : contains(n, "hood") ? "hoods are not placed yet"
+                                    : "its name says neither torso, skirt nor sleeve";
+        return std::nullopt;
+    }
+    // FreeSewing names pieces "design.piece" ("aaron.front").
+    const std::string base = n.substr(n.rfind('.') == std::string::npos ? 0 : n.rfind('.') + 1);
+    if (base.rfind("front", 0) == 0 && base.find("Binding") == std::string::npos) {
+        return Region::torso_front;
+    }
+    if (base == "back" || base == "yoke") {
+        return Region::torso_back;
+    }
+    why =
+        "the design table gives no region for it (bindings, cuffs, collars and trouser legs "
+        "are not placed yet)";
+    return std::nullopt;
+}
+
+/// Layout coordinates of every vertex of a meshed piece (see PieceLayout). `top_y` is the body
+/// height the top of the garment goes to; `gc_shift` the vertical offset from GarmentCode's
+/// placement to the body (GarmentCode pieces keep their relative heights).
+inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::PieceMesh& mesh,
+                                Region region, double top_y, double waist_y, double gc_shift) {
+    PieceLayout out;
+    out.region = region;
+    const std::size_t n = mesh.uv.size();
+    out.s.resize(n);
+    out.h.resize(n);
+    const bool sleeve = region == Region::sleeve_left || region == Region::sleeve_right;
+    const bool skirt = region == Region::skirt_front || region == Region::skirt_back;
+    const bool front = region == Region::torso_front || region == Region::skirt_front;
+    if (piece.placement && !sleeve) {
+        // GarmentCode torso/skirt panels lie in planes z = const: x is the offset from the centre
+        // line (the body's left for x > 0), y the height on GarmentCode's body.
+        for (std::size_t v = 0; v < n; ++v) {
+            const auto p = pattern::placed_point(*piece.placement, mesh.uv[v]);
+            out.s[v] = front ? p[0] : -p[0];
+            out.h[v] = p[1] + gc_shift;
+        }
+        return out;
+    }
+    if (piece.placement && sleeve) {
+        // Along the panel's own x axis (rotated down the arm), across its y axis (top edge up).
+        const auto o = pattern::placed_point(*piece.placement, {0, 0});
+        auto ex = vec3::sub(pattern::placed_point(*piece.placement, {1, 0}), o);
+        auto ey = vec3::sub(pattern::placed_point(*piece.placement, {0, 1}), o);
+        if (ex[1] > 0) {
+            ex = vec3::scale(ex, -1);
+        }
+        if (ey[1] < 0) {
+            ey = vec3::scale(ey, -1);
+        }
+        for (std::size_t v = 0; v < n; ++v) {
+            const auto p = pattern::placed_point(*piece.placement, mesh.uv[v]);
+            out.h[v] = vec3::dot(p, ex);
+            out.s[v] = vec3::dot(p, ey);
+        }
+        return out;
+    }
+    // FreeSewing torso pieces: centre line at the middle of the piece's x range, top at top_y.
+    double xmin = 1e300, xmax = -1e300, ymax = -1e300;
+    for (const auto& q : mesh.uv) {
+        xmin = std::min(xmin, q.x);
+        xmax = std::max(xmax, q.x);
+        ymax = std::max(ymax, q.y);
+    }
+    const double xc =
+        piece.fold ? 0.5 * (piece.fold->line.a.x + piece.fold->line.b.x) : 0.5 * (xmin + xmax);
+    for (std::size_t v = 0; v < n; ++v) {
+        // FreeSewing draws front and back halves alike, the fold on the same side, so that a side
+        // seam joins edges on the same side of both drawings: seen from behind, the back is
+        // mirrored.
+        out.s[v] = front ? mesh.uv[v].x - xc : xc - mesh.uv[v].x;
+        out.h[v] = (skirt ? waist_y : top_y) + (mesh.uv[v].y - ymax);
+    }
+    return out;
+}
+
+/// Wraps every piece around its region (see the file comment). `layouts[i]` belongs to
+/// `mesh.pieces[i]`; writes the 3D positions (canonical mm) of every piece vertex to `xyz`.
+inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& layouts,
+                        const pattern::PatternMesh& mesh, const PlacementOptions& o,
+                        std::vector<std::vector<Vec3>>& xyz) {
+    using namespace internal;
+    xyz.assign(mesh.pieces.size(), {});
+    // --- torso and skirt: one prism around the trunk. Its section is the convex hull of the
+    // trunk's points (the arms below the armpits removed) over the pieces' heights, seen from
+    // above, offset by the gap (and further when the front and back pieces together are wider than
+    // its perimeter). A prism is developable: the pieces are wrapped onto it without stretch,
+    // straight up and round; the sewing and the drape then bring the cloth in to the body.
+    double hmin = 1e300, hmax = -1e300, need = 0;
+    Section prism;
+    bool have_prism = false;
+    {
+        std::vector<double> fmin, fmax, bmin, bmax;
+        for (const PieceLayout& l : layouts) {
+            if (l.region == Region::sleeve_left || l.region == Region::sleeve_right) {
+                continue;
+            }
+            for (double h : l.h) {
+                hmin = std::min(hmin, h);
+                hmax = std::max(hmax, h);
+            }
+        }
+        // The widths the perimeter must hold, per 10 mm of height: front extent + back extent.
+        const double step = o.slice_mm;
+        const std::size_t ns = hmin <= hmax ? std::size_t((hmax - hmin) / step) + 1 : 0;
+        fmin.assign(ns, 1e300);
+        fmax.assign(ns, -1e300);
+        bmin.assign(ns, 1e300);
+        bmax.assign(ns, -1e300);
+        for (const PieceLayout& l : layouts) {
+            if (l.region == Region::sleeve_left || l.region == Region::sleeve_right) {
+                continue;
+            }
+            const bool front = l.region == Region::torso_front || l.region == Region::skirt_front;
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                const std::size_t k = std::min(ns - 1, std::size_t((l.h[v] - hmin) / step));
+                (front ? fmin : bmin)[k] = std::min((front ? fmin : bmin)[k], l.s[v]);
+                (front ? fmax : bmax)[k] = std::max((front ? fmax : bmax)[k], l.s[v]);
+            }
+        }
+        for (std::size_t k = 0; k < ns; ++k) {
+            const double wf = fmax[k] > fmin[k] ? fmax[k] - fmin[k] : 0;
+            const double wb = bmax[k] > bmin[k] ? bmax[k] - bmin[k] : 0;
+            need = std::max(need, 1.04 * (wf + wb) + 2 * o.layer_gap_mm);
+        }
+    }
+    if (hmin <= hmax) {
+        std::vector<std::array<double, 2>> trunk;
+        for (std::size_t v = 0; v < body.points.size(); ++v) {
+            const Vec3& p = body.points[v];
+            // The arms are left out below the armpits, where they hang free; the top of the
+            // upper arm (the deltoid) is kept, so that the body pieces pass outside it.
+            const bool free_arm = body.is_arm[v] && p[1] < body.armpit_y - 0.03 * body.height;
+            if (!free_arm && p[1] >= hmin - o.gap_mm && p[1] <= hmax + o.gap_mm) {
+                trunk.push_back({p[0], p[2]});
+            }
+        }
+        if (trunk.size() < 3) {
+            throw InvalidInput("dress: the body has no trunk between " + std::to_string(int(hmin)) +
+                               " and " + std::to_string(int(hmax)) +
+                               " mm height, where the pieces go");
+        }
+        Section sec = make_section(trunk, o.gap_mm);
+        if (sec.arc.back() < need) {
+            sec = make_section(trunk, o.gap_mm + (need - sec.arc.back()) / (2 * M_PI));
+        }
+        prism = sec;
+        have_prism = true;
+        for (std::size_t i = 0; i < layouts.size(); ++i) {
+            const PieceLayout& l = layouts[i];
+            if (l.region == Region::sleeve_left || l.region == Region::sleeve_right) {
+                continue;
+            }
+            const bool front = l.region == Region::torso_front || l.region == Region::skirt_front;
+            xyz[i].resize(l.s.size());
+            // Pieces on one side of the centre line (GarmentCode's left and right halves) keep
+            // a layer gap from it, so that halves meeting there do not touch before sewing.
+            const auto [smin_it, smax_it] = std::minmax_element(l.s.begin(), l.s.end());
+            const double shift = *smin_it > -1.0  ? 0.5 * o.layer_gap_mm
+                                 : *smax_it < 1.0 ? -0.5 * o.layer_gap_mm
+                                                  : 0.0;
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                // Front: positive s towards +x (the body's left, the viewer's right). Back seen
+                // from behind: positive s towards -x.
+                const double a =
+                    (front ? sec.front_arc : sec.back_arc) + sec.dir_front * (l.s[v] + shift);
+                const auto q = section_point(sec, a);
+                xyz[i][v] = {q[0], l.h[v], q[1]};
+            }
+        }
+    }
+    // --- sleeves: a cylinder per arm
+    for (int side = 0; side < 2; ++side) {
+        const Region reg = side == 0 ? Region::sleeve_left : Region::sleeve_right;
+        const Vec3 a0 = body.shoulder[side];
+        const Vec3 d = normalized(sub(body.wrist[side], a0));
+        double r_arm = 0;
+        for (std::size_t v = 0; v < body.points.size(); ++v) {
+            if (!body.is_arm[v] || (body.points[v][0] >= 0) != (side == 0)) {
+                continue;
+            }
+            double t = 0;
+            const double dist = axis_distance(body.points[v], a0, body.wrist[side], &t);
+            if (t >= 0 && t <= 1) {
+                r_arm = std::max(r_arm, dist);
+            }
+        }
+        double smin = 1e300, smax = -1e300, hmin_s = 1e300;
+        std::size_t count = 0;
+        for (const PieceLayout& l : layouts) {
+            if (l.region != reg) {
+                continue;
+            }
+            ++count;
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                smin = std::min(smin, l.s[v]);
+                smax = std::max(smax, l.s[v]);
+                hmin_s = std::min(hmin_s, l.h[v]);
+            }
+        }
+        if (count == 0) {
+            continue;
+        }
+        // Front and back halves each span half the circumference (one whole sleeve: all of it).
+        double span = 0;
+        for (const PieceLayout& l : layouts) {
+            if (l.region != reg) {
+                continue;
+            }
+            const auto [lo, hi] = std::minmax_element(l.s.begin(), l.s.end());
+            span += *hi - *lo;
+        }
+        const double radius = std::max(r_arm + o.gap_mm, 1.03 * span / (2 * M_PI));
+        // Frame: n_up ⟂ d pointing up, n_front ⟂ both pointing to the front (+z).
+        Vec3 n_up = sub(Vec3{0, 1, 0}, scale(d, d[1]));
+        n_up = normalized(n_up);
+        Vec3 n_front = cross(d, n_up);
+        if (n_front[2] < 0) {
+            n_front = scale(n_front, -1);
+        }
+        // The sleeve starts where its cylinder has left the trunk's prism (with a layer gap),
+        // so that sleeves and body pieces do not cross before they are sewn.
+        double start = 0;
+        if (have_prism) {
+            const auto inside_prism = [&](const Vec3& p) {
+                if (p[1] > hmax + o.layer_gap_mm || p[1] < hmin - o.layer_gap_mm) {
+                    return false;
+                }
+                for (std::size_t k = 0; k + 1 < prism.pts.size(); ++k) {
+                    const auto& a = prism.pts[k];
+                    const auto& b = prism.pts[k + 1];
+                    const double cr = (b[0] - a[0]) * (p[2] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+                    if (cr < -o.layer_gap_mm * std::hypot(b[0] - a[0], b[1] - a[1])) {
+                        return false;  // outside this edge of the counter-clockwise hull
+                    }
+                }
+                return true;
+            };
+            const double arm_length = norm(sub(body.wrist[side], a0));
+            for (; start < arm_length; start += 5) {
+                bool clear = true;
+                for (int k = 0; k < 24 && clear; ++k) {
+                    const double th = 2 * M_PI * k / 24;
+                    const Vec3 q =
+                        add(add(a0, scale(d, start)), add(scale(n_up, radius * std::cos(th)),
+                                                          scale(n_front, radius * std::sin(th))));
+                    clear = !inside_prism(q);
+                }
+                if (clear) {
+                    break;
+                }
+            }
+        }
+        for (std::size_t i = 0; i < layouts.size(); ++i) {
+            const PieceLayout& l = layouts[i];
+            if (l.region != reg) {
+                continue;
+            }
+            // GarmentCode halves: the one placed in front goes over the front of the arm.
+            const bool front_half = mesh.pieces[i].xyz.empty() ? true : [&] {
+                double z = 0;
+                for (const auto& p : mesh.pieces[i].xyz) {
+                    z += p[2];
+                }
+                return z >= 0;
+            }();
+            xyz[i].resize(l.s.size());
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                const double theta = (front_half ? 1 : -1) * (smax - l.s[v]) / radius;
+                const double along = start + l.h[v] - hmin_s;
+                const Vec3 c = add(a0, scale(d, along));
+                xyz[i][v] = add(c, add(scale(n_up, radius * std::cos(theta)),
+                                       scale(n_front, radius * std::sin(theta))));
+            }
+        }
+    }
+}
+
+}  // namespace tapeline::garment

@@ -1,0 +1,176 @@
+// Quality figures of a draped garment, each measured independently of the solver that made it:
+// body penetration by an exact inside test (CGAL::Side_of_triangle_mesh) and exact distances
+// (CGAL AABB tree), cloth edges crossing body triangles (GarmentCode's measure of a failed drape),
+// cloth edges crossing cloth triangles, and the principal stretches of every 3D triangle against
+// its 2D pattern triangle.
+#pragma once
+
+#include <tapeline/garment/garment_types.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace tapeline::garment {
+
+/// A triangle mesh with per-corner pattern coordinates (the welded garment).
+struct GarmentMesh {
+    std::vector<Vec3> positions;                ///< mm
+    std::vector<Tri> triangles;                 ///< vertex indices
+    std::vector<std::array<UV, 3>> uv;          ///< per corner, pattern mm
+    std::vector<std::uint32_t> triangle_piece;  ///< piece index of each triangle
+    std::vector<std::string> piece_names;       ///< per piece
+};
+
+/// Largest principal stretch of each triangle: the larger singular value of the map from its
+/// pattern triangle to its 3D triangle (1: unstretched).
+inline std::vector<double> triangle_stretch(const std::vector<Vec3>& x, const std::vector<Tri>& t,
+                                            const std::vector<std::array<UV, 3>>& uv) {
+    std::vector<double> out(t.size(), 1.0);
+    for (std::size_t f = 0; f < t.size(); ++f) {
+        const auto& u = uv[f];
+        const double a = u[1][0] - u[0][0], b = u[2][0] - u[0][0];
+        const double c = u[1][1] - u[0][1], d = u[2][1] - u[0][1];
+        const double det = a * d - b * c;
+        if (std::abs(det) < 1e-12) {
+            continue;
+        }
+        // Dm = [[a b][c d]]; F = Ds·Dm⁻¹ (3×2).
+        const double ia = d / det, ib = -b / det, ic = -c / det, id = a / det;
+        const Vec3 e1 = vec3::sub(x[t[f][1]], x[t[f][0]]), e2 = vec3::sub(x[t[f][2]], x[t[f][0]]);
+        const Vec3 f1 = vec3::add(vec3::scale(e1, ia), vec3::scale(e2, ic));
+        const Vec3 f2 = vec3::add(vec3::scale(e1, ib), vec3::scale(e2, id));
+        // Singular values of F: square roots of the eigenvalues of FᵀF.
+        const double p = vec3::dot(f1, f1), q = vec3::dot(f1, f2), r = vec3::dot(f2, f2);
+        const double mean = 0.5 * (p + r), dev = std::sqrt(0.25 * (p - r) * (p - r) + q * q);
+        out[f] = std::sqrt(mean + dev);
+    }
+    return out;
+}
+
+namespace internal {
+
+inline double percentile(std::vector<double> v, double q) {
+    if (v.empty()) {
+        return 0;
+    }
+    const std::size_t k = std::min(v.size() - 1, std::size_t(q * double(v.size() - 1) + 0.5));
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+    return v[k];
+}
+
+}  // namespace internal
+
+/// Penetration, crossings and stretch of `g` on the closed body (`body_points`, `body_tris`, the
+/// garment's frame, mm). `moving_fraction` and `stitch_gap_max_mm` are copied in.
+inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
+                                      const std::vector<Tri>& body_tris, const GarmentMesh& g,
+                                      double moving_fraction, double stitch_gap_max_mm) {
+    using K = CGAL::Simple_cartesian<double>;
+    using Mesh = CGAL::Surface_mesh<K::Point_3>;
+    using P = K::Point_3;
+    QualityFigures q;
+    q.moving_fraction = moving_fraction;
+    q.stitch_gap_max_mm = stitch_gap_max_mm;
+    // Body: a Surface_mesh for the inside test, a triangle AABB tree for distances and crossings.
+    Mesh body;
+    std::vector<Mesh::Vertex_index> vd;
+    for (const Vec3& p : body_points) {
+        vd.push_back(body.add_vertex(P(p[0], p[1], p[2])));
+    }
+    for (const Tri& t : body_tris) {
+        body.add_face(vd[t[0]], vd[t[1]], vd[t[2]]);
+    }
+    using BodyPrimitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+    using BodyTree = CGAL::AABB_tree<CGAL::AABB_traits<K, BodyPrimitive>>;
+    BodyTree body_tree(faces(body).first, faces(body).second, body);
+    body_tree.accelerate_distance_queries();
+    const CGAL::Side_of_triangle_mesh<Mesh, K> inside(body_tree);
+    for (const Vec3& x : g.positions) {
+        const P p(x[0], x[1], x[2]);
+        if (inside(p) == CGAL::ON_BOUNDED_SIDE) {
+            ++q.vertices_inside_body;
+            q.max_depth_mm = std::max(q.max_depth_mm, std::sqrt(body_tree.squared_distance(p)));
+        }
+    }
+    // Edges of the garment (each once).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const Tri& t : g.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+            edges.push_back({std::min(a, b), std::max(a, b)});
+        }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    for (const auto& [a, b] : edges) {
+        const K::Segment_3 s(P(g.positions[a][0], g.positions[a][1], g.positions[a][2]),
+                             P(g.positions[b][0], g.positions[b][1], g.positions[b][2]));
+        if (body_tree.do_intersect(s)) {
+            ++q.edges_crossing_body;
+        }
+    }
+    // Cloth self-intersections: an edge crossing a triangle it does not share a vertex with.
+    {
+        using Triangle = K::Triangle_3;
+        std::vector<Triangle> tris;
+        tris.reserve(g.triangles.size());
+        for (const Tri& t : g.triangles) {
+            const auto pt = [&](std::uint32_t v) {
+                return P(g.positions[v][0], g.positions[v][1], g.positions[v][2]);
+            };
+            tris.emplace_back(pt(t[0]), pt(t[1]), pt(t[2]));
+        }
+        using Iterator = std::vector<Triangle>::const_iterator;
+        using Primitive = CGAL::AABB_triangle_primitive<K, Iterator>;
+        using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+        Tree tree(tris.cbegin(), tris.cend());
+        std::vector<typename Tree::Primitive_id> hits;
+        for (const auto& [a, b] : edges) {
+            const K::Segment_3 s(P(g.positions[a][0], g.positions[a][1], g.positions[a][2]),
+                                 P(g.positions[b][0], g.positions[b][1], g.positions[b][2]));
+            hits.clear();
+            tree.all_intersected_primitives(s, std::back_inserter(hits));
+            for (const auto& h : hits) {
+                const Tri& t = g.triangles[std::size_t(h - tris.cbegin())];
+                if (t[0] == a || t[1] == a || t[2] == a || t[0] == b || t[1] == b || t[2] == b) {
+                    continue;
+                }
+                ++q.self_intersections;
+            }
+        }
+    }
+    const auto st = triangle_stretch(g.positions, g.triangles, g.uv);
+    if (!st.empty()) {
+        q.stretch_median = internal::percentile(st, 0.5);
+        q.stretch_p95 = internal::percentile(st, 0.95);
+        q.stretch_max = *std::max_element(st.begin(), st.end());
+        q.stretch_above_105_percent =
+            100.0 * double(std::count_if(st.begin(), st.end(), [](double s) { return s > 1.05; })) /
+            double(st.size());
+    }
+    return q;
+}
+
+/// The gates of a successful drape (issue figures): stitch gap ≤ 1 mm, no cloth edge crossing
+/// the body, no vertex deeper than 1 mm, no self-intersection, p95 stretch ≤ 1.05, static (at
+/// most 1 % of the vertices moved more than 0.3 mm in the last frame).
+inline std::vector<Gate> quality_gates(const QualityFigures& q) {
+    return {
+        {"stitch_gap_max_mm", q.stitch_gap_max_mm, 1.0, q.stitch_gap_max_mm <= 1.0},
+        {"edges_crossing_body", double(q.edges_crossing_body), 0, q.edges_crossing_body == 0},
+        {"max_depth_mm", q.max_depth_mm, 1.0, q.max_depth_mm <= 1.0},
+        {"self_intersections", double(q.self_intersections), 0, q.self_intersections == 0},
+        {"stretch_p95", q.stretch_p95, 1.05, q.stretch_p95 <= 1.05},
+        {"moving_fraction", q.moving_fraction, 0.01, q.moving_fraction <= 0.01},
+    };
+}
+
+}  // namespace tapeline::garment

@@ -1,0 +1,271 @@
+// Sewing along geodesic strings, welding, the quality figures and the fabric catalogue, against
+// analytic truth: a seam whose sides start on the front and the back of a cylinder closes around
+// it and never through it; strings on a cylinder are as long as the unrolled (helical) geodesic;
+// stretches of affine maps are their singular values; a tube has two boundary loops.
+#include <tapeline/garment/drape_solver.h>
+#include <tapeline/garment/fabric.h>
+#include <tapeline/garment/quality.h>
+#include <tapeline/garment/stitching.h>
+#include <tapeline_test/garment_shapes.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+namespace tg = tapeline::garment;
+using tapeline_test::capped_cylinder;
+using tapeline_test::cloth_grid;
+using tapeline_test::grid_vertex;
+
+namespace {
+
+tg::Vec3 v3(double x, double y, double z) {
+    return {x, y, z};
+}
+
+/// A capsule along z: a cylinder of radius r between z = −h and z = h closed by hemispheres,
+/// outward oriented; `slices` around, `rings` per hemisphere, `along` rings on the cylinder.
+tapeline_test::GarmentTriMesh capsule(double r, double h, int slices, int rings, int along) {
+    tapeline_test::GarmentTriMesh m;
+    std::vector<std::pair<double, double>> profile;  // (radius, z) from the bottom pole up
+    for (int i = 1; i <= rings; ++i) {
+        const double a = -M_PI / 2 + (M_PI / 2) * i / rings;
+        profile.push_back({r * std::cos(a), -h + r * std::sin(a)});
+    }
+    for (int i = 1; i <= along; ++i) {
+        profile.push_back({r, -h + 2 * h * i / along});
+    }
+    for (int i = 1; i < rings; ++i) {
+        const double a = (M_PI / 2) * i / rings;
+        profile.push_back({r * std::cos(a), h + r * std::sin(a)});
+    }
+    m.points.push_back({0, 0, -h - r});
+    for (const auto& [rad, z] : profile) {
+        for (int j = 0; j < slices; ++j) {
+            const double phi = 2 * M_PI * j / slices;
+            m.points.push_back({rad * std::cos(phi), rad * std::sin(phi), z});
+        }
+    }
+    const auto top = std::uint32_t(m.points.size());
+    m.points.push_back({0, 0, h + r});
+    const int n = int(profile.size());
+    const auto at = [&](int i, int j) { return std::uint32_t(1 + i * slices + (j % slices)); };
+    for (int j = 0; j < slices; ++j) {
+        m.triangles.push_back({0, at(0, j + 1), at(0, j)});
+        m.triangles.push_back({top, at(n - 1, j), at(n - 1, j + 1)});
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        for (int j = 0; j < slices; ++j) {
+            m.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+            m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+        }
+    }
+    return m;
+}
+
+/// Exact signed distance to that capsule.
+double capsule_distance(double r, double h, const tg::Vec3& p) {
+    const double z = std::clamp(p[2], -h, h);
+    return std::sqrt(p[0] * p[0] + p[1] * p[1] + (p[2] - z) * (p[2] - z)) - r;
+}
+
+}  // namespace
+
+TEST(GarmentStretch, SingularValuesOfAnAffineMap) {
+    // Pattern triangle (0,0),(10,0),(0,10) mapped by F = diag(1.1, 0.9) then rotated in 3D:
+    // the largest principal stretch is 1.1 whatever the rotation.
+    const std::vector<std::array<tg::UV, 3>> uv = {{tg::UV{0, 0}, tg::UV{10, 0}, tg::UV{0, 10}}};
+    const double c = std::cos(0.7), s = std::sin(0.7);
+    const auto rot = [&](double x, double y) { return v3(c * x, y, s * x); };
+    const std::vector<tg::Vec3> x = {rot(0, 0), rot(11, 0), rot(0, 9)};
+    const auto st = tg::triangle_stretch(x, {{0, 1, 2}}, uv);
+    ASSERT_EQ(st.size(), 1u);
+    EXPECT_NEAR(st[0], 1.1, 1e-12);
+    // A shear x' = x + 0.5 y: singular values of [[1, .5],[0, 1]] are (1 ± ...): the larger is
+    // (0.5 + sqrt(4.25)) / 2 · ... computed in closed form: sqrt((2.25 + sqrt(2.25² − 4)) / 2).
+    const std::vector<tg::Vec3> y = {v3(0, 0, 0), v3(10, 0, 0), v3(5, 10, 0)};
+    const double expected = std::sqrt((2.25 + std::sqrt(2.25 * 2.25 - 4)) / 2);
+    EXPECT_NEAR(tg::triangle_stretch(y, {{0, 1, 2}}, uv)[0], expected, 1e-12);
+}
+
+TEST(GarmentWeld, UnionOfPairsAndBoundaryLoops) {
+    // A 4 × 2 grid rolled into a tube by stitching its left and right columns.
+    const int nx = 4, ny = 2;
+    tg::ClothModel c = cloth_grid(nx, ny, 10, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0));
+    std::vector<tg::Stitch> pairs;
+    for (int j = 0; j <= ny; ++j) {
+        pairs.push_back({grid_vertex(nx, 0, j), grid_vertex(nx, nx, j), 0, 0});
+    }
+    const tg::Welding w = tg::weld_pairs(c.positions.size(), pairs);
+    EXPECT_EQ(w.count, c.positions.size() - std::size_t(ny + 1));
+    for (const auto& p : pairs) {
+        EXPECT_EQ(w.weld_map[p.a], w.weld_map[p.b]);
+    }
+    std::vector<tg::Tri> welded;
+    for (const auto& t : c.triangles) {
+        welded.push_back({w.weld_map[t[0]], w.weld_map[t[1]], w.weld_map[t[2]]});
+    }
+    EXPECT_EQ(tg::boundary_loops(w.count, welded), 2u);                  // the tube's two rims
+    EXPECT_EQ(tg::boundary_loops(c.positions.size(), c.triangles), 1u);  // flat sheet
+}
+
+TEST(GarmentStrings, PointsAlongAndSewingTargets) {
+    tg::StringPath s;
+    s.points = {v3(0, 0, 0), v3(10, 0, 0), v3(10, 30, 0)};
+    s.arc = {0, 10, 40};
+    EXPECT_DOUBLE_EQ(s.length(), 40);
+    const auto p = s.at(25);
+    EXPECT_NEAR(p[0], 10, 1e-12);
+    EXPECT_NEAR(p[1], 15, 1e-12);
+    tg::SewingPlan plan;
+    plan.pairs = {{7, 9, 0, 0}};
+    plan.strings = {s};
+    const auto t0 = tg::sewing_targets(plan, 0.0, 0.0);
+    ASSERT_EQ(t0.size(), 2u);
+    EXPECT_EQ(t0[0].vertex, 7u);  // in vertex order
+    EXPECT_EQ(t0[0].target, v3(0, 0, 0));
+    EXPECT_EQ(t0[1].target, v3(10, 30, 0));
+    const auto t1 = tg::sewing_targets(plan, 1.0, 0.0);
+    EXPECT_NEAR(t1[0].target[1], 10, 1e-12);  // both at the middle, arc 20
+    EXPECT_NEAR(t1[1].target[1], 10, 1e-12);
+}
+
+// A capsule along z (radius 100 mm, its cylinder from z = −100 to 100, hemispheres beyond) with
+// two flat sheets, one in front of it (y = +120) and one behind (y = −120), whose top edges
+// (z = 160) are sewn together: the chord between a front and a back seam vertex runs through the
+// capsule (as the chord of a shoulder seam runs through the shoulder). The strings must go over
+// the top instead, and sewing must close the seam around the capsule with no cloth edge crossing
+// it at any frame.
+TEST(GarmentSewing, SeamAroundACylinderClosesAroundItNeverThroughIt) {
+    const double R = 100, H = 100, y0 = 120, z_top = 160, off = 8;
+    const auto body = capsule(R, H, 64, 16, 20);
+    tg::ColliderOptions co;
+    co.cell_mm = 4;
+    const tg::SignedDistanceGrid sdf(body.points, body.triangles, co);
+    const int nx = 12, nz = 18;
+    const double cell = 15;  // sheets 180 mm wide (x), 270 mm tall (z up to z_top)
+    tg::ClothModel cloth;
+    for (int side = 0; side < 2; ++side) {
+        const double y = side == 0 ? y0 : -y0;
+        const tg::ClothModel g =
+            cloth_grid(nx, nz, cell, v3(-90, y, z_top - nz * cell), v3(1, 0, 0), v3(0, 0, 1));
+        const std::uint32_t base = std::uint32_t(cloth.positions.size());
+        cloth.positions.insert(cloth.positions.end(), g.positions.begin(), g.positions.end());
+        for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+            const auto& t = g.triangles[f];
+            cloth.triangles.push_back({base + t[0], base + t[1], base + t[2]});
+            cloth.rest_uv.push_back(g.rest_uv[f]);
+            cloth.grain.push_back(g.grain[f]);
+        }
+    }
+    const std::uint32_t n0 = std::uint32_t((nx + 1) * (nz + 1));
+    tg::SewingPlan plan;
+    for (int i = 0; i <= nx; ++i) {
+        plan.pairs.push_back({grid_vertex(nx, i, nz), n0 + grid_vertex(nx, i, nz), 0, 0});
+        plan.seam_of_pair.push_back(0);
+    }
+    // The test means something only if the chords do go through the capsule.
+    const auto mid = tapeline::vec3::scale(
+        tapeline::vec3::add(cloth.positions[plan.pairs[6].a], cloth.positions[plan.pairs[6].b]),
+        0.5);
+    ASSERT_LT(capsule_distance(R, H, mid), -10);
+    tg::compute_strings(plan, cloth.positions, body.points, body.triangles, sdf, off);
+    for (std::size_t k = 0; k < plan.strings.size(); ++k) {
+        const tg::StringPath& s = plan.strings[k];
+        for (std::size_t i = 1; i + 1 < s.points.size(); ++i) {
+            EXPECT_NEAR(capsule_distance(R, H, s.points[i]), off, 1.0)
+                << "string " << k << " point " << i << " is not lifted " << off << " mm";
+        }
+    }
+    // The centre pair's string (plane x = 0): from the cloth vertex down to the lifted skin
+    // nearest to it (towards the hemisphere's centre), then over the top at radius R + off, an
+    // arc from the angle a above the horizontal on one side to the same angle on the other.
+    const double a = std::atan2(z_top - H, y0);
+    const double drop = std::hypot(y0, z_top - H) - (R + off);
+    const double centre = 2 * drop + (R + off) * (M_PI - 2 * a);
+    EXPECT_NEAR(plan.strings[6].length(), centre, 0.03 * centre);
+    tg::FabricParams fabric;
+    fabric.bending_un_m = 1;
+    // The thickness must exceed the sagitta of a cloth edge over the body: edges of this sheet,
+    // stretched up to 27 mm over the top, dip 27²/(8·108) ≈ 0.85 mm between their ends.
+    fabric.thickness_mm = 2;
+    tg::DrapeOptions opt;
+    opt.gravity = {0, 0, 0};
+    opt.self_collision = false;
+    opt.substeps = 40;
+    tg::DrapeSolver solver(cloth, fabric, opt, &sdf);
+    tg::GarmentMesh g;
+    g.triangles = cloth.triangles;
+    g.uv = cloth.rest_uv;
+    g.triangle_piece.assign(cloth.triangles.size(), 0);
+    const int frames = 45;
+    for (int f = 0; f < frames + 15; ++f) {
+        const double sigma = std::min(1.0, double(f + 1) / frames);
+        solver.set_attachments(tg::sewing_targets(plan, sigma, 1e-4));
+        solver.step();
+        g.positions = solver.positions();
+        const auto q = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+        ASSERT_EQ(q.edges_crossing_body, 0u) << "frame " << f;
+        ASSERT_EQ(q.vertices_inside_body, 0u) << "frame " << f;
+    }
+    double gap_max = 0;
+    for (const auto& p : plan.pairs) {
+        gap_max = std::max(gap_max, tapeline::vec3::norm(tapeline::vec3::sub(
+                                        solver.positions()[p.a], solver.positions()[p.b])));
+        // The seam lies over the top now (above the cylinder's end).
+        EXPECT_GT(solver.positions()[p.a][2], H + 0.5 * R);
+    }
+    EXPECT_LT(gap_max, 1.0) << "the seam did not close";
+}
+
+TEST(GarmentQuality, CountsEdgesCrossingABodyAndVerticesInside) {
+    const double R = 50, L = 200;
+    const auto body = capped_cylinder(v3(0, 0, 0), R, L, 48, 8);
+    // A 2-cell strip along x through the cylinder: its vertices at x = −80, −40... one of them at
+    // x = 0 is inside (depth R = 50 from the surface... the nearest face is at distance ≈ R).
+    tg::GarmentMesh g;
+    g.positions = {v3(-80, 0, 0),  v3(0, 0, 0),  v3(80, 0, 0),
+                   v3(-80, 0, 10), v3(0, 0, 10), v3(80, 0, 10)};
+    g.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
+    g.uv.assign(4, {tg::UV{0, 0}, tg::UV{1, 0}, tg::UV{0, 1}});
+    g.triangle_piece.assign(4, 0);
+    const auto q = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+    EXPECT_EQ(q.vertices_inside_body, 2u);
+    EXPECT_NEAR(q.max_depth_mm, R, 0.01 * R);  // the faces' sagitta is 0.1 % of R at 48 slices
+    // Edges crossing the cylinder's side: the four edges from x = ±80 to x = 0 (two per row and
+    // the diagonals 0–4 and 1–5), each crossing once; the vertical edges 1–4 lie inside.
+    EXPECT_EQ(q.edges_crossing_body, 6u);
+    EXPECT_EQ(q.self_intersections, 0u);
+}
+
+TEST(GarmentFabric, CatalogueAndFileRefusals) {
+    EXPECT_EQ(tg::fabric_from("denim").name, "denim");
+    try {
+        tg::fabric_from("tweed");
+        FAIL() << "an unknown fabric was accepted";
+    } catch (const tapeline::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown fabric 'tweed'"), std::string::npos);
+    }
+    const std::string path = ::testing::TempDir() + "fabric_bad.json";
+    { std::ofstream(path) << R"({"density_g_m2": -3})"; }
+    try {
+        tg::fabric_from(path);
+        FAIL() << "a negative density was accepted";
+    } catch (const tapeline::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("\"density_g_m2\" must be a positive"),
+                  std::string::npos);
+    }
+    { std::ofstream(path) << R"({"name": "mine", "bending_un_m": 3, "colour": 1})"; }
+    try {
+        tg::fabric_from(path);
+        FAIL() << "an unknown field was accepted";
+    } catch (const tapeline::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("unknown field \"colour\""), std::string::npos);
+    }
+    { std::ofstream(path) << R"({"name": "mine", "bending_un_m": 3})"; }
+    const tg::FabricParams f = tg::fabric_from(path);
+    EXPECT_EQ(f.name, "mine");
+    EXPECT_EQ(f.bending_un_m, 3);
+}
