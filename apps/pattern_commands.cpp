@@ -54,24 +54,6 @@ void note_read_only_open(const tp::PatternDatabase& database) {
     }
 }
 
-/// NAME in the database, or a pattern file when NAME is an existing file.
-tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
-                         const std::string& format) {
-    if (is_file(name_or_file)) {
-        return tp::read_pattern_file(name_or_file, format, nullptr);
-    }
-    tp::DatabaseOptions options;
-    options.read_only = true;
-    options.create = false;
-    const std::string path = db_path(db);
-    if (!is_file(path)) {
-        throw InvalidInput(name_or_file + ": no such pattern file, and no pattern database at " +
-                           path + " (import one with `tapeline pattern import`)");
-    }
-    tp::PatternDatabase database(path, options);
-    note_read_only_open(database);
-    return database.load(name_or_file);
-}
 
 void print_validation(const tp::ValidationReport& r, const std::string& what) {
     for (const auto& w : r.warnings) {
@@ -241,6 +223,25 @@ void run_export(const ExportArgs& a) {
 }
 
 }  // namespace
+
+// NAME in the database, or a pattern file when NAME is an existing file.
+tp::Pattern load_pattern(const std::string& name_or_file, const std::string& db,
+                         const std::string& format) {
+    if (is_file(name_or_file)) {
+        return tp::read_pattern_file(name_or_file, format, nullptr);
+    }
+    tp::DatabaseOptions options;
+    options.read_only = true;
+    options.create = false;
+    const std::string path = db_path(db);
+    if (!is_file(path)) {
+        throw InvalidInput(name_or_file + ": no such pattern file, and no pattern database at " +
+                           path + " (import one with `tapeline pattern import`)");
+    }
+    tp::PatternDatabase database(path, options);
+    note_read_only_open(database);
+    return database.load(name_or_file);
+}
 
 void register_pattern_commands(CLI::App& app) {
     CLI::App* pat = app.add_subcommand("pattern", "Sewing patterns: import, database, export");

@@ -910,6 +910,44 @@ expect_fail "--quiet and --progress together" "excludes" "$bin" --quiet --progre
   --surface icosphere:1 --out prog2.jsonl
 fi
 
+# --- dress ---------------------------------------------------------------------------------------
+# Refusals name what is wrong and write nothing; the placement-only run writes every output and its
+# report agrees with the files (vertex count, openings).
+if in_section dress; then
+body="$root/data/bodies/mh_female_average.obj"
+hoody="$root/../shared/data/patterns/garmentcode/hoody_mean_specification.json"
+expect_fail "dress: unknown fabric" "unknown fabric 'tweed'" "$bin" dress "$body" --units dm "$gc" \
+  --out x.obj --fabric tweed
+expect_fail "dress: --out not an OBJ" "expected an .obj" "$bin" dress "$body" --units dm "$gc" --out x.stl
+expect_fail "dress: unknown piece to leave out" "no piece 'collar'" "$bin" dress "$body" --units dm "$gc" \
+  --out x.obj --without collar
+expect_fail "dress: resolution out of range" "resolution" "$bin" dress "$body" --units dm "$gc" \
+  --out x.obj --resolution 0.5
+expect_fail "dress: bindings have no region" "piece 'aaron.armBinding' has no body region" \
+  "$bin" dress "$body" --units dm "$fs" --out x.obj
+if [ -f "$hoody" ]; then
+  expect_fail "dress: a hood has no region" "piece 'left_hood' has no body region" \
+    "$bin" dress "$body" --units dm "$hoody" --out x.obj
+fi
+expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
+if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
+expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \
+  --sew-seconds 0 --settle-seconds 0 --out placed.obj --ply placed.ply --report placed.json \
+  --picture placed.png
+if $py - <<'PY'
+import json
+r = json.load(open("placed.json"))
+v = sum(1 for l in open("placed.obj") if l.startswith("v "))
+f = sum(1 for l in open("placed.obj") if l.startswith("f "))
+assert r["placement"]["vertices_inside_body"] == 0, r["placement"]
+assert v == r["mesh"]["garment_vertices"] == r["mesh"]["cloth_vertices"], (v, r["mesh"])
+assert f == r["mesh"]["cloth_triangles"], (f, r["mesh"])
+assert r["mesh"]["boundary_loops"] == len(r["pieces"]) == 8, r["mesh"]  # unsewn: one per piece
+assert open("placed.png", "rb").read(8) == b"\x89PNG\r\n\x1a\n"
+PY
+then ok "dress: placement report agrees with the files"; else fail "dress: placement report"; fi
+fi
+
 if [ $sections_run -eq 0 ]; then fail "no section named '$section'"; fi
 [ $((passed+failed)) -gt 0 ] || fail "no check ran"
 echo "$passed passed, $failed failed"

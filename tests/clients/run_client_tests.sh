@@ -132,4 +132,31 @@ PY
   finish
 fi
 
-echo "unknown section '$section' (valentina, librecad)"; exit 1
+# Assimp (Debian's assimp-utils) opens the dressed body's binary glTF: two meshes, the body's and
+# the garment's, with exactly the vertex and face counts the OBJ files have. Control: a .glb cut in
+# half is refused.
+if [ "$section" = assimp ]; then
+  need assimp assimp-utils
+  body="$root/data/bodies/mh_female_average.obj"
+  gc="$root/data/patterns/shirt_mean_specification.json"
+  "$bin" dress "$body" --units dm "$gc" --resolution 30 --sew-seconds 0 --settle-seconds 0 \
+    --out placed.obj --glb placed.glb >/dev/null 2>err.txt || fail "dress --glb: $(head -c 300 err.txt)"
+  head -c "$(( $(stat -c %s placed.glb) / 2 ))" placed.glb > cut.glb
+  if assimp info cut.glb >/dev/null 2>&1; then fail "control: a truncated .glb was accepted"
+  else ok "control: a truncated .glb is refused"; fi
+  if info=$(assimp info placed.glb 2>&1); then
+    bv=$(grep -c '^v ' "$body"); bf=$(grep -c '^f ' "$body")
+    gv=$(grep -c '^v ' placed.obj); gf=$(grep -c '^f ' placed.obj)
+    meshes=$(echo "$info" | awk '/^Meshes:/ {print $2; exit}')
+    verts=$(echo "$info" | awk '/^Vertices:/ {print $2; exit}')
+    faces=$(echo "$info" | awk '/^Faces:/ {print $2; exit}')
+    if [ "$meshes" = 2 ] && [ "$verts" = $((bv + gv)) ] && [ "$faces" = $((bf + gf)) ]; then
+      ok "assimp reads body and garment: $meshes meshes, $verts vertices, $faces faces"
+    else
+      fail "assimp: $meshes meshes, $verts vertices, $faces faces; expected 2, $((bv + gv)), $((bf + gf))"
+    fi
+  else fail "assimp info: $(echo "$info" | tail -3)"; fi
+  finish
+fi
+
+echo "unknown section '$section' (valentina, librecad, assimp)"; exit 1

@@ -1,0 +1,259 @@
+// `tapeline dress BODY --units dm PATTERN --out dressed.obj [--ply d.ply] [--report r.json]
+// [--resolution MM] [--fabric NAME|fabric.json] [--without PIECE] [--threads N] [--strict]`:
+// measures the body (landmarks), places the pattern's pieces around it, sews them along geodesic
+// strings, drapes them with the cloth solver and writes the welded garment in the body's own
+// coordinates and unit, with its quality report (garment module).
+#include "commands.h"
+#include "output.h"
+
+#include <tapeline/core/atomic_write.h>
+#include <tapeline/core/errors.h>
+#include <tapeline/core/mesh_io.h>
+#include <tapeline/garment/dress.h>
+#include <tapeline/garment/fabric.h>
+#include <tapeline/garment/garment_io.h>
+#include <tapeline/garment/picture.h>
+#ifdef TAPELINE_HAVE_GLTF
+#include <tapeline/garment/gltf.h>
+#endif
+#include <tapeline/measurement/measure.h>
+#include <tapeline/pattern/validate.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tapeline::app {
+namespace {
+
+namespace tm = tapeline::measurement;
+namespace tg = tapeline::garment;
+using DressMesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+
+struct DressArgs {
+    std::string body, units, pattern, format, db;
+    std::string up = tm::BodyOptions{}.up.to_string();
+    std::string front = tm::BodyOptions{}.front.to_string();
+    std::string out, ply, report, glb, picture;
+    std::string fabric = "cotton_jersey";
+    std::vector<std::string> without;
+    double resolution = tg::DressOptions{}.resolution_mm;
+    int threads = 0;
+    double sew_seconds = tg::SewingOptions{}.sew_seconds;
+    double settle_seconds = tg::SewingOptions{}.settle_seconds;
+    double gap = tg::PlacementOptions{}.gap_mm;
+    int substeps = tg::DrapeOptions{}.substeps;
+    bool no_self_collision = false;
+    bool strict = false;
+};
+
+void run_dress(const DressArgs& a) {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+    if (extension_of(a.out) != ".obj") {
+        throw InvalidInput("--out " + a.out + ": expected an .obj file");
+    }
+    if (!a.ply.empty() && extension_of(a.ply) != ".ply") {
+        throw InvalidInput("--ply " + a.ply + ": expected a .ply file");
+    }
+    if (!a.report.empty() && extension_of(a.report) != ".json") {
+        throw InvalidInput("--report " + a.report + ": expected a .json file");
+    }
+    if (a.threads < 0) {
+        throw InvalidInput("--threads must be >= 0 (0: all cores)");
+    }
+    if (!a.glb.empty() && extension_of(a.glb) != ".glb") {
+        throw InvalidInput("--glb " + a.glb + ": expected a .glb file");
+    }
+#ifndef TAPELINE_HAVE_GLTF
+    if (!a.glb.empty()) {
+        throw InvalidInput(
+            "--glb: this tapeline was built without TinyGLTF (Debian package "
+            "libtinygltf-dev)");
+    }
+#endif
+    if (!a.picture.empty() && extension_of(a.picture) != ".png") {
+        throw InvalidInput("--picture " + a.picture + ": expected a .png file");
+    }
+    OutputFiles outputs({a.out, a.ply, a.report, a.glb, a.picture});
+    tg::DressOptions o;
+    o.resolution_mm = a.resolution;
+    o.fabric = tg::fabric_from(a.fabric);
+    o.drape.threads = a.threads;
+    if (!(a.sew_seconds >= 0) || !(a.settle_seconds >= 0) || !(a.gap > 0) || a.substeps < 1) {
+        throw InvalidInput(
+            "--sew-seconds and --settle-seconds must be >= 0, --gap > 0 and "
+            "--substeps >= 1");
+    }
+    o.sewing.sew_seconds = a.sew_seconds;
+    o.sewing.settle_seconds = a.settle_seconds;
+    if (a.settle_seconds == 0) {
+        o.sewing.max_extra_seconds = 0;
+    }
+    o.placement.gap_mm = a.gap;
+    o.drape.substeps = a.substeps;
+    o.drape.self_collision = !a.no_self_collision;
+    o.without_pieces = a.without;
+
+    tm::BodyOptions bo;
+    bo.name = a.body;
+    if (!a.units.empty()) {
+        bo.unit = tm::parse_length_unit(a.units, "--units");
+    }
+    bo.up = tm::Axis::parse(a.up, "--up");
+    bo.front = tm::Axis::parse(a.front, "--front");
+    pattern::Pattern pat = load_pattern(a.pattern, a.db, a.format);
+    pattern::require_valid(pat);
+
+    const auto loaded = read_triangle_mesh<DressMesh>(a.body);
+    const auto t1 = Clock::now();
+    const tm::Body body = tm::make_body(loaded.mesh, bo);
+    const tm::BodyMeasurements m = tm::measure_body(body);
+    const double measure_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+
+    tg::DressResult r = tg::dress(body, m.landmarks, std::move(pat), o);
+    r.report.measure_seconds = measure_seconds;
+    r.report.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+
+    for (const tg::SeamReport& s : r.report.seams) {
+        if (!s.closable) {
+            std::cerr << "tapeline: warning: seam '" << s.name << "' cannot close: " << s.problem
+                      << '\n';
+        }
+    }
+    std::string failed;
+    for (const tg::Gate& g : r.report.gates) {
+        if (!g.passed) {
+            failed += (failed.empty() ? "" : ", ") + g.name + " " + std::to_string(g.value) +
+                      " (limit " + std::to_string(g.limit) + ")";
+        }
+    }
+    if (!failed.empty()) {
+        if (a.strict) {
+            throw SolverFailure(a.body +
+                                ": the drape failed its quality gates with --strict "
+                                "(nothing written): " +
+                                failed);
+        }
+        std::cerr << "tapeline: warning: quality gates failed: " << failed << '\n';
+    }
+    const tm::BodyFrame frame = body.frame;
+    const tg::PositionMap to_body = [frame](const tg::Vec3& p) { return frame.to_input(p); };
+    outputs.write(a.out,
+                  [&](std::ostream& out) { tg::write_garment_obj(out, r.garment, to_body); });
+    if (!a.ply.empty()) {
+        outputs.write(a.ply, [&](std::ostream& out) {
+            tg::write_garment_ply(out, r.garment, r.stretch, to_body);
+        });
+    }
+#ifdef TAPELINE_HAVE_GLTF
+    if (!a.glb.empty()) {
+        outputs.write(
+            a.glb,
+            [&](std::ostream& out) {
+                tg::write_dressed_glb(out, body.points(), body.triangles(), r.garment, r.stretch);
+            },
+            true);
+    }
+#endif
+    if (!a.picture.empty()) {
+        // Seams: the welded positions of each seam's pairs, in order.
+        std::vector<std::vector<tg::Vec3>> seams(r.report.seams.size());
+        for (std::size_t k = 0; k < r.sewing.pairs.size(); ++k) {
+            seams[r.sewing.seam_of_pair[k]].push_back(r.draped[r.sewing.pairs[k].a]);
+        }
+        const draw::RgbaImage img =
+            tg::dressed_picture(body.points(), body.triangles(), r.garment, r.stretch, seams,
+                                std::filesystem::path(a.pattern).filename().string() + " on " +
+                                    std::filesystem::path(a.body).filename().string() +
+                                    (r.report.passed ? "" : " (quality gates failed)"));
+        outputs.write(
+            a.picture, [&](std::ostream& out) { draw::write_png(out, img, 5); }, true);
+    }
+    if (!a.report.empty()) {
+        nlohmann::ordered_json j;
+        j["body"] = a.body;
+        j["pattern"] = a.pattern;
+        j["units"] = tm::to_string(frame.unit);
+        const nlohmann::ordered_json rep = tg::dress_report_json(r.report, o.fabric, o);
+        for (auto it = rep.begin(); it != rep.end(); ++it) {
+            j[it.key()] = it.value();
+        }
+        outputs.write(a.report, [&](std::ostream& out) { out << j.dump(1) << '\n'; });
+    }
+    outputs.commit();
+    const auto& q = r.report.quality;
+    std::cout << a.out << ": " << r.report.garment_vertices << " vertices, "
+              << r.report.boundary_loops << " openings, " << (r.report.passed ? "passed" : "FAILED")
+              << " (stitch gap max " << std::fixed << std::setprecision(2) << q.stitch_gap_max_mm
+              << " mm, " << q.edges_crossing_body << " edges crossing the body, "
+              << q.self_intersections << " self-intersections, p95 stretch " << std::setprecision(3)
+              << q.stretch_p95 << ", " << r.report.frames << " frames, " << std::setprecision(1)
+              << r.report.total_seconds << " s)\n";
+}
+
+}  // namespace
+
+void register_dress_commands(CLI::App& app) {
+    auto a = std::make_shared<DressArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "dress",
+        "Dress a body in a pattern: place the pieces around it, sew them along geodesic strings "
+        "on the body, drape them with the cloth solver; writes the garment in the body's "
+        "coordinates and unit, and its quality report");
+    cmd->add_option("BODY", a->body, "Body mesh (OBJ, OFF, PLY, STL)")->required();
+    cmd->add_option("PATTERN", a->pattern,
+                    "Pattern file (GarmentCode specification, FreeSewing JSON, tapeline JSON) or "
+                    "a name in the pattern database")
+        ->required();
+    cmd->add_option("--units", a->units, "Length unit of the body mesh: m, dm, cm or mm");
+    cmd->add_option("--up", a->up, "Up axis of the body mesh")->capture_default_str();
+    cmd->add_option("--front", a->front, "Axis the body faces")->capture_default_str();
+    cmd->add_option("--format", a->format, "Pattern format when the extension does not tell");
+    cmd->add_option("--db", a->db, "Pattern database (SQLite file)");
+    cmd->add_option("--out", a->out, "Draped garment, Wavefront OBJ (seams welded, UVs in mm)")
+        ->required();
+    cmd->add_option("--ply", a->ply, "Also write the garment as PLY with per-vertex stretch");
+    cmd->add_option("--report", a->report, "Quality report (JSON)");
+    cmd->add_option("--glb", a->glb,
+                    "Also write body and garment as binary glTF (metres, +Y up, garment coloured "
+                    "by stretch)");
+    cmd->add_option("--picture", a->picture,
+                    "Also draw front, side and back views (PNG; garment coloured by stretch, "
+                    "seams drawn)");
+    cmd->add_option("--resolution", a->resolution, "Cloth edge length, mm")->capture_default_str();
+    cmd->add_option("--fabric", a->fabric,
+                    "Fabric: cotton_jersey, cotton_shirting, denim, silk_charmeuse, wool_suiting, "
+                    "or a .json fabric file")
+        ->capture_default_str();
+    cmd->add_option("--without", a->without, "Leave this piece (and its seams) out; repeatable")
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    cmd->add_option("--threads", a->threads, "Solver threads (0: all cores)")
+        ->capture_default_str();
+    cmd->add_option("--sew-seconds", a->sew_seconds,
+                    "Simulated time over which the seams are pulled shut (0 with --settle-seconds "
+                    "0: the placement only)")
+        ->capture_default_str();
+    cmd->add_option("--settle-seconds", a->settle_seconds,
+                    "Simulated time of the drape after sewing (more while the cloth moves)")
+        ->capture_default_str();
+    cmd->add_option("--gap", a->gap, "Clearance of the placed pieces from the body, mm")
+        ->capture_default_str();
+    cmd->add_option("--substeps", a->substeps, "Solver sub-steps per frame")->capture_default_str();
+    cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
+    cmd->add_flag("--strict", a->strict,
+                  "Exit non-zero, writing nothing, when a quality gate fails");
+    cmd->callback([a] { run_dress(*a); });
+}
+
+}  // namespace tapeline::app
