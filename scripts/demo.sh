@@ -39,6 +39,12 @@ echo "== grading: the aaron tank top (drafted for FreeSewing's cisFemaleAdult36)
     --to "$out/body_measurements.json" --out "$out/aaron_graded.json" --svg "$out/aaron_graded.svg" \
     --pareto "$out/aaron_pareto.png" --rules "$out/aaron_grade_rules.json" --seed 7
 
+echo "== dressing: the graded aaron tank top sewn and draped on the body (bindings left out)"
+"$bin" dress "$root/data/bodies/mh_female_average.obj" --units dm "$out/aaron_graded.json" \
+    --without aaron.armBinding --without aaron.neckBinding --resolution 15 --substeps 40 \
+    --out "$out/aaron_dressed.obj" --ply "$out/aaron_dressed.ply" --picture "$out/aaron_dressed.png" \
+    --report "$out/aaron_dressed.json" --glb "$out/aaron_dressed.glb"
+
 echo "== side-by-side benchmark on small analytic surfaces"
 "$bin" bench geodesic --surface icosphere:3 --surface ellipsoid:1,1,0.5:3:0.2 --surface icosphere:4 \
     --methods exact-mmp,exact-cgal,heat,heat-idt,dijkstra,gcf-window:4,gcf-window:8 \
@@ -54,4 +60,6 @@ echo "the curvature-flow path's unfolded strip is $out/spot_gcf_unfold.svg; the 
 echo "(girths with their tape loops, lengths with their paths, landmarks) are in"
 echo "$out/body_measurements.json and, for Seamly2D, $out/body_measurements.vit (drawn, front and"
 echo "side views with every tape labelled, in $out/body_measurements.svg and .png); the aaron tank top"
-echo "graded to that body is $out/aaron_graded.svg (fit table above, Pareto front aaron_pareto.png)."
+echo "graded to that body is $out/aaron_graded.svg (fit table above, Pareto front aaron_pareto.png),"
+echo "and dressed on it in $out/aaron_dressed.obj / .glb (picture aaron_dressed.png, quality report"
+echo "aaron_dressed.json: the quality gates are not reached yet, see docs/garment.md)."
