@@ -54,7 +54,6 @@ void note_read_only_open(const tp::PatternDatabase& database) {
     }
 }
 
-
 void print_validation(const tp::ValidationReport& r, const std::string& what) {
     for (const auto& w : r.warnings) {
         std::cerr << "tapeline: warning: " << what << ": " << w.message << '\n';
