@@ -53,17 +53,8 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 /// Cloth edges crossing cloth triangles of another piece (placement check).
 inline std::size_t piece_crossings(const std::vector<Vec3>& x, const std::vector<Tri>& tris,
                                    const std::vector<std::uint32_t>& tri_piece) {
-    GarmentMesh g;
-    g.positions = x;
-    g.triangles = tris;
-    g.uv.assign(tris.size(), {});
-    g.triangle_piece = tri_piece;
-    // Reuse the self-intersection count of quality.h on a body-free mesh: every crossing counts;
-    // pieces are disjoint meshes here, so a crossing is two pieces (or one folded piece) meeting.
-    std::vector<Vec3> no_points;
-    std::vector<Tri> no_tris;
-    (void)no_points;
-    (void)no_tris;
+    // Pieces are disjoint meshes here: an edge of one crossing a triangle of another is two
+    // pieces meeting before they are sewn.
     using K = CGAL::Simple_cartesian<double>;
     using P = K::Point_3;
     using Triangle = K::Triangle_3;
@@ -218,7 +209,6 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         }
         rep.pieces.push_back({piece.name, to_string(regions[i]), m.uv.size(), m.triangles.size()});
     }
-    out.placed = cloth.positions;
     rep.cloth_vertices = cloth.positions.size();
     rep.cloth_triangles = cloth.triangles.size();
     rep.placement_seconds = internal::seconds_since(t0);
