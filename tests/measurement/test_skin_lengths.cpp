@@ -34,6 +34,7 @@ const std::map<std::string, std::pair<double, double>> kRanges = {
     {"shoulder_to_wrist", {350, 800}},
     {"inseam", {600, 1000}},
     {"outseam", {850, 1300}},
+    {"waist_to_high_hip", {30, 160}},
     {"waist_to_hips", {60, 250}},
     {"waist_to_armpit", {100, 330}},
     {"back_neck_to_waist", {300, 600}},
@@ -80,6 +81,22 @@ TEST_P(SkinLengths, EveryLengthIsFoundPlausibleAndAgreesWithExactPaths) {
     // snap of the crotch, which lies in the gap between the legs, to the skin: 1 %).
     EXPECT_GE(*set.value("inseam"), 0.99 * (*r.result.landmarks.point("crotch"))[1]);
     EXPECT_LT(*set.value("shoulder_to_elbow"), *set.value("shoulder_to_wrist"));
+    // FreeSewing's waistToHips ends on the line its `hips` girth is taken at (the top hip), its
+    // waistToSeat on the hip girth's: each side tape ends at its girth's height, and the top hip
+    // is reached first.
+    for (const auto& [length, girth] :
+         {std::pair<std::string, std::string>{"waist_to_high_hip", "high_hip_girth"},
+          {"waist_to_hips", "hip_back"}}) {
+        const Measurement* m = set.find(length);
+        ASSERT_NE(m, nullptr);
+        const double end_y = std::min(m->points.front()[1], m->points.back()[1]);
+        const Measurement* g = set.find(girth);
+        const double level = g ? g->plane_point[1] : (*r.result.landmarks.point(girth))[1];
+        EXPECT_NEAR(end_y, level, 0.005 * r.result.frame.height) << length << " on " << GetParam();
+    }
+    EXPECT_LT(*set.value("waist_to_high_hip"), *set.value("waist_to_hips"));
+    EXPECT_EQ(set.find("waist_to_high_hip")->freesewing, "waistToHips");
+    EXPECT_EQ(set.find("waist_to_hips")->freesewing, "waistToSeat");
 
     // New lengths (README, "Lengths along the skin"): invariants that hold whatever the body.
     const auto& lm = r.result.landmarks;

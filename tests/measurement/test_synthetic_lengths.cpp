@@ -172,7 +172,7 @@ double closed_form_truth(const SyntheticBody& body, const SyntheticLengths& r,
     auto neck_b = [&](double y) { return body.neck_b_ratio() * body.neck_half_width(y); };
     auto leg_a = [&](double y) { return body.leg_half_width(y); };
     const double leg_top = 830;  // legs: y 20..830 (synthetic_body.h)
-    if (name == "waist_to_hips" || name == "waist_to_armpit") {
+    if (name == "waist_to_hips" || name == "waist_to_high_hip" || name == "waist_to_armpit") {
         return profile_arc(torso_a, p[1], q[1]);  // the torso's side, in the plane z = 0
     }
     if (name == "back_neck_to_waist" || name == "front_neck_to_waist") {
@@ -212,9 +212,15 @@ double closed_form_truth(const SyntheticBody& body, const SyntheticLengths& r,
 TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
     const SyntheticBody body(GetParam().options);
     const SyntheticLengths& r = measured(GetParam().options);
-    const char* names[] = {
-        "waist_to_hips", "waist_to_armpit", "back_neck_to_waist",  "front_neck_to_waist",
-        "inseam",        "outseam",         "shoulder_width_back", "across_back_shoulder_width"};
+    const char* names[] = {"waist_to_hips",
+                           "waist_to_high_hip",
+                           "waist_to_armpit",
+                           "back_neck_to_waist",
+                           "front_neck_to_waist",
+                           "inseam",
+                           "outseam",
+                           "shoulder_width_back",
+                           "across_back_shoulder_width"};
     for (const char* name : names) {
         const Measurement* m = r.result.measurements.find(name);
         ASSERT_NE(m, nullptr) << name;
@@ -239,6 +245,8 @@ TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
     };
     for (const Ends& e :
          {Ends{"waist_to_hips", SyntheticBody::kWaist, SyntheticBody::kHip},
+          Ends{"waist_to_high_hip", SyntheticBody::kWaist,
+               0.5 * (SyntheticBody::kWaist + SyntheticBody::kHip)},
           Ends{"waist_to_armpit", body.armpit_height(), SyntheticBody::kWaist},
           Ends{"back_neck_to_waist", SyntheticBody::kShoulder, SyntheticBody::kWaist},
           Ends{"front_neck_to_waist", SyntheticBody::kShoulder, SyntheticBody::kWaist},
@@ -259,7 +267,8 @@ TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
         }
     }
     // The end points lie in the symmetry plane the truth assumes.
-    for (const char* name : {"waist_to_hips", "waist_to_armpit", "inseam", "outseam"}) {
+    for (const char* name :
+         {"waist_to_hips", "waist_to_high_hip", "waist_to_armpit", "inseam", "outseam"}) {
         for (const auto* s : segments(r, name)) {
             EXPECT_NEAR(s->from[2], 0, 0.5) << name;
             EXPECT_NEAR(s->to[2], 0, 0.5) << name;

@@ -291,6 +291,16 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
         auto waist_side = [&](SkinLength<TriangleMesh>& s) {
             return hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
         };
+        // The top hip level is high_hip_girth's plane: halfway between the waist and the hip.
+        add({"waist_to_high_hip", {}, {}, 0}, {"waist_front", "waist_back", "hip_back"},
+            [&](auto& s) {
+                const std::string f = waist_side(s);
+                if (!f.empty())
+                    return f;
+                const Vec3 w = mid(P("waist_front"), P("waist_back"));
+                return hit({w[0], 0.5 * (P("waist_front")[1] + P("hip_back")[1]), w[2]},
+                           {out, 0, 0}, s, "top hip side");
+            });
         add({"waist_to_hips", {}, {}, 0}, {"waist_front", "waist_back", "hip_back"}, [&](auto& s) {
             const std::string f = waist_side(s);
             if (!f.empty())

@@ -94,7 +94,10 @@ inline const std::vector<CatalogueEntry>& catalogue() {
         {"inseam", "", "inside leg length", "inseam", "leg_crotch_to_floor", K::length, false},
         {"outseam", "", "outside leg length", "waistToFloor", "leg_waist_side_to_floor", K::length,
          false},
-        {"waist_to_hips", "", "", "waistToHips", "waist_to_hip_side", K::length, false},
+        // FreeSewing's `hips` line (its waistToHips) is the top hip, its `seat` line (waistToSeat)
+        // the hip girth's level.
+        {"waist_to_high_hip", "", "", "waistToHips", "waist_to_highhip_side", K::length, false},
+        {"waist_to_hips", "", "", "waistToSeat", "waist_to_hip_side", K::length, false},
         {"waist_to_armpit", "", "", "waistToArmpit", "armpit_to_waist_side", K::length, false},
         {"back_neck_to_waist", "5.4.5", "back neck point to waist", "", "neck_back_to_waist_b",
          K::length, false},
