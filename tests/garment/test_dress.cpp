@@ -2,13 +2,9 @@
 // on the bundled body and on population bodies the placement was not developed on, the whole
 // chain on the bundled body (seams closed, openings as the garment has, no penetration), and the
 // refusals of dress().
-#include <tapeline/core/mesh_io.h>
 #include <tapeline/garment/dress.h>
-#include <tapeline/measurement/measure.h>
 #include <tapeline/pattern/io_detect.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <tapeline_test/measured_body.h>
 
 #include <gtest/gtest.h>
 
@@ -23,21 +19,13 @@ namespace tp = tapeline::pattern;
 
 namespace {
 
-using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
-
-struct MeasuredBody {
-    tmeas::Body body;
-    tmeas::LandmarkSet landmarks;
-};
+using tapeline_test::measurement::MeasuredBody;
 
 MeasuredBody load_body(const std::string& path) {
-    const auto loaded = tapeline::read_triangle_mesh<Mesh>(path);
     tmeas::BodyOptions o;
     o.name = path;
     o.unit = tmeas::LengthUnit::dm;
-    MeasuredBody b{tmeas::make_body(loaded.mesh, o), {}};
-    b.landmarks = tmeas::measure_body(b.body).landmarks;
-    return b;
+    return tapeline_test::measurement::load_measured_body(path, o);
 }
 
 std::string bundled(const std::string& rel) {
@@ -73,6 +61,15 @@ TEST(Dress, ShirtOnTheBundledBody) {
         EXPECT_TRUE(s.closable) << s.name << ": " << s.problem;
         EXPECT_GT(s.pairs, 0u) << s.name;
     }
+    // Pairs the sewing closed were welded before the drape: they end exactly together, and a
+    // seam whose pairs all were welded reports no gap.
+    EXPECT_GT(rep.pairs_welded_before_drape, 0u);
+    EXPECT_LE(rep.pairs_welded_before_drape, r.sewing.pairs.size());
+    std::size_t together = 0;
+    for (const tg::Stitch& s : r.sewing.pairs) {
+        together += r.draped[s.a] == r.draped[s.b] ? 1 : 0;
+    }
+    EXPECT_GE(together, rep.pairs_welded_before_drape);
     // The gates are measured, whatever their outcome, and every figure is finite.
     ASSERT_EQ(rep.gates.size(), 6u);
     for (const tg::Gate& g : rep.gates) {

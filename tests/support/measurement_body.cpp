@@ -3,6 +3,7 @@
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/measurement/measure.h>
 #include <tapeline/measurement/synthetic_body.h>
+#include <tapeline_test/measured_body.h>
 #include <tapeline_test/measurement.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -52,6 +53,13 @@ Result measure_built(const std::vector<Vec3>& points, const Triangles& triangles
 }
 
 }  // namespace
+
+MeasuredBody load_measured_body(const std::string& path, const BodyOptions& options) {
+    const auto loaded = tapeline::read_triangle_mesh<SurfaceMesh>(path);
+    MeasuredBody b{meas::make_body(loaded.mesh, options), {}};
+    b.landmarks = meas::measure_body(b.body).landmarks;
+    return b;
+}
 
 Result measure_file(const std::string& path, const BodyOptions& options,
                     const std::string& overrides, const MeasureOptions& measure) {

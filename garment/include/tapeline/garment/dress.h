@@ -5,9 +5,11 @@
 //
 // The simulation runs in two phases. Sewing: gravity off, each stitch pair pulled along its string
 // to the string's middle over SewingOptions::sew_seconds (garment tools sew before they drape,
-// so that unsewn pieces do not fall off the body). Drape: a new solver from the sewn state with
-// gravity on and the pairs held by zero-length stitches, for settle_seconds and then until at most
-// 1 % of the vertices still move more than 0.3 mm per frame (or max_extra_seconds more).
+// so that unsewn pieces do not fall off the body). Drape: the pairs the sewing closed (within
+// SewingOptions::weld_within_mm) are welded into single vertices, the others are held by
+// zero-length stitches, and a new solver with gravity on runs from the sewn state for
+// settle_seconds and then until at most 1 % of the vertices still move more than 0.3 mm per
+// frame (or max_extra_seconds more).
 #pragma once
 
 #include <tapeline/core/errors.h>
@@ -88,6 +90,32 @@ inline std::size_t piece_crossings(const std::vector<Vec3>& x, const std::vector
         }
     }
     return n;
+}
+
+/// The cloth with the vertices of each weld class merged at their mean; triangles that collapse
+/// (two corners in one class) are left out. Rest shapes and grain stay per triangle.
+inline ClothModel welded_cloth(const ClothModel& cloth, const Welding& w) {
+    ClothModel m;
+    m.positions.assign(w.count, {0, 0, 0});
+    std::vector<int> count(w.count, 0);
+    for (std::size_t v = 0; v < cloth.positions.size(); ++v) {
+        m.positions[w.weld_map[v]] = vec3::add(m.positions[w.weld_map[v]], cloth.positions[v]);
+        ++count[w.weld_map[v]];
+    }
+    for (std::size_t v = 0; v < w.count; ++v) {
+        m.positions[v] = vec3::scale(m.positions[v], 1.0 / count[v]);
+    }
+    for (std::size_t t = 0; t < cloth.triangles.size(); ++t) {
+        const Tri& c = cloth.triangles[t];
+        const Tri r{w.weld_map[c[0]], w.weld_map[c[1]], w.weld_map[c[2]]};
+        if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
+            continue;
+        }
+        m.triangles.push_back(r);
+        m.rest_uv.push_back(cloth.rest_uv[t]);
+        m.grain.push_back(cloth.grain[t]);
+    }
+    return m;
 }
 
 }  // namespace internal
@@ -300,12 +328,30 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         cloth.positions = sew.positions();
     }
     double simulated = frames * frame;
+    // Placement only (no sewing, no drape): nothing is welded, the pieces stay as placed, so that
+    // they can be looked at.
+    const bool placement_only = o.sewing.sew_seconds == 0 && o.sewing.settle_seconds == 0 &&
+                                o.sewing.max_extra_seconds == 0;
     {
-        DrapeSolver drape(cloth, o.fabric, o.drape, &sdf);
-        std::vector<Stitch> stitches = plan.pairs;
-        for (Stitch& s : stitches) {
-            s.rest_mm = 0;
-            s.compliance = 0;
+        // Pairs the sewing brought together are welded into one vertex before the drape (a seam
+        // then cannot open, and bending acts across it); pairs still apart stay stitches.
+        const double weld_within =
+            o.sewing.weld_within_mm > 0 ? o.sewing.weld_within_mm : 0.5 * o.resolution_mm;
+        std::vector<Stitch> closed, open;
+        for (const Stitch& s : placement_only ? std::vector<Stitch>{} : plan.pairs) {
+            const double g = vec3::norm(vec3::sub(cloth.positions[s.a], cloth.positions[s.b]));
+            (g <= weld_within ? closed : open).push_back(s);
+        }
+        rep.pairs_welded_before_drape = closed.size();
+        const Welding pre = weld_pairs(cloth.positions.size(), closed);
+        const ClothModel welded = internal::welded_cloth(cloth, pre);
+        DrapeSolver drape(welded, o.fabric, o.drape, &sdf);
+        std::vector<Stitch> stitches;
+        for (const Stitch& s : open) {
+            const std::uint32_t a = pre.weld_map[s.a], b = pre.weld_map[s.b];
+            if (a != b) {
+                stitches.push_back({a, b, 0.0, 0.0});
+            }
         }
         drape.set_stitches(stitches);
         const std::size_t n_settle = std::size_t(std::ceil(o.sewing.settle_seconds / frame));
@@ -323,7 +369,10 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             }
         }
         simulated += double(drape.positions().empty() ? 0 : last.frame) * frame;
-        out.draped = drape.positions();
+        out.draped.resize(cloth.positions.size());
+        for (std::size_t v = 0; v < cloth.positions.size(); ++v) {
+            out.draped[v] = drape.positions()[pre.weld_map[v]];
+        }
     }
     rep.drape_seconds = internal::seconds_since(t0);
     rep.frames = frames;
@@ -341,10 +390,6 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         sr.gap_max_mm = std::max(sr.gap_max_mm, g);
         gap_max = std::max(gap_max, g);
     }
-    // Placement only (no sewing, no drape): the pieces as placed, not welded, so that they can be
-    // looked at.
-    const bool placement_only = o.sewing.sew_seconds == 0 && o.sewing.settle_seconds == 0 &&
-                                o.sewing.max_extra_seconds == 0;
     const Welding w =
         weld_pairs(out.draped.size(), placement_only ? std::vector<Stitch>{} : plan.pairs);
     GarmentMesh& g = out.garment;

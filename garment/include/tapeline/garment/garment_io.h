@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <ostream>
@@ -110,6 +111,13 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"stretch_max", q.stretch_max},
                     {"stretch_above_105_percent", q.stretch_above_105_percent},
                     {"moving_fraction", q.moving_fraction}};
+    // Where the first crossings are, in the body's canonical frame (mm; x to the body's left, y
+    // up from the floor, z to the front).
+    nlohmann::ordered_json crossings = nlohmann::ordered_json::array();
+    for (const Vec3& p : q.body_crossing_points) {
+        crossings.push_back({std::lround(p[0]), std::lround(p[1]), std::lround(p[2])});
+    }
+    j["quality"]["body_crossings_canonical_mm"] = crossings;
     nlohmann::ordered_json seams = nlohmann::ordered_json::array();
     for (const SeamReport& s : r.seams) {
         seams.push_back({{"name", s.name},
@@ -137,7 +145,8 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
     j["mesh"] = {{"cloth_vertices", r.cloth_vertices},
                  {"cloth_triangles", r.cloth_triangles},
                  {"garment_vertices", r.garment_vertices},
-                 {"boundary_loops", r.boundary_loops}};
+                 {"boundary_loops", r.boundary_loops},
+                 {"pairs_welded_before_drape", r.pairs_welded_before_drape}};
     j["simulation"] = {{"frames", r.frames},
                        {"simulated_seconds", r.simulated_seconds},
                        {"ms_per_step_per_10k_vertices", r.ms_per_step_per_10k},

@@ -52,6 +52,9 @@ struct SewingOptions {
     /// Seams whose two sides differ by more than this fraction of the longer are reported as not
     /// closable (they are still sewn; the report names them).
     double length_mismatch = 0.15;
+    /// After sewing, pairs closer than this are welded into one vertex for the drape (0: half
+    /// the resolution); pairs further apart stay zero-length stitches.
+    double weld_within_mm = 0;
 };
 
 /// Everything dress() needs besides the body and the pattern.
@@ -96,7 +99,9 @@ struct QualityFigures {
     std::size_t vertices_inside_body = 0;
     double max_depth_mm = 0;              ///< deepest cloth vertex inside the body
     std::size_t edges_crossing_body = 0;  ///< cloth edges crossing body triangles
-    std::size_t self_intersections = 0;   ///< cloth edges crossing cloth triangles
+    /// Midpoints of the first (up to 100) crossing edges, mm: where to look.
+    std::vector<Vec3> body_crossing_points;
+    std::size_t self_intersections = 0;  ///< cloth edges crossing cloth triangles
     double stretch_median = 1, stretch_p95 = 1, stretch_max = 1;
     double stretch_above_105_percent = 0;  ///< % of triangles with a stretch above 1.05
     double moving_fraction = 0;            ///< vertices that moved > 0.3 mm in the last frame
@@ -110,8 +115,9 @@ struct DressReport {
     std::size_t cloth_vertices = 0, cloth_triangles = 0;  ///< before welding
     std::size_t garment_vertices = 0;                     ///< after welding
     std::size_t boundary_loops = 0;                       ///< openings of the welded garment
-    std::size_t placement_vertices_inside = 0;            ///< after placement (must be 0)
-    std::size_t placement_piece_intersections = 0;        ///< after placement (must be 0)
+    std::size_t pairs_welded_before_drape = 0;      ///< stitch pairs closed by the sewing phase
+    std::size_t placement_vertices_inside = 0;      ///< after placement (must be 0)
+    std::size_t placement_piece_intersections = 0;  ///< after placement (must be 0)
     QualityFigures quality;
     std::vector<Gate> gates;
     bool passed = false;

@@ -115,6 +115,10 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
                              P(g.positions[b][0], g.positions[b][1], g.positions[b][2]));
         if (body_tree.do_intersect(s)) {
             ++q.edges_crossing_body;
+            if (q.body_crossing_points.size() < 100) {
+                q.body_crossing_points.push_back(
+                    vec3::scale(vec3::add(g.positions[a], g.positions[b]), 0.5));
+            }
         }
     }
     // Cloth self-intersections: an edge crossing a triangle it does not share a vertex with.

@@ -1,0 +1,23 @@
+// A body prepared and measured by tapeline_test_support_measurement, for the tests of modules
+// built on measurement (garment): its Body and landmarks, without compiling the measurement
+// pipeline again in the calling test (DESIGN.md §5).
+#pragma once
+
+#include <tapeline/measurement/body.h>
+#include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/measurement_types.h>
+
+#include <string>
+
+namespace tapeline_test::measurement {
+
+struct MeasuredBody {
+    tapeline::measurement::Body body;
+    tapeline::measurement::LandmarkSet landmarks;
+};
+
+/// read_triangle_mesh<Surface_mesh<Epick>>, make_body, then measure_body's landmarks.
+MeasuredBody load_measured_body(const std::string& path,
+                                const tapeline::measurement::BodyOptions& options);
+
+}  // namespace tapeline_test::measurement
