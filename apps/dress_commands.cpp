@@ -1,14 +1,16 @@
 // `tapeline dress BODY --units dm PATTERN --out dressed.obj [--ply d.ply] [--report r.json]
-// [--resolution MM] [--fabric NAME|fabric.json] [--without PIECE] [--threads N] [--strict]`:
-// measures the body (landmarks), places the pattern's pieces around it, sews them along geodesic
-// strings, drapes them with the cloth solver and writes the welded garment in the body's own
-// coordinates and unit, with its quality report (garment module).
+// [--resolution MM] [--fabric NAME|fabric.json] [--without PIECE] [--threads N] [--strict]
+// [--to-body --from SET [--from-set NAME] [--seed S]]`: measures the body (landmarks; with
+// --to-body every measurement, and grades the pattern from SET to them first), places the pattern's
+// pieces around it, sews them along geodesic strings, drapes them with the cloth solver and writes
+// the welded garment in the body's own coordinates and unit, with its quality report (garment
+// module).
 #include "commands.h"
+#include "measured_body.h"
 #include "output.h"
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/core/mesh_io.h>
 #include <tapeline/garment/dress.h>
 #include <tapeline/garment/fabric.h>
 #include <tapeline/garment/garment_io.h>
@@ -16,11 +18,8 @@
 #ifdef TAPELINE_HAVE_GLTF
 #include <tapeline/garment/gltf.h>
 #endif
-#include <tapeline/measurement/measure.h>
 #include <tapeline/pattern/validate.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <tapeline/sizes/read_input.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -30,6 +29,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,7 +38,6 @@ namespace {
 
 namespace tm = tapeline::measurement;
 namespace tg = tapeline::garment;
-using DressMesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
 struct DressArgs {
     std::string body, units, pattern, format, db;
@@ -55,6 +54,9 @@ struct DressArgs {
     int substeps = tg::DrapeOptions{}.substeps;
     bool no_self_collision = false;
     bool strict = false;
+    bool to_body = false;
+    std::string from, from_set;
+    std::uint32_t seed = 1;
 };
 
 void run_dress(const DressArgs& a) {
@@ -112,16 +114,28 @@ void run_dress(const DressArgs& a) {
     }
     bo.up = tm::Axis::parse(a.up, "--up");
     bo.front = tm::Axis::parse(a.front, "--front");
+    if (a.to_body && a.from.empty()) {
+        throw InvalidInput(
+            "--to-body needs --from: the measurement set the pattern was drafted for");
+    }
+    if (!a.to_body && (!a.from.empty() || !a.from_set.empty())) {
+        throw InvalidInput("--from and --from-set are for --to-body");
+    }
     pattern::Pattern pat = load_pattern(a.pattern, a.db, a.format);
     pattern::require_valid(pat);
+    std::optional<sizes::MeasurementSet> from;
+    if (a.to_body) {
+        from = sizes::read_measurement_input(a.from, a.from_set);
+    }
 
-    const auto loaded = read_triangle_mesh<DressMesh>(a.body);
-    const auto t1 = Clock::now();
-    const tm::Body body = tm::make_body(loaded.mesh, bo);
-    const tm::BodyMeasurements m = tm::measure_body(body);
-    const double measure_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+    const MeasuredBody mb = measured_body(a.body, bo, a.to_body);
+    const tm::Body& body = mb.body;
+    const double measure_seconds = mb.seconds;
+    if (a.to_body) {
+        pat = grade_for_body(pat, *from, *mb.measurements, a.seed, std::size_t(a.threads));
+    }
 
-    tg::DressResult r = tg::dress(body, m.landmarks, std::move(pat), o);
+    tg::DressResult r = tg::dress(body, mb.landmarks, std::move(pat), o);
     r.report.measure_seconds = measure_seconds;
     r.report.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
@@ -251,6 +265,15 @@ void register_dress_commands(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--substeps", a->substeps, "Solver sub-steps per frame")->capture_default_str();
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
+    cmd->add_flag("--to-body", a->to_body,
+                  "First measure the body and grade the pattern to it (measure, grade, dress in "
+                  "one command; needs --from)");
+    cmd->add_option("--from", a->from,
+                    "With --to-body: the measurement set the pattern was drafted for (.json, "
+                    ".vit, a FreeSewing sets file with --from-set)");
+    cmd->add_option("--from-set", a->from_set, "Set name inside a FreeSewing sets file");
+    cmd->add_option("--seed", a->seed, "Random seed of the grading (with --to-body)")
+        ->capture_default_str();
     cmd->add_flag("--strict", a->strict,
                   "Exit non-zero, writing nothing, when a quality gate fails");
     cmd->callback([a] { run_dress(*a); });

@@ -4,6 +4,8 @@
 #include "commands.h"
 
 #include <tapeline/core/errors.h>
+#include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <CLI/CLI.hpp>
 
@@ -84,6 +86,37 @@ tp::Pattern load(const GradeArgs& a) {
     return tp::PatternDatabase(path, o).load(a.pattern);
 }
 
+/// grade_pattern with the FreeSewing bindings and seam table when the pattern is a FreeSewing
+/// draft (unless `freesewing_bindings` is false); the graded pattern keeps the seams it was graded
+/// with. `skipped_seams` receives the seam rules that could not be applied.
+tg::GradeResult grade_with_seams(tp::Pattern base, const sizes::MeasurementSet& from,
+                                 const sizes::MeasurementSet& to, const tg::GradingOptions& o,
+                                 bool freesewing_bindings,
+                                 std::vector<std::string>& skipped_seams) {
+    std::vector<tp::SeamSpec> seams;
+    if (freesewing_bindings && base.designer == "FreeSewing") {
+        tg::add_freesewing_bindings(base);
+        // The importer stored the derived seams a pattern can hold; the rest join here.
+        for (tp::SeamSpec& s : tp::freesewing_seams(base, &skipped_seams)) {
+            const bool held = std::any_of(base.seams.begin(), base.seams.end(),
+                                          [&](const tp::Seam& q) { return q.name == s.name; });
+            if (!held) {
+                seams.push_back(std::move(s));
+            }
+        }
+    }
+    tg::GradeResult g = tg::grade_pattern(base, from, to, o, seams);
+    if (freesewing_bindings && base.designer == "FreeSewing" && seams.empty() &&
+        base.seams.empty() && skipped_seams.empty()) {
+        g.report.notes.push_back("no seam table for FreeSewing design '" + base.name +
+                                 "': graded without seams");
+    }
+    for (const tp::Seam& s : tp::pattern_seams(seams)) {
+        g.pattern.seams.push_back(s);  // the graded pattern keeps the seams it was graded with
+    }
+    return g;
+}
+
 void run_grade(const GradeArgs& a) {
     // Everything is read and checked before anything is computed or written.
     const std::string out_ext = extension(a.out);
@@ -104,19 +137,6 @@ void run_grade(const GradeArgs& a) {
             std::cerr << "tapeline: warning: " << why << "; '" << name << "' left out\n";
         }
     }
-    std::vector<tp::SeamSpec> seams;
-    std::vector<std::string> skipped_seams;
-    if (!a.no_fs_bindings && base.designer == "FreeSewing") {
-        tg::add_freesewing_bindings(base);
-        // The importer stored the derived seams a pattern can hold; the rest join here.
-        for (tp::SeamSpec& s : tp::freesewing_seams(base, &skipped_seams)) {
-            const bool held = std::any_of(base.seams.begin(), base.seams.end(),
-                                          [&](const tp::Seam& q) { return q.name == s.name; });
-            if (!held) {
-                seams.push_back(std::move(s));
-            }
-        }
-    }
     tg::GradingOptions o;
     o.seed = a.seed;
     o.population = a.population;
@@ -124,15 +144,8 @@ void run_grade(const GradeArgs& a) {
     o.threads = a.threads;
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
-    tg::GradeResult g = tg::grade_pattern(base, from, to, o, seams);
-    if (!a.no_fs_bindings && base.designer == "FreeSewing" && seams.empty() && base.seams.empty() &&
-        skipped_seams.empty()) {
-        g.report.notes.push_back("no seam table for FreeSewing design '" + base.name +
-                                 "': graded without seams");
-    }
-    for (const tp::Seam& s : tp::pattern_seams(seams)) {
-        g.pattern.seams.push_back(s);  // the graded pattern keeps the seams it was graded with
-    }
+    std::vector<std::string> skipped_seams;
+    tg::GradeResult g = grade_with_seams(base, from, to, o, !a.no_fs_bindings, skipped_seams);
     for (const std::string& s : skipped_seams) {
         g.report.notes.push_back("seam rule '" + s + "' not applied: a chain end is not an " +
                                  "outline vertex of this draft");
@@ -239,6 +252,29 @@ void run_grade(const GradeArgs& a) {
 
 }  // namespace
 #endif
+
+pattern::Pattern grade_for_body(const pattern::Pattern& base, const sizes::MeasurementSet& from,
+                                const sizes::MeasurementSet& to, std::uint32_t seed,
+                                std::size_t threads) {
+#ifdef TAPELINE_HAVE_GRADING
+    tg::GradingOptions o;
+    o.seed = seed;
+    o.threads = threads;
+    std::vector<std::string> skipped_seams;
+    tg::GradeResult g = grade_with_seams(base, from, to, o, true, skipped_seams);
+    for (const std::string& note : g.report.notes) {
+        std::cerr << "tapeline: grading: " << note << '\n';
+    }
+    std::cerr << "tapeline: graded " << base.name << " from " << from.name << " to " << to.name
+              << '\n';
+    return std::move(g.pattern);
+#else
+    (void)base, (void)from, (void)to, (void)seed, (void)threads;
+    throw InvalidInput(
+        "--to-body: this tapeline was built without Ceres or pagmo, so it cannot grade "
+        "(install libceres-dev and libpagmo-dev)");
+#endif
+}
 
 void register_grade_commands(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(

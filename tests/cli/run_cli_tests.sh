@@ -946,6 +946,28 @@ assert r["mesh"]["boundary_loops"] == len(r["pieces"]) == 8, r["mesh"]  # unsewn
 assert open("placed.png", "rb").read(8) == b"\x89PNG\r\n\x1a\n"
 PY
 then ok "dress: placement report agrees with the files"; else fail "dress: placement report"; fi
+# --to-body: measure, grade, dress in one command. The bundled body's bust (845 mm) is far below
+# the base set's chest (979 mm), so the graded tank top is placed narrower than the base one.
+fsm="$root/data/patterns/aaron_cisFemaleAdult36_measurements.json"
+expect_fail "dress: --to-body without --from" "needs --from" "$bin" dress "$body" --units dm "$fs" \
+  --out x.obj --to-body
+expect_fail "dress: --from without --to-body" "are for --to-body" "$bin" dress "$body" --units dm "$fs" \
+  --out x.obj --from "$fsm"
+expect_fail "dress: --to-body with a missing base set" "nope.json" "$bin" dress "$body" --units dm "$fs" \
+  --out x.obj --to-body --from nope.json
+if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a --to-body refusal left a file"; else ok "dress: --to-body refusals write nothing"; fi
+place_fs() {
+  "$bin" dress "$body" --units dm "$fs" --without aaron.armBinding --without aaron.neckBinding \
+    --resolution 30 --sew-seconds 0 --settle-seconds 0 "$@" 2>tb_err.txt
+}
+if place_fs --out base.obj && place_fs --out graded.obj --to-body --from "$fsm" --seed 3 &&
+   grep -q "graded .* from aaron_cisFemaleAdult36_measurements" tb_err.txt && $py - <<'PY'
+def width(path):
+    xs = [float(l.split()[1]) for l in open(path) if l.startswith("v ")]
+    return max(xs) - min(xs)
+assert width("graded.obj") < 0.95 * width("base.obj"), (width("graded.obj"), width("base.obj"))
+PY
+then ok "dress --to-body grades the pattern to the body first"; else fail "dress --to-body: $(tail -c 300 tb_err.txt)"; fi
 fi
 
 if [ $sections_run -eq 0 ]; then fail "no section named '$section'"; fi
