@@ -240,6 +240,37 @@ TEST(GarmentQuality, CountsEdgesCrossingABodyAndVerticesInside) {
     EXPECT_EQ(q.self_intersections, 0u);
 }
 
+// set_damping acts from the next step: a free triangle falling under gravity reaches the discrete
+// terminal velocity of v <- v·exp(-k·h) + g·h, i.e. g·h / (1 - exp(-k·h)), and a bad rate is
+// refused.
+TEST(GarmentDamping, RaisedDampingReachesTheDiscreteTerminalVelocity) {
+    tg::ClothModel m;
+    m.positions = {v3(0, 0, 0), v3(10, 0, 0), v3(0, 0, 10)};
+    m.triangles = {{0, 1, 2}};
+    m.rest_uv = {{tg::UV{0, 0}, tg::UV{10, 0}, tg::UV{0, 10}}};
+    m.grain = {tg::UV{0, 1}};
+    tg::DrapeOptions o;
+    o.damping_per_second = 0;
+    o.threads = 1;
+    tg::DrapeSolver solver(m, tg::FabricParams{}, o);
+    for (int f = 0; f < 5; ++f) {
+        solver.step();
+    }
+    const double k = 6;
+    solver.set_damping(k);
+    for (int f = 0; f < 90; ++f) {  // 3 s: exp(-18) of the start is left
+        solver.step();
+    }
+    const double h = o.frame_seconds / o.substeps;
+    const double terminal = -9810 * h / (1 - std::exp(-k * h));
+    for (const tg::Vec3& v : solver.velocities()) {
+        EXPECT_NEAR(v[1], terminal, 1e-6 * std::abs(terminal));
+        EXPECT_NEAR(v[0], 0, 1e-9);
+    }
+    EXPECT_THROW(solver.set_damping(-1), tapeline::InvalidInput);
+    EXPECT_THROW(solver.set_damping(std::nan("")), tapeline::InvalidInput);
+}
+
 TEST(GarmentFabric, CatalogueAndFileRefusals) {
     EXPECT_EQ(tg::fabric_from("denim").name, "denim");
     try {

@@ -101,6 +101,16 @@ public:
     const FabricParams& fabric() const { return fabric_; }
     const DrapeOptions& options() const { return options_; }
 
+    /// Velocity damping rate from the next step on (fraction lost per second; finite, >= 0).
+    /// Damping changes how fast the cloth comes to rest, not where.
+    void set_damping(double per_second) {
+        if (!(std::isfinite(per_second) && per_second >= 0)) {
+            throw InvalidInput("DrapeSolver: damping must be finite and >= 0, got " +
+                               std::to_string(per_second));
+        }
+        options_.damping_per_second = per_second;
+    }
+
     /// Back to the initial positions, zero velocity, frame 0 (attachments and stitches stay).
     void reset();
 

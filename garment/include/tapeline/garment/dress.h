@@ -8,8 +8,8 @@
 // so that unsewn pieces do not fall off the body). Drape: the pairs the sewing closed (within
 // SewingOptions::weld_within_mm) are welded into single vertices, the others are held by
 // zero-length stitches, and a new solver with gravity on runs from the sewn state for
-// settle_seconds and then until at most 1 % of the vertices still move more than 0.3 mm per
-// frame (or max_extra_seconds more).
+// settle_seconds and then, with the damping raised to settle_damping_per_second, until at most
+// 1 % of the vertices still move more than 0.3 mm per frame (or max_extra_seconds more).
 #pragma once
 
 #include <tapeline/core/errors.h>
@@ -366,6 +366,10 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             progress.advance();
             if (f + 1 >= n_settle && last.moving_fraction <= 0.01) {
                 break;
+            }
+            if (f + 1 == n_settle) {
+                drape.set_damping(
+                    std::max(o.drape.damping_per_second, o.sewing.settle_damping_per_second));
             }
         }
         simulated += double(drape.positions().empty() ? 0 : last.frame) * frame;

@@ -155,12 +155,20 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                             {"placement", r.placement_seconds}, {"strings", r.strings_seconds},
                             {"drape", r.drape_seconds},         {"quality", r.quality_seconds},
                             {"total", r.total_seconds}};
-    j["options"] = {
-        {"resolution_mm", o.resolution_mm},       {"gap_mm", o.placement.gap_mm},
-        {"sew_seconds", o.sewing.sew_seconds},    {"settle_seconds", o.sewing.settle_seconds},
-        {"frame_seconds", o.drape.frame_seconds}, {"substeps", o.drape.substeps},
-        {"iterations", o.drape.iterations},       {"self_collision", o.drape.self_collision},
-        {"sdf_cell_mm", o.sdf_cell_mm},           {"without", o.without_pieces}};
+    j["options"] = {{"resolution_mm", o.resolution_mm},
+                    {"gap_mm", o.placement.gap_mm},
+                    {"sew_seconds", o.sewing.sew_seconds},
+                    {"settle_seconds", o.sewing.settle_seconds},
+                    {"frame_seconds", o.drape.frame_seconds},
+                    {"substeps", o.drape.substeps},
+                    {"iterations", o.drape.iterations},
+                    {"self_collision", o.drape.self_collision},
+                    {"sdf_cell_mm", o.sdf_cell_mm},
+                    {"without", o.without_pieces},
+                    {"damping_per_second", o.drape.damping_per_second},
+                    {"max_extra_seconds", o.sewing.max_extra_seconds},
+                    {"settle_damping_per_second", o.sewing.settle_damping_per_second},
+                    {"weld_within_mm", o.sewing.weld_within_mm}};
     j["fabric"] = {{"name", fabric.name},
                    {"density_g_m2", fabric.density_g_m2},
                    {"stretch_warp_n_m", fabric.stretch_warp_n_m},

@@ -47,8 +47,11 @@ struct SewingOptions {
     double sew_seconds = 0.6;      ///< the strings shrink to zero over this simulated time
     double settle_seconds = 1.4;   ///< simulated time after the seams are closed
     double max_extra_seconds = 2;  ///< more settling while the cloth still moves
-    double string_offset_mm = 8;   ///< strings run this far outside the skin
-    double compliance = 1e-4;      ///< XPBD compliance of the sewing pull, mm/N
+    /// Velocity damping (fraction lost per second) during that extra settling: it changes how
+    /// fast the garment comes to rest, not where.
+    double settle_damping_per_second = 6;
+    double string_offset_mm = 8;  ///< strings run this far outside the skin
+    double compliance = 1e-4;     ///< XPBD compliance of the sewing pull, mm/N
     /// Seams whose two sides differ by more than this fraction of the longer are reported as not
     /// closable (they are still sewn; the report names them).
     double length_mismatch = 0.15;
