@@ -1,12 +1,13 @@
 #!/usr/bin/python3
-"""Runs `tapeline dress` for every pattern on every body and writes a table: per drape the gates
+"""Runs `tapeline dress` for every pattern on every body (FreeSewing drafts graded to the body
+first with --to-body, from the set they were drafted for) and writes a table: per drape the gates
 (stitch gap, cloth edges crossing the body, depth, self-intersections, p95 stretch, static), the
 success, the vertices and the times; then the success rate, the median time and every failure with
 its reason.
 
 usage: drape_population.py TAPELINE DATA_DIR OUT.md [--bodies bundled|dev|holdout|all]
                            [--patterns NAME ...] [--resolution MM] [--threads N] [--substeps N]
-                           [--json OUT.jsonl]
+                           [--json OUT.jsonl] [--no-grading]
   DATA_DIR: ../shared/data (bodies/, bodies/population/, patterns/)
   bundled: the seven bundled MakeHuman bodies; dev: mh_pop_000 ... mh_pop_029;
   holdout: mh_pop_030 ... mh_pop_039 (kept out of development).
@@ -61,6 +62,8 @@ def main():
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--substeps", type=int, default=40)
     ap.add_argument("--json")
+    ap.add_argument("--no-grading", action="store_true",
+                    help="dress the FreeSewing drafts as drafted (default: --to-body)")
     a = ap.parse_args()
     rows = []
     work = tempfile.mkdtemp(prefix="drape_")
@@ -75,6 +78,11 @@ def main():
                "--substeps", str(a.substeps)]
         for w in without:
             cmd += ["--without", w]
+        if rel.startswith("patterns/freesewing/") and not a.no_grading:
+            # Graded to the body first, from the set the draft was made for.
+            cmd += ["--to-body", "--from",
+                    os.path.join(a.data, "patterns/freesewing/measurement_sets.json"),
+                    "--from-set", "cisFemaleAdult36"]
         t0 = time.time()
         p = subprocess.run(cmd, capture_output=True, text=True)
         wall = time.time() - t0
@@ -101,8 +109,10 @@ def main():
     ran = [r for r in rows if "quality" in r]
     lines = ["# Drape benchmark", "",
              "Command: `benchmarks/scripts/drape_population.py %s %s %s --bodies %s --resolution %g"
-             " --threads %d --substeps %d`" % ("build/apps/tapeline", "../shared/data", a.out,
-                                               a.bodies, a.resolution, a.threads, a.substeps), "",
+             " --threads %d --substeps %d --patterns %s%s`" % (
+                 "build/apps/tapeline", "../shared/data", a.out, a.bodies, a.resolution,
+                 a.threads, a.substeps, " ".join(a.patterns),
+                 " --no-grading" if a.no_grading else ""), "",
              "Success: %d of %d drapes (%.0f %%); median wall time of the drapes that ran: %s s." %
              (len(ok), len(rows), 100.0 * len(ok) / max(len(rows), 1),
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",
