@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -269,6 +270,52 @@ TEST(GarmentDamping, RaisedDampingReachesTheDiscreteTerminalVelocity) {
     }
     EXPECT_THROW(solver.set_damping(-1), tapeline::InvalidInput);
     EXPECT_THROW(solver.set_damping(std::nan("")), tapeline::InvalidInput);
+}
+
+namespace {
+// The exact signed distance of a sphere.
+struct SphereCollider : tg::Collider {
+    double r;
+    explicit SphereCollider(double radius) : r(radius) {}
+    double signed_distance(const tg::Vec3& p, tg::Vec3* gradient) const override {
+        const double n = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+        if (gradient) {
+            *gradient = n > 0 ? tg::Vec3{p[0] / n, p[1] / n, p[2] / n} : tg::Vec3{0, 1, 0};
+        }
+        return n - r;
+    }
+};
+}  // namespace
+
+// The cloth keeps DrapeOptions::body_clearance_mm from the collider (by default the fabric's
+// thickness): a square dropped on an exact sphere rests with its closest vertex at the clearance.
+TEST(GarmentClearance, ClothRestsAtTheClearanceFromTheCollider) {
+    const SphereCollider sphere(60);
+    for (const double clearance : {0.0, 3.0}) {
+        tg::ClothModel m =
+            tapeline_test::cloth_grid(12, 12, 10, v3(-60, 75, -60), v3(1, 0, 0), v3(0, 0, 1));
+        tg::DrapeOptions o;
+        o.body_clearance_mm = clearance;
+        o.self_collision = false;
+        tg::FabricParams f;
+        f.thickness_mm = 1;
+        tg::DrapeSolver solver(m, f, o, &sphere);
+        for (int k = 0; k < 45; ++k) {
+            solver.step();
+        }
+        double closest = 1e300;
+        for (const tg::Vec3& p : solver.positions()) {
+            closest = std::min(closest, sphere.signed_distance(p, nullptr));
+        }
+        const double expected = clearance > 0 ? clearance : f.thickness_mm;
+        EXPECT_NEAR(closest, expected, 0.05) << "clearance option " << clearance;
+    }
+    tg::DrapeOptions bad;
+    bad.body_clearance_mm = -1;
+    EXPECT_THROW(
+        tg::DrapeSolver(tapeline_test::cloth_grid(2, 2, 10, v3(0, 0, 0), v3(1, 0, 0), v3(0, 0, 1)),
+                        tg::FabricParams{}, bad),
+        tapeline::InvalidInput);
 }
 
 TEST(GarmentFabric, CatalogueAndFileRefusals) {

@@ -38,7 +38,8 @@
 // Collisions. Body: each sub-step first sweeps every vertex's motion through the collider by
 // sphere tracing (the distance is 1-Lipschitz, so stepping by it never skips the surface) and
 // stops a vertex at the body's surface; then every constraint pass pushes vertices out to the
-// fabric thickness along the distance gradient, with Coulomb friction. Cloth–cloth: vertex–
+// clearance (DrapeOptions::body_clearance_mm; by default the fabric thickness) along the distance
+// gradient, with Coulomb friction. Cloth–cloth: vertex–
 // triangle proximity within the thickness, detected once per sub-step through a spatial hash of
 // the predicted positions; the side is taken from the sub-step's start, so a vertex that crossed
 // a triangle within one sub-step is pushed back. Edge–edge pairs, continuous self-collision and
@@ -154,6 +155,7 @@ private:
     FabricParams fabric_;
     DrapeOptions options_;
     const Collider* collider_;
+    double clearance_ = 0;  // distance kept from the collider (options or the thickness)
     std::unique_ptr<tbb::task_arena> arena_;
 
     std::vector<Vec3> x_, v_, p_;
@@ -258,6 +260,10 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
     if (!internal::finite3(options_.gravity)) {
         throw InvalidInput(where + "options.gravity is not finite");
     }
+    if (!(std::isfinite(options_.body_clearance_mm) && options_.body_clearance_mm >= 0)) {
+        throw InvalidInput(where + "options.body_clearance_mm must be finite and >= 0, got " +
+                           num(options_.body_clearance_mm));
+    }
     if (!(std::isfinite(options_.damping_per_second) && options_.damping_per_second >= 0)) {
         throw InvalidInput(where + "options.damping_per_second must be finite and >= 0, got " +
                            num(options_.damping_per_second));
@@ -292,6 +298,7 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
     if (!(fabric_.density_g_m2 > 0)) {
         throw InvalidInput(where + "fabric.density_g_m2 must be > 0");
     }
+    clearance_ = options_.body_clearance_mm > 0 ? options_.body_clearance_mm : fabric_.thickness_mm;
     // Cloth.
     const std::size_t n = model_.positions.size(), nt = model_.triangles.size();
     if (n == 0 || nt == 0) {
@@ -773,7 +780,7 @@ inline bool DrapeSolver::first_hit(std::size_t i) {
         return false;  // cannot reach the surface
     }
     const Vec3 dir = scale(move, 1 / length);
-    const double min_step = std::max(0.05, 0.1 * fabric_.thickness_mm);
+    const double min_step = std::max(0.05, 0.1 * clearance_);
     double t = std::max(d0, min_step), safe = 0;
     for (int k = 0; k < 64; ++k) {
         if (t >= length) {
@@ -804,7 +811,7 @@ inline bool DrapeSolver::contact_body(std::size_t i) {
     first_hit(i);
     Vec3 n;
     const double d = collider_->signed_distance(p_[i], &n);
-    const double depth = fabric_.thickness_mm - d;
+    const double depth = clearance_ - d;
     end_normal_[i] = n;
     end_distance_[i] = d;
     if (!(depth > 0)) {
@@ -821,10 +828,10 @@ inline bool DrapeSolver::contact_body(std::size_t i) {
     const double limit = fabric_.friction * depth;
     if (slide <= limit) {
         p_[i] = sub(p_[i], tangential);
-        end_distance_[i] = fabric_.thickness_mm - slide;
+        end_distance_[i] = clearance_ - slide;
     } else {
         p_[i] = sub(p_[i], scale(tangential, limit / slide));
-        end_distance_[i] = fabric_.thickness_mm - limit;
+        end_distance_[i] = clearance_ - limit;
     }
     return true;
 }
@@ -837,7 +844,7 @@ inline bool DrapeSolver::contact_body(std::size_t i) {
 // a rim sharper than the grid resolves (tests/garment/test_sewing.cpp sees 6 such edges).
 inline void DrapeSolver::contact_edges() {
     using namespace tapeline::vec3;
-    const double th = fabric_.thickness_mm;
+    const double th = clearance_;
     const std::size_t block = 4096;
     const std::size_t blocks = (edge_list_.size() + block - 1) / block;
     edge_blocks_.resize(blocks);

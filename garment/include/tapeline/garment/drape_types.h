@@ -41,8 +41,11 @@ struct DrapeOptions {
     int iterations = 1;               ///< constraint passes per sub-step
     Vec3 gravity{0, -9810, 0};        ///< mm/s²
     double damping_per_second = 0.5;  ///< velocity damping rate (fraction lost per second)
-    bool self_collision = true;       ///< cloth–cloth proximity constraints
-    int threads = 0;                  ///< 0: all cores (TBB default)
+    /// Distance the cloth keeps from the collider, mm (0: the fabric's thickness). Cloth–cloth
+    /// contacts keep the fabric's thickness.
+    double body_clearance_mm = 0;
+    bool self_collision = true;  ///< cloth–cloth proximity constraints
+    int threads = 0;             ///< 0: all cores (TBB default)
     /// A step fails (SolverFailure naming the frame) when a position is not finite, a speed
     /// exceeds this (mm/s), or kinetic energy grows this many times over a frame while no
     /// external work explains it.

@@ -92,19 +92,25 @@ inline std::size_t piece_crossings(const std::vector<Vec3>& x, const std::vector
     return n;
 }
 
+/// The mean position of each weld class.
+inline std::vector<Vec3> welded_positions(const std::vector<Vec3>& x, const Welding& w) {
+    std::vector<Vec3> out(w.count, Vec3{0, 0, 0});
+    std::vector<int> count(w.count, 0);
+    for (std::size_t v = 0; v < x.size(); ++v) {
+        out[w.weld_map[v]] = vec3::add(out[w.weld_map[v]], x[v]);
+        ++count[w.weld_map[v]];
+    }
+    for (std::size_t v = 0; v < w.count; ++v) {
+        out[v] = vec3::scale(out[v], 1.0 / count[v]);
+    }
+    return out;
+}
+
 /// The cloth with the vertices of each weld class merged at their mean; triangles that collapse
 /// (two corners in one class) are left out. Rest shapes and grain stay per triangle.
 inline ClothModel welded_cloth(const ClothModel& cloth, const Welding& w) {
     ClothModel m;
-    m.positions.assign(w.count, {0, 0, 0});
-    std::vector<int> count(w.count, 0);
-    for (std::size_t v = 0; v < cloth.positions.size(); ++v) {
-        m.positions[w.weld_map[v]] = vec3::add(m.positions[w.weld_map[v]], cloth.positions[v]);
-        ++count[w.weld_map[v]];
-    }
-    for (std::size_t v = 0; v < w.count; ++v) {
-        m.positions[v] = vec3::scale(m.positions[v], 1.0 / count[v]);
-    }
+    m.positions = welded_positions(cloth.positions, w);
     for (std::size_t t = 0; t < cloth.triangles.size(); ++t) {
         const Tri& c = cloth.triangles[t];
         const Tri r{w.weld_map[c[0]], w.weld_map[c[1]], w.weld_map[c[2]]};
@@ -308,7 +314,15 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     // --- sewing phase (no gravity), then drape
     t0 = Clock::now();
     const double frame = o.drape.frame_seconds;
-    DrapeOptions sew_options = o.drape;
+    // A straight cloth edge of length L held at distance c from skin curved to radius R dips
+    // L²/(8R) − c into it: a sixth of the edge length (at least the fabric's thickness) keeps
+    // edges out of skin curved down to R = 3L/4.
+    DrapeOptions drape_options = o.drape;
+    if (drape_options.body_clearance_mm == 0) {
+        drape_options.body_clearance_mm = std::max(o.fabric.thickness_mm, o.resolution_mm / 6);
+    }
+    rep.body_clearance_mm = drape_options.body_clearance_mm;
+    DrapeOptions sew_options = drape_options;
     sew_options.gravity = {0, 0, 0};
     StepReport last;
     std::size_t frames = 0;
@@ -345,7 +359,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         rep.pairs_welded_before_drape = closed.size();
         const Welding pre = weld_pairs(cloth.positions.size(), closed);
         const ClothModel welded = internal::welded_cloth(cloth, pre);
-        DrapeSolver drape(welded, o.fabric, o.drape, &sdf);
+        DrapeSolver drape(welded, o.fabric, drape_options, &sdf);
         std::vector<Stitch> stitches;
         for (const Stitch& s : open) {
             const std::uint32_t a = pre.weld_map[s.a], b = pre.weld_map[s.b];
@@ -397,15 +411,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     const Welding w =
         weld_pairs(out.draped.size(), placement_only ? std::vector<Stitch>{} : plan.pairs);
     GarmentMesh& g = out.garment;
-    g.positions.assign(w.count, {0, 0, 0});
-    std::vector<int> count(w.count, 0);
-    for (std::size_t v = 0; v < out.draped.size(); ++v) {
-        g.positions[w.weld_map[v]] = vec3::add(g.positions[w.weld_map[v]], out.draped[v]);
-        ++count[w.weld_map[v]];
-    }
-    for (std::size_t v = 0; v < w.count; ++v) {
-        g.positions[v] = vec3::scale(g.positions[v], 1.0 / count[v]);
-    }
+    g.positions = internal::welded_positions(out.draped, w);
     for (std::size_t f = 0; f < cloth.triangles.size(); ++f) {
         const Tri& t = cloth.triangles[f];
         g.triangles.push_back({w.weld_map[t[0]], w.weld_map[t[1]], w.weld_map[t[2]]});

@@ -150,7 +150,8 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
     j["simulation"] = {{"frames", r.frames},
                        {"simulated_seconds", r.simulated_seconds},
                        {"ms_per_step_per_10k_vertices", r.ms_per_step_per_10k},
-                       {"threads", r.threads}};
+                       {"threads", r.threads},
+                       {"body_clearance_mm", r.body_clearance_mm}};
     j["timings_seconds"] = {{"measure", r.measure_seconds},     {"sdf", r.sdf_seconds},
                             {"placement", r.placement_seconds}, {"strings", r.strings_seconds},
                             {"drape", r.drape_seconds},         {"quality", r.quality_seconds},

@@ -119,6 +119,7 @@ struct DressReport {
     std::size_t garment_vertices = 0;                     ///< after welding
     std::size_t boundary_loops = 0;                       ///< openings of the welded garment
     std::size_t pairs_welded_before_drape = 0;      ///< stitch pairs closed by the sewing phase
+    double body_clearance_mm = 0;                   ///< distance the cloth kept from the body, mm
     std::size_t placement_vertices_inside = 0;      ///< after placement (must be 0)
     std::size_t placement_piece_intersections = 0;  ///< after placement (must be 0)
     QualityFigures quality;
