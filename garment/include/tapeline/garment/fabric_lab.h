@@ -313,8 +313,8 @@ inline const std::vector<Fabric>& fabric_library() {
             Fabric f;
             f.params = std::move(p);
             f.source =
-                "class value (order of magnitude of the class from handbook ranges, not a "
-                "measurement of one cloth)";
+                "class value: the order of magnitude of its class, not a measurement "
+                "of one cloth";
             l.push_back(f);
         };
         // name, g/m², warp N/m, weft N/m, shear N/m, bending µN·m, friction, thickness mm
