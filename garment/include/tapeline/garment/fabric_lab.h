@@ -304,8 +304,8 @@ inline Fabric fabric_from_arcsim(const std::string& name, const std::string& use
     return f;
 }
 
-/// The fabric library: the five cloth classes (order-of-magnitude values of their class, as the
-/// solver has always known them by name) and the ten measured fabrics of Wang et al. 2011.
+/// The fabric library: the five cloth classes (order-of-magnitude values of their class, with
+/// isotropic bending) and the ten measured fabrics of Wang et al. 2011.
 inline const std::vector<Fabric>& fabric_library() {
     static const std::vector<Fabric> list = [] {
         std::vector<Fabric> l;
