@@ -247,8 +247,8 @@ void register_dress_commands(CLI::App& app) {
                     "seams drawn)");
     cmd->add_option("--resolution", a->resolution, "Cloth edge length, mm")->capture_default_str();
     cmd->add_option("--fabric", a->fabric,
-                    "Fabric: cotton_jersey, cotton_shirting, denim, silk_charmeuse, wool_suiting, "
-                    "or a .json fabric file")
+                    "Fabric: a library name (tapeline fabric list) or a .json fabric file "
+                    "(tapeline fabric convert)")
         ->capture_default_str();
     cmd->add_option("--without", a->without, "Leave this piece (and its seams) out; repeatable")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);

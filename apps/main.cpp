@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
     tapeline::app::register_grade_commands(app);
     tapeline::app::register_measure_commands(app);
     tapeline::app::register_dress_commands(app);
+    tapeline::app::register_fabric_commands(app);
     try {
         check_command_words(app, argc, argv);
         app.parse(argc, argv);

@@ -20,10 +20,12 @@
 //  - Stretch/shear: energy A·½·k·ε², k in N/m, A the rest area: in J that is ½·k·(A_mm²·1e-6)·ε²,
 //    i.e. ½·(k·A_mm²)·ε² in kg·mm²/s², so the XPBD compliance of the strain constraint is
 //    α = 1/(k·A_mm²) (s²/(kg·mm²)).
-//  - Bending: energy ½·B·(|e|²/A_e)·θ² per interior edge (B in N·m, |e| its length, A_e the rest
-//    area of its two triangles, θ the dihedral angle, flat at rest): B = bending_un_m·1e-6 N·m,
-//    so α = A_e/(bending_un_m·|e|²). Calibration: a cylindrical bend across a grid of right
-//    triangles gives ½·B·κ² per unit area exactly; an equilateral mesh comes out half as stiff.
+//  - Bending: energy ½·B(ψ)·(|e|²/A_e)·θ² per interior edge (bending.h: B(ψ) the fabric's
+//    rigidity across the edge from its warp, weft and bias values, |e| the rest edge length, A_e
+//    the rest area of its two triangles, θ the dihedral angle, flat at rest), B in µN·m, so
+//    α = A_e/(B(ψ)·|e|²). bending.h derives the weight: a cylindrical bend gives ½·B·κ² per unit
+//    area in every direction on equilateral meshes and along the grid lines of right-triangle
+//    grids, at any edge length.
 //  - Attachments and stitches: user compliance α_u in mm/N = 1/k with k in N/mm; energy
 //    ½·k·C² N·mm = ½·k·1e3·C² kg·mm²/s², so α = α_u·1e-3 (s²/kg).
 //  - Mass per vertex: a third of each incident rest triangle's area times the areal density:
@@ -58,6 +60,7 @@
 
 #include <tapeline/core/errors.h>
 #include <tapeline/core/vec3.h>
+#include <tapeline/garment/bending.h>
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/drape_types.h>
 
@@ -428,7 +431,8 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
         const auto b = static_cast<std::uint32_t>(half[e].key & 0xffffffffu);
         edges.emplace_back(a, b);
         edges.emplace_back(b, a);
-        if (f - e == 2 && fabric_.bending_un_m > 0) {
+        if (f - e == 2 && (fabric_.bending_un_m > 0 || bending_weft_of(fabric_) > 0 ||
+                           bending_bias_of(fabric_) > 0)) {
             const double area_e = tris_[half[e].t].area + tris_[half[e + 1].t].area;
             // Rest length of the edge from the rest shape of the first triangle.
             const Tri& tri = model_.triangles[half[e].t];
@@ -443,10 +447,13 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
             }
             const UV& ua = model_.rest_uv[half[e].t][ca];
             const UV& ub = model_.rest_uv[half[e].t][cb];
-            const double len2 =
-                (ua[0] - ub[0]) * (ua[0] - ub[0]) + (ua[1] - ub[1]) * (ua[1] - ub[1]);
-            bends_.push_back({{half[e].opposite, half[e + 1].opposite, a, b},
-                              area_e / (fabric_.bending_un_m * len2)});
+            const UV g0 = model_.grain[half[e].t];
+            const double glen = std::hypot(g0[0], g0[1]);
+            const double k = hinge_stiffness_un_m(fabric_, UV{ub[0] - ua[0], ub[1] - ua[1]},
+                                                  UV{g0[0] / glen, g0[1] / glen}, area_e);
+            if (k > 0) {
+                bends_.push_back({{half[e].opposite, half[e + 1].opposite, a, b}, 1.0 / k});
+            }
         }
         e = f;
     }

@@ -28,10 +28,19 @@ struct FabricParams {
     ///@{
     double stretch_warp_n_m = 2000, stretch_weft_n_m = 1000;
     ///@}
-    double shear_n_m = 300;     ///< in-plane shear stiffness, N/m
-    double bending_un_m = 10;   ///< bending rigidity, µN·m (= 1e-6 N·m²/m)
+    double shear_n_m = 300;  ///< in-plane shear stiffness, N/m per radian of shear angle
+    /// Bending rigidity of a strip cut along the warp (curvature along the warp), µN·m
+    /// (= 1e-6 N·m²/m); the rigidity of every direction when the two below are negative.
+    double bending_un_m = 10;
     double friction = 0.3;      ///< Coulomb friction coefficient against the body
     double thickness_mm = 1.0;  ///< collision thickness (cloth–body and cloth–cloth)
+    /// Bending rigidity of a strip cut along the weft, µN·m; negative: bending_un_m.
+    double bending_weft_un_m = -1;
+    /// Bending rigidity of a strip cut on the 45° bias, µN·m; negative: the mean of warp and weft.
+    double bending_bias_un_m = -1;
+    /// Velocity damping of the fabric's own motion, 1/s (0: none). The solver itself takes
+    /// DrapeOptions::damping_per_second; callers that build options from a fabric add this.
+    double damping_per_second = 0;
 };
 
 /// How the solver steps (XPBD with small sub-steps).
