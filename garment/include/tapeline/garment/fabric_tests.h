@@ -207,6 +207,27 @@ inline void check_options(const FabricTestOptions& o, const FabricParams& f) {
     }
 }
 
+/// Solver options of a strip pulled without gravity (tensile and bias tests): the blow-up check
+/// off (the pull does work it does not count; it knows gravity's only), and sub-steps in the
+/// explicit-like regime of the stretch constraints (α/h² ≫ Σw|∇C|²) so that the rest strain is
+/// the fabric's and not the step's: h = 0.1/ω, ω² = k·A·Σw|∇C|², Σw|∇C|² ≈ 2·(3/m)/dx². The
+/// caller sets the damping.
+inline DrapeOptions pulled_strip_options(const FabricParams& f, double dx, double dz, int threads) {
+    DrapeOptions opt;
+    opt.gravity = {0, 0, 0};
+    opt.self_collision = false;
+    opt.max_energy_growth = 1e12;
+    opt.threads = threads;
+    const double kmax = std::max({f.stretch_warp_n_m, f.stretch_weft_n_m, f.shear_n_m});
+    const double area = dx * dz / 2, m = f.density_g_m2 * 1e-9 * dx * dz / 3;
+    const double omega =
+        std::sqrt(kmax * area * 2 * (3 / m) / (std::min(dx, dz) * std::min(dx, dz)));
+    opt.frame_seconds = 1.0 / 300;
+    opt.substeps =
+        std::clamp(static_cast<int>(std::ceil(opt.frame_seconds * omega / 0.1)), 10, 20000);
+    return opt;
+}
+
 }  // namespace internal
 
 // ---------------------------------------------------------------------------------------------
@@ -398,22 +419,7 @@ inline double tensile_strain_pct(const FabricParams& fabric, bool weft, double k
     }
     FabricParams f = fabric;
     (weft ? f.stretch_weft_n_m : f.stretch_warp_n_m) = k;
-    DrapeOptions opt;
-    opt.gravity = {0, 0, 0};
-    opt.self_collision = false;
-    // The pull does work the solver's blow-up check does not count (it knows gravity's only):
-    // a strip set moving from rest by its load is no blow-up.
-    opt.max_energy_growth = 1e12;
-    opt.threads = o.threads;
-    // Explicit-like regime of the stretch constraints (α/h² ≫ Σw|∇C|²), so the rest strain is
-    // the fabric's and not the step's: h = 0.1/ω, ω² = k·A·Σw|∇C|², Σw|∇C|² ≈ 2·(3/m)/dx².
-    const double kmax = std::max({f.stretch_warp_n_m, f.stretch_weft_n_m, f.shear_n_m});
-    const double area = dx * dz / 2, m = f.density_g_m2 * 1e-9 * dx * dz / 3;
-    const double omega =
-        std::sqrt(kmax * area * 2 * (3 / m) / (std::min(dx, dz) * std::min(dx, dz)));
-    opt.frame_seconds = 1.0 / 300;
-    opt.substeps =
-        std::clamp(static_cast<int>(std::ceil(opt.frame_seconds * omega / 0.1)), 10, 20000);
+    DrapeOptions opt = internal::pulled_strip_options(f, dx, dz, o.threads);
     // Damping near the first axial mode: ω₁ = (π/2)·√(k/ρ)/L.
     const double omega1 = 1.5708 * std::sqrt(k / (f.density_g_m2 * 1e-3)) / (length * 1e-3);
     opt.damping_per_second = omega1;
@@ -506,20 +512,7 @@ inline BiasResult bias_test(const Fabric& fabric, const FabricTestOptions& o = {
         right.push_back(static_cast<std::uint32_t>(j * (nx + 1) + nx));
         weights.push_back((j == 0 || j == ny ? 0.5 : 1.0) / ny);
     }
-    DrapeOptions opt;
-    opt.gravity = {0, 0, 0};
-    opt.self_collision = false;
-    // The pull does work the solver's blow-up check does not count (it knows gravity's only):
-    // a strip set moving from rest by its load is no blow-up.
-    opt.max_energy_growth = 1e12;
-    opt.threads = o.threads;
-    const double kmax = std::max({f.stretch_warp_n_m, f.stretch_weft_n_m, f.shear_n_m});
-    const double area = dx * dz / 2, m = f.density_g_m2 * 1e-9 * dx * dz / 3;
-    const double omega =
-        std::sqrt(kmax * area * 2 * (3 / m) / (std::min(dx, dz) * std::min(dx, dz)));
-    opt.frame_seconds = 1.0 / 300;
-    opt.substeps =
-        std::clamp(static_cast<int>(std::ceil(opt.frame_seconds * omega / 0.1)), 10, 20000);
+    DrapeOptions opt = internal::pulled_strip_options(f, dx, dz, o.threads);
     const double omega1 =
         3.1416 * std::sqrt(4 * f.shear_n_m / (f.density_g_m2 * 1e-3)) / (length * 1e-3);
     opt.damping_per_second = omega1;
