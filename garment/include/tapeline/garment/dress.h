@@ -43,6 +43,7 @@ struct DressResult {
     std::vector<Vec3> draped;     ///< cloth after the drape (unwelded)
     std::vector<double> stretch;  ///< per garment triangle: largest principal stretch
     SewingPlan sewing;            ///< pairs and strings
+    /// What was done, how long it took and the quality gates.
     DressReport report;
 };
 

@@ -63,9 +63,14 @@ struct SewingOptions {
 /// Everything dress() needs besides the body and the pattern.
 struct DressOptions {
     double resolution_mm = 10;  ///< target cloth edge length
+    /// How the pieces are wrapped around the body.
     PlacementOptions placement;
+    /// How the seams are sewn and how long the garment settles.
     SewingOptions sewing;
+    /// Solver steps of both phases; a zero body_clearance_mm becomes the larger of the fabric's
+    /// thickness and a sixth of resolution_mm.
     DrapeOptions drape;
+    /// The fabric of every piece.
     FabricParams fabric;
     std::vector<std::string> without_pieces;  ///< pieces left out (with their seams), by name
     double sdf_cell_mm = 5;                   ///< cell of the body's signed-distance grid
@@ -73,59 +78,95 @@ struct DressOptions {
 
 /// Sewing quality of one seam at the end of the drape.
 struct SeamReport {
+    /// The seam's name in the pattern.
     std::string name;
+    /// Stitch pairs (a vertex on each side, joined by one string) along the seam.
     std::size_t pairs = 0;
-    double side_a_mm = 0, side_b_mm = 0;  ///< lengths of the two sides in the pattern
-    double string_mm = 0;                 ///< mean length of its strings before sewing
+    /// Lengths of the two sides in the pattern, mm.
+    ///@{
+    double side_a_mm = 0, side_b_mm = 0;
+    ///@}
+    double string_mm = 0;  ///< mean length of its strings before sewing
+    /// Mean and largest distance between the two vertices of its pairs after the drape, mm.
+    ///@{
     double gap_mean_mm = 0, gap_max_mm = 0;
+    ///@}
+    /// False when its sides differ by more than SewingOptions::length_mismatch of the longer
+    /// side; the seam is sewn all the same.
     bool closable = true;
     std::string problem;  ///< why it is not closable (empty when it is)
 };
 
 /// Where each piece went.
 struct PieceReport {
+    /// The piece's name in the pattern.
     std::string name;
+    /// The body region it was wrapped around, as to_string(Region) spells it.
     std::string region;
+    /// Vertices and triangles of its cloth mesh (at DressOptions::resolution_mm).
+    ///@{
     std::size_t vertices = 0, triangles = 0;
+    ///@}
     std::size_t placed_inside = 0;  ///< its vertices inside the body after placement
 };
 
 /// One quality gate: a measured value against its limit.
 struct Gate {
+    /// The QualityFigures member it checks ("stretch_p95", "max_depth_mm", ...).
     std::string name;
+    /// The measured value and the largest value that passes.
+    ///@{
     double value = 0, limit = 0;
+    ///@}
+    /// value <= limit.
     bool passed = false;
 };
 
 /// Quality figures of a draped garment (quality.h).
 struct QualityFigures {
+    /// Garment vertices inside the closed body (exact inside test).
     std::size_t vertices_inside_body = 0;
     double max_depth_mm = 0;              ///< deepest cloth vertex inside the body
     std::size_t edges_crossing_body = 0;  ///< cloth edges crossing body triangles
     /// Midpoints of the first (up to 100) crossing edges, mm: where to look.
     std::vector<Vec3> body_crossing_points;
     std::size_t self_intersections = 0;  ///< cloth edges crossing cloth triangles
+    /// Median, 95th percentile and maximum over the triangles of the largest principal stretch
+    /// (triangle_stretch(); 1: unstretched).
+    ///@{
     double stretch_median = 1, stretch_p95 = 1, stretch_max = 1;
+    ///@}
     double stretch_above_105_percent = 0;  ///< % of triangles with a stretch above 1.05
     double moving_fraction = 0;            ///< vertices that moved > 0.3 mm in the last frame
+    /// Largest distance between the two vertices of a stitch pair at the end of the drape, mm.
     double stitch_gap_max_mm = 0;
 };
 
 /// What dress() did and how good the garment is.
 struct DressReport {
+    /// One per piece dressed, in the pattern's order (pieces left out have none).
     std::vector<PieceReport> pieces;
+    /// One per seam sewn, in the pattern's order (seams of pieces left out have none).
     std::vector<SeamReport> seams;
-    std::size_t cloth_vertices = 0, cloth_triangles = 0;  ///< before welding
-    std::size_t garment_vertices = 0;                     ///< after welding
-    std::size_t boundary_loops = 0;                       ///< openings of the welded garment
+    /// Vertices and triangles of the cloth of all pieces, before welding.
+    ///@{
+    std::size_t cloth_vertices = 0, cloth_triangles = 0;
+    ///@}
+    std::size_t garment_vertices = 0;               ///< after welding
+    std::size_t boundary_loops = 0;                 ///< openings of the welded garment
     std::size_t pairs_welded_before_drape = 0;      ///< stitch pairs closed by the sewing phase
     double body_clearance_mm = 0;                   ///< distance the cloth kept from the body, mm
     std::size_t placement_vertices_inside = 0;      ///< after placement (must be 0)
     std::size_t placement_piece_intersections = 0;  ///< after placement (must be 0)
+    /// Quality figures of the welded garment.
     QualityFigures quality;
+    /// quality_gates() of `quality`.
     std::vector<Gate> gates;
+    /// Every gate passed.
     bool passed = false;
+    /// Solver frames run, sewing and drape together.
     std::size_t frames = 0;
+    /// Simulated time of sewing and drape together, s.
     double simulated_seconds = 0;
     double ms_per_step_per_10k = 0;  ///< wall ms per frame per 10 000 cloth vertices
     /// Wall times, seconds.
@@ -133,6 +174,7 @@ struct DressReport {
     double measure_seconds = 0, sdf_seconds = 0, placement_seconds = 0, strings_seconds = 0,
            drape_seconds = 0, quality_seconds = 0, total_seconds = 0;
     ///@}
+    /// DrapeOptions::threads as given (0: all cores).
     int threads = 0;
 };
 
