@@ -104,11 +104,14 @@ public:
     /// Exact signed distance (closest point on the triangles, pseudonormal sign), anywhere.
     double exact_signed_distance(const Vec3& p, Vec3* gradient) const;
 
+    /// The options as given to the constructor.
     const ColliderOptions& options() const { return d_->options; }
+    /// Half-width of the band in use, mm: ColliderOptions::band_mm (four cells when 0), at least
+    /// two cells.
     double band_mm() const { return d_->band; }
-    /// Nodes holding an exact distance within the stored band, and bytes held by the grid (not
-    /// counting the AABB tree and the mesh copy).
+    /// Nodes holding an exact distance within the stored band.
     std::size_t stored_nodes() const { return d_->stored_nodes; }
+    /// Bytes held by the grid (not counting the AABB tree and the mesh copy).
     std::size_t grid_bytes() const {
         return d_->values.capacity() * sizeof(float) + d_->slot.capacity() * sizeof(std::int32_t) +
                d_->brick_info.capacity() * sizeof(BrickInfo);

@@ -95,14 +95,24 @@ public:
     /// state is then unusable until reset().
     StepReport step();
 
-    /// Replace the attachments / stitches; they act from the next step.
+    /// Replaces the attachments; they act from the next step. Throws InvalidInput naming the
+    /// attachment when its vertex is out of range, its target is not finite or its compliance
+    /// is not finite and >= 0.
     void set_attachments(std::vector<Attachment> attachments);
+    /// Replaces the stitches; they act from the next step. Throws InvalidInput naming the stitch
+    /// when a vertex is out of range, it joins a vertex to itself, or its rest_mm or compliance
+    /// is not finite and >= 0.
     void set_stitches(std::vector<Stitch> stitches);
 
+    /// Current vertex positions, mm, in the order of the model's vertices.
     const std::vector<Vec3>& positions() const { return x_; }
+    /// Current vertex velocities, mm/s.
     const std::vector<Vec3>& velocities() const { return v_; }
+    /// The cloth as given to the constructor (reset() returns to its positions).
     const ClothModel& model() const { return model_; }
+    /// The fabric as given to the constructor.
     const FabricParams& fabric() const { return fabric_; }
+    /// The options as given to the constructor, with the damping of the last set_damping().
     const DrapeOptions& options() const { return options_; }
 
     /// Velocity damping rate from the next step on (fraction lost per second; finite, >= 0).

@@ -78,14 +78,20 @@ struct ColliderOptions {
 
 /// A vertex pulled to a point (moving targets are set again between steps).
 struct Attachment {
+    /// Index of the pulled vertex in ClothModel::positions.
     std::uint32_t vertex = 0;
+    /// The point it is pulled to, mm.
     Vec3 target{0, 0, 0};
     double compliance = 0;  ///< XPBD compliance (inverse stiffness), mm/N; 0: hard
 };
 
 /// Two vertices held at `rest_mm` apart (stitches: the rest length shrinks to zero).
 struct Stitch {
+    /// Indices of the two vertices in ClothModel::positions (distinct).
+    ///@{
     std::uint32_t a = 0, b = 0;
+    ///@}
+    /// Distance the stitch holds them at, mm (>= 0).
     double rest_mm = 0;
     double compliance = 0;  ///< XPBD compliance, mm/N; 0: hard
 };

@@ -47,14 +47,18 @@ constexpr double kKesMaxLoadGfCm = 500;
 /// A fabric: the solver's parameters plus the laboratory figures it was made from (NaN where the
 /// source has none; the virtual tests then take their targets from the parameters).
 struct Fabric {
+    /// The parameters the solver runs with.
     FabricParams params;
     std::string source;  ///< where the numbers come from
     /// Strain in % at 5, 20 and 100 gf/cm along warp and weft (FAST E5, E20, E100; from KES by
     /// the power-law curve, see fabric_from_kes).
+    ///@{
     std::array<double, 3> extension_warp_pct{nan(), nan(), nan()};
     std::array<double, 3> extension_weft_pct{nan(), nan(), nan()};
+    ///@}
     double bias_extension_pct = nan();  ///< FAST EB5: bias strain at 5 gf/cm, %
 
+    /// Quiet NaN: the value of a figure the source does not give.
     static constexpr double nan() { return std::numeric_limits<double>::quiet_NaN(); }
 };
 

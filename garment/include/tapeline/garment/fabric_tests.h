@@ -61,6 +61,7 @@ struct FabricTestOptions {
 /// front face x = 0 below: the signed distance to the quarter-space x ≤ 0, y ≤ top.
 class TableCollider : public Collider {
 public:
+    /// A table whose top is at height `top`, mm.
     explicit TableCollider(double top = 0) : top_(top) {}
     double signed_distance(const Vec3& p, Vec3* gradient) const override {
         const double dx = p[0], dy = p[1] - top_;
@@ -90,6 +91,7 @@ private:
 /// (infinitely deep): signed distance and gradient in closed form.
 class PedestalCollider : public Collider {
 public:
+    /// A pedestal of `radius` whose top is at height `top`, both mm.
     PedestalCollider(double radius, double top) : radius_(radius), top_(top) {}
     double signed_distance(const Vec3& p, Vec3* gradient) const override {
         const double r = std::hypot(p[0], p[2]);
@@ -380,22 +382,30 @@ inline CantileverResult cantilever_test(const FabricParams& fabric, bool weft,
 
 /// One load of the tensile test.
 struct TensilePoint {
+    /// The pull, gf per cm of strip width (5, 20 or 100).
     double load_gf_cm = 0;
     double target_pct = 0;     ///< the fabric's strain there (FAST E5/E20/E100, or load/k)
     double simulated_pct = 0;  ///< with the fabric's secant stiffness at this load
     double error_pct = 0;      ///< relative error of simulated_pct, %
     double linear_pct = 0;     ///< with the fabric's single solver stiffness (what drapes use)
+    /// Relative error of linear_pct, %.
     double linear_error_pct = 0;
 };
 
 /// Result of the tensile test in one direction.
 struct TensileResult {
+    /// "warp" or "weft".
     std::string direction;
     bool measured_curve = false;  ///< targets from the fabric's lab curve (else load/stiffness)
+    /// One per load, in the order 5, 20, 100 gf/cm.
     std::vector<TensilePoint> points;
+    /// Vertices of the strip.
     std::size_t vertices = 0;
+    /// Solver sub-steps per 1/300 s frame.
     int substeps = 0;
+    /// Every run came to rest within its time limit.
     bool settled = true;
+    /// Wall time of the whole test, s.
     double seconds = 0;
 };
 
@@ -478,6 +488,7 @@ inline TensileResult tensile_test(const Fabric& fabric, bool weft,
 
 /// Result of the bias-extension test.
 struct BiasResult {
+    /// The pull at each end, gf per cm of strip width.
     double load_gf_cm = 5;
     double target_shear_n_m = 0;           ///< the fabric's G
     double shear_angle_deg = 0;            ///< mean warp–weft angle change in the middle third
@@ -485,9 +496,13 @@ struct BiasResult {
     double error_pct = 0;                  ///< of simulated_shear_n_m
     double bias_extension_pct = 0;         ///< strip strain in the middle third (EB5)
     double target_bias_extension_pct = 0;  ///< FAST EB5 = 123/G (yarn stretch neglected)
+    /// Vertices of the strip.
     std::size_t vertices = 0;
+    /// Solver sub-steps per 1/300 s frame.
     int substeps = 0;
+    /// The strip came to rest within its time limit.
     bool settled = true;
+    /// Wall time, s.
     double seconds = 0;
 };
 
@@ -576,21 +591,34 @@ inline BiasResult bias_test(const Fabric& fabric, const FabricTestOptions& o = {
 
 /// Result of one Cusick run.
 struct CusickResult {
+    /// Radii of the disc (300 mm across) and the pedestal (180 mm across), mm.
+    ///@{
     double disc_radius_mm = 150, pedestal_radius_mm = 90;
+    ///@}
+    /// Area S of the shadow, the pedestal's top included, mm².
     double shadow_area_mm2 = 0;
     double drape_coefficient = 0;           ///< (S − A_pedestal)/(A_disc − A_pedestal), 0..1
     int nodes = 0;                          ///< folds of the shadow's outline
     std::vector<double> outline_radius_mm;  ///< shadow radius every degree (from +x towards +z)
+    /// Vertices of the cloth.
     std::size_t vertices = 0;
+    /// Solver sub-steps per 1/30 s frame.
     int substeps = 0;
+    /// Frames run until the cloth came to rest (or the time limit).
     std::size_t frames = 0;
+    /// The cloth came to rest within FabricTestOptions::max_seconds.
     bool settled = true;
+    /// Wall time, s.
     double seconds = 0;
     /// Shadow raster (1: covered), shadow_pixels × shadow_pixels over ±shadow_half_mm.
     std::vector<std::uint8_t> shadow;
+    /// Pixels along each side of the shadow raster (0.5 mm pixels; row j, column i at
+    /// shadow[j·shadow_pixels + i], i along x and j along z).
     int shadow_pixels = 0;
+    /// Half the side of the square the raster covers, centred on the pedestal's axis, mm.
     double shadow_half_mm = 0;
     std::vector<Vec3> positions;  ///< rest shape of the cloth
+    /// Triangles of the cloth (indices into `positions`).
     std::vector<Tri> triangles;
 };
 

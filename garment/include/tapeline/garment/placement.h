@@ -43,7 +43,9 @@ struct BodyShape {
     double armpit_y = 0;       ///< armpit height
     double crotch_y = 0;       ///< crotch height
     /// Per side (0: left, +x; 1: right, −x): arm axis from the shoulder to the wrist centre.
+    ///@{
     std::array<Vec3, 2> shoulder{}, wrist{};
+    ///@}
     std::array<double, 2> armpit_x{};  ///< |x| of the armpits
     std::vector<std::uint8_t> is_arm;  ///< per body vertex: on an arm (or hand)
 };
@@ -266,8 +268,13 @@ inline BodyShape body_shape(const std::vector<Vec3>& points, const std::vector<T
 /// A piece's region and its layout coordinates: per vertex `s` (arc position, mm) and `h`
 /// (height for torso and skirt pieces; distance down the arm from the shoulder for sleeves).
 struct PieceLayout {
+    /// The body region the piece is wrapped around.
     Region region = Region::torso_front;
+    /// Per vertex of the piece mesh: arc position `s` and `h` (height, or distance down the
+    /// arm), mm.
+    ///@{
     std::vector<double> s, h;
+    ///@}
 };
 
 /// The region of a piece, or nullopt with `why` set. GarmentCode panels: "sleeve" → sleeve (side

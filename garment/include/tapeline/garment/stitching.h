@@ -33,9 +33,11 @@ namespace tapeline::garment {
 
 /// A polyline with its arc lengths (mm).
 struct StringPath {
+    /// The polyline's vertices, mm.
     std::vector<Vec3> points;
     std::vector<double> arc;  ///< arc.back(): the string's length
 
+    /// The string's length, mm (0 when `arc` is empty).
     double length() const { return arc.empty() ? 0.0 : arc.back(); }
     /// The point at arc position `a` (clamped to the string).
     Vec3 at(double a) const {
@@ -242,10 +244,14 @@ inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sig
 /// Vertex classes after welding the stitch pairs (union–find; the representative is the smallest
 /// index): `weld_map[v]` is v's welded index in [0, count).
 struct Welding {
+    /// Per vertex: its welded index.
     std::vector<std::uint32_t> weld_map;
+    /// Number of welded vertices (vertex classes).
     std::size_t count = 0;
 };
 
+/// Welds `vertex_count` vertices along the stitch pairs `pairs` (see Welding); rest lengths and
+/// compliances are ignored.
 inline Welding weld_pairs(std::size_t vertex_count, const std::vector<Stitch>& pairs) {
     std::vector<std::uint32_t> parent(vertex_count);
     std::iota(parent.begin(), parent.end(), 0u);
