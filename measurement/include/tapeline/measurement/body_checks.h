@@ -189,8 +189,12 @@ inline void check_body_shape(const Body& body) {
 
 /// One proportion check: a length as a fraction of stature and its accepted band.
 struct ProportionBand {
+    /// The length, as messages name it ("leg length (crotch height)").
     const char* what;
+    /// Lowest and highest accepted value, fractions of stature.
+    ///@{
     double lo, hi;
+    ///@}
 };
 
 /// Refuses a body whose landmarks give proportions no human has (head, legs, arms as fractions

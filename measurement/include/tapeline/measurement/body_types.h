@@ -110,7 +110,10 @@ struct BodyHole {
     /// How it was filled: "faired" (triangulated, refined and faired), "refined" (fairing
     /// failed: triangulated and refined) or "triangulated" (no refinement).
     std::string filling;
+    /// Edges of its boundary loop, and the faces and vertices added to fill it.
+    ///@{
     std::size_t boundary_edges = 0, faces_added = 0, vertices_added = 0;
+    ///@}
 };
 
 /// What was used to map the input into the canonical frame (see the top of this file):

@@ -470,6 +470,10 @@ private:
 /// Nothing is thrown for a missing girth: the mesh was checked when the Body was made
 /// (make_body).
 ///
+/// \param body the body, canonical mm.
+/// \param landmarks its landmarks; girths use the available ones (found or overridden).
+/// \param options MeasureOptions::level_tolerance and MeasureOptions::max_neck_tilt_degrees
+///        are used.
 /// \param sections_cut when not null, receives the number of plane sections cut.
 inline MeasurementSet measure_girths(const Body& body, const LandmarkSet& landmarks,
                                      const MeasureOptions& options = {},

@@ -18,18 +18,18 @@ namespace tapeline::measurement {
 
 /// Everything measured on one body; points are canonical mm (frame.to_input maps them back).
 struct BodyMeasurements {
+    /// The body's frame (Body::frame).
     BodyFrame frame;
+    /// Every landmark: found, overridden, or not found with the reason.
     LandmarkSet landmarks;
+    /// The measurements taken, and those that could not be.
     MeasurementSet measurements;
+    /// Mesh size, filled holes, timings and landmark counts.
     MeasureReport report;
     /// Broken self-check rules (self_checks.h); empty on a plausible result.
     std::vector<CheckWarning> warnings;
 };
 
-/// Landmarks (with overrides), girths and self-checks of a prepared body; the filled holes of
-/// its input are in the report, and the measurements resting on them are marked
-/// (Measurement::crosses_filled_hole). A mesh that is not one
-/// upright human body is refused (InvalidInput, body_checks.h) before anything is measured.
 /// Refuses (InvalidInput) a mesh on which five or more of the landmarks found lie outside their
 /// height bands (self_checks.h, landmark_height_bands): a creature or an object with limbs,
 /// whose girths would be garbage. A human body, even an unusual one, breaks at most a pair.
@@ -59,6 +59,10 @@ inline void refuse_unlike_human_heights(const Body& body, const LandmarkSet& lan
     }
 }
 
+/// Landmarks (with overrides), girths and self-checks of a prepared body; the filled holes of
+/// its input are in the report, and the measurements resting on them are marked
+/// (Measurement::crosses_filled_hole). A mesh that is not one upright human body is refused
+/// (InvalidInput, body_checks.h; refuse_unlike_human_heights) before any girth is measured.
 inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& options = {},
                                      const LandmarkOverrides& overrides = {}) {
     using Clock = std::chrono::steady_clock;

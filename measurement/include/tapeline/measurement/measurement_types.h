@@ -31,8 +31,11 @@ inline const char* to_string(LandmarkStatus s) {
     return "not_found";
 }
 
+/// A named point of the body, how it was obtained, or why it was not found.
 struct Landmark {
+    /// One of landmark_names() ("waist_front", "wrist_left", ...).
     std::string name;
+    /// Found on the mesh, set by an override, or not found.
     LandmarkStatus status = LandmarkStatus::not_found;
     Vec3 point{0, 0, 0};  ///< canonical mm; meaningless when not_found
     std::string reason;   ///< not_found: one line naming the landmark and why; else empty
@@ -40,6 +43,7 @@ struct Landmark {
     /// the landmark, which limb girths use as their axis point. Others: equal to `point`.
     Vec3 axis_point{0, 0, 0};
 
+    /// Whether `point` holds a position: found or overridden.
     bool available() const { return status != LandmarkStatus::not_found; }
 };
 
@@ -57,6 +61,7 @@ inline const std::vector<std::string>& landmark_names() {
 
 /// One Landmark per landmark_names() entry, in that order.
 struct LandmarkSet {
+    /// One per landmark_names() entry, in that order; a new set has them all not_found.
     std::vector<Landmark> landmarks;
 
     LandmarkSet() {
@@ -65,6 +70,7 @@ struct LandmarkSet {
                 Landmark{n, LandmarkStatus::not_found, {0, 0, 0}, n + ": not set", {0, 0, 0}});
         }
     }
+    /// The landmark called `name`; null for an unknown name.
     const Landmark* find(const std::string& name) const {
         for (const auto& l : landmarks) {
             if (l.name == name) {
@@ -73,6 +79,7 @@ struct LandmarkSet {
         }
         return nullptr;
     }
+    /// The landmark called `name`, to modify; null for an unknown name.
     Landmark* find(const std::string& name) {
         for (auto& l : landmarks) {
             if (l.name == name) {
@@ -86,6 +93,7 @@ struct LandmarkSet {
         const Landmark* l = find(name);
         return l && l->available() ? std::optional<Vec3>(l->point) : std::nullopt;
     }
+    /// Number of landmarks found or overridden.
     std::size_t available_count() const {
         std::size_t n = 0;
         for (const auto& l : landmarks) {
@@ -103,6 +111,7 @@ using sizes::to_string;
 /// One measurement with where it was taken.
 struct Measurement {
     std::string name;  ///< our identifier, snake_case: "waist_girth", "hip_girth", ...
+    /// How it is taken: girth, length (also for widths), height or angle.
     MeasurementKind kind = MeasurementKind::girth;
     double value = 0;  ///< mm (angle: degrees)
     /// The ISO 8559-1:2017 clause, named by its title ("waist girth"); empty when ISO 8559-1 has
@@ -127,15 +136,20 @@ struct Measurement {
 
 /// A measurement that could not be taken, with a one-line reason naming it and its cause.
 struct MissingMeasurement {
+    /// The measurement's identifier, as Measurement::name.
     std::string name;
+    /// One line naming the measurement and why it could not be taken.
     std::string reason;
 };
 
 /// Named measurements of one body, in the order they were taken.
 struct MeasurementSet {
+    /// The measurements taken, in the order they were taken.
     std::vector<Measurement> measurements;
+    /// The measurements that could not be taken, with their reasons.
     std::vector<MissingMeasurement> missing;
 
+    /// The measurement called `name`; null when it was not taken.
     const Measurement* find(const std::string& name) const {
         for (const auto& m : measurements) {
             if (m.name == name) {
@@ -144,6 +158,8 @@ struct MeasurementSet {
         }
         return nullptr;
     }
+    /// The value of the measurement called `name` (mm; angles in degrees); nullopt when it was
+    /// not taken.
     std::optional<double> value(const std::string& name) const {
         const Measurement* m = find(name);
         return m ? std::optional<double>(m->value) : std::nullopt;
@@ -153,6 +169,8 @@ struct MeasurementSet {
         remove(m.name);
         measurements.push_back(std::move(m));
     }
+    /// Records `name` as missing with `reason`; replaces a measurement or missing entry of the
+    /// same name.
     void add_missing(const std::string& name, const std::string& reason) {
         remove(name);
         missing.push_back({name, reason});
@@ -239,12 +257,18 @@ struct MeasureOptions {
 
 /// What one measuring run did. Times are wall-clock seconds.
 struct MeasureReport {
+    /// Vertices, faces and connected components of the measured mesh (holes filled).
+    ///@{
     std::size_t vertices = 0, faces = 0, components = 0;
+    ///@}
     std::size_t sections = 0;     ///< plane sections cut (scan, refinements, girths)
     double frame_seconds = 0;     ///< mesh to canonical frame and adjacency
     double landmark_seconds = 0;  ///< scan and landmark search
     double girth_seconds = 0;     ///< girth levels, sections and hulls
+    /// Landmarks found or overridden, and landmarks not found.
+    ///@{
     std::size_t landmarks_found = 0, landmarks_missing = 0;
+    ///@}
     std::vector<std::string> warnings;  ///< one line each (landmarks not found, ...)
     std::vector<BodyHole> holes;        ///< the input's holes, filled before measuring
 };

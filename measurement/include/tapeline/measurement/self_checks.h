@@ -28,8 +28,12 @@ namespace tapeline::measurement {
 
 /// A landmark's accepted height (fraction of stature), see the top of this file.
 struct HeightBand {
+    /// The landmark's name (landmark_names()).
     const char* landmark;
+    /// Lowest and highest accepted height above the floor, fractions of stature.
+    ///@{
     double lo, hi;
+    ///@}
 };
 
 inline const std::vector<HeightBand>& landmark_height_bands() {
