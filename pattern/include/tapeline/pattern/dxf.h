@@ -42,20 +42,29 @@
 
 namespace tapeline::pattern {
 
+/// How the DXF is written: curve sampling, mark and text sizes, layout of the pieces.
 struct DxfOptions {
-    double tolerance_mm = 0.05;  // curve sampling
-    double notch_length_mm = 6;
-    double text_height_mm = 8;
-    double gap_mm = 30;              // between inserted pieces
-    double max_row_width_mm = 1600;  // start a new row of inserts beyond this
+    double tolerance_mm = 0.05;      ///< chord tolerance of the curve sampling (> 0)
+    double notch_length_mm = 6;      ///< length of a notch line into the piece
+    double text_height_mm = 8;       ///< height of the texts in the blocks and of the style name
+    double gap_mm = 30;              ///< between inserted pieces
+    double max_row_width_mm = 1600;  ///< start a new row of inserts beyond this
 };
 
+/// What write_dxf() wrote, for tests and callers that check the file.
 struct DxfReport {
+    /// Entities written: blocks (one per piece), boundary vertices, turn points (layer 2), curve
+    /// points (layer 3), notches (layers 4, 80–83), internal lines and darts (layer 8).
+    ///@{
     std::size_t blocks = 0, boundary_vertices = 0, turn_points = 0, curve_points = 0, notches = 0,
                 internal_lines = 0;
-    std::vector<std::string> block_names;  // per piece, as written (sanitised, unique)
-    std::vector<Point2> insert_points;     // per piece: where its block is inserted
-    Point2 extents_min, extents_max;       // $EXTMIN, $EXTMAX: the box of every entity
+    ///@}
+    std::vector<std::string> block_names;  ///< per piece, as written (sanitised, unique)
+    std::vector<Point2> insert_points;     ///< per piece: where its block is inserted
+    /// $EXTMIN and $EXTMAX: corners of the box of every entity as inserted, mm.
+    ///@{
+    Point2 extents_min, extents_max;
+    ///@}
 };
 
 namespace internal {
@@ -201,8 +210,9 @@ inline std::vector<Point2> sample_edges(const std::vector<Edge>& edges, double t
 
 }  // namespace internal
 
-/// Writes the pattern as AAMA-style DXF to `out`. Throws InvalidInput for a piece with no
-/// outline or a non-finite coordinate (the file would be unreadable).
+/// Writes the pattern as AAMA-style DXF to `out`. Throws InvalidInput, before anything is
+/// written, for a tolerance that is not positive, a piece with no outline or a non-finite
+/// coordinate (the file would be unreadable), or a notch on an edge the piece does not have.
 inline DxfReport write_dxf(const Pattern& pattern, std::ostream& out, const DxfOptions& o = {}) {
     using namespace internal;
     if (!(o.tolerance_mm > 0)) {
