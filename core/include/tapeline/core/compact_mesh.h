@@ -27,8 +27,9 @@ namespace tapeline {
 ///         CGAL::Polyhedron_3, ...), every face a triangle.
 /// \tparam VertexPointMap a readable property map from vertex descriptors to points with x(), y(),
 ///         z() convertible by CGAL::to_double.
-/// \tparam VertexIndexMap, FaceIndexMap readable property maps onto [0, #vertices) and
-///         [0, #faces): vertex i and face j of the compact mesh are those with index i and j.
+/// \tparam VertexIndexMap, FaceIndexMap readable property maps onto [0, number of vertices) and
+///         [0, number of faces): vertex i and face j of the compact mesh are those with index i
+///         and j.
 /// \throws InvalidInput when an index map leaves its range or maps two elements to one index,
 ///         TopologyError when a face is not a triangle; `where` starts both messages.
 template <class FaceListGraph, class VertexPointMap, class VertexIndexMap, class FaceIndexMap>

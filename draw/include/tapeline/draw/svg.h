@@ -41,7 +41,7 @@ inline std::string svg_number(double v, int decimals = 3) {
     return s == "-0" ? "0" : s;
 }
 
-/// "x,y x,y ..." for the points attribute of <polyline> and <polygon>; with `trim`, numbers as
+/// "x,y x,y ..." for the points attribute of `<polyline>` and `<polygon>`; with `trim`, numbers as
 /// svg_number, else as svg_fixed.
 inline std::string svg_points(const std::vector<Vec2>& pts, int decimals = 3, bool trim = true) {
     std::string out;
@@ -88,10 +88,10 @@ inline std::string png_data_uri(const RgbaImage& img, double pixels_per_mm) {
     return "data:image/png;base64," + base64(encode_png(img, pixels_per_mm));
 }
 
-/// The XML declaration and the opening <svg> tag: the SVG namespace, then `before`, then width and
-/// height (each followed by `unit`, e.g. "mm" or "" for user units) and a viewBox from the origin
-/// over the same numbers, then `after`. `before` and `after` are extra attributes, each starting
-/// with a space.
+/// The XML declaration and the opening `<svg>` tag: the SVG namespace, then `before`, then width
+/// and height (each followed by `unit`, e.g. "mm" or "" for user units) and a viewBox from the
+/// origin over the same numbers, then `after`. `before` and `after` are extra attributes, each
+/// starting with a space.
 inline void svg_open(std::ostream& out, const std::string& width, const std::string& height,
                      const std::string& unit, const std::string& before = "",
                      const std::string& after = "") {

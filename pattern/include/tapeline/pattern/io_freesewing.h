@@ -142,6 +142,8 @@ inline std::optional<std::size_t> edge_on_line(const Outline& o, Point2 a, Point
 
 /// Builds a pattern from a parsed FreeSewing export; `source` names it in messages.
 ///
+/// \param doc the parsed export, a JSON object.
+/// \param source the export's name in messages (a file name, say).
 /// \param report when not null, receives the counts and notes of the import.
 /// \throws InvalidInput naming the source and the JSON path: a member of the wrong type, an
 ///         unknown unit or path operation, an operation before any move, a seam path without

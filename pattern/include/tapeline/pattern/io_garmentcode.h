@@ -59,6 +59,9 @@ inline Point2 gc_relative(const Point2& s, const Point2& e, const Point2& uv) {
 /// Builds a pattern from a parsed GarmentCode specification; `name` becomes the pattern name and
 /// `source` names it in messages.
 ///
+/// \param doc the parsed specification, a JSON object.
+/// \param source the specification's name in messages (a file name, say).
+/// \param name the pattern's name.
 /// \param report when not null, receives the counts and notes of the import.
 /// \throws InvalidInput naming the source and the JSON path: a member of the wrong type, an
 ///         unknown unit or curvature type, a bad edge, placement or stitch, a stitch or panel

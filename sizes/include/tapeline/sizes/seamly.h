@@ -121,7 +121,7 @@ inline std::string seamly_unit(const xml::Element& root, const std::string& sour
 }  // namespace internal
 
 /// Writes measurements as a Seamly2D/Valentina individual measurement file (see the file comment);
-/// non-finite values are left out. `notes` goes into <notes> (the body file, say).
+/// non-finite values are left out. `notes` goes into `<notes>` (the body file, say).
 inline void write_seamly_individual(std::ostream& out, const NamedValues& values,
                                     const std::string& notes = "") {
     out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
@@ -165,9 +165,9 @@ inline void write_seamly_individual(std::ostream& out, const MeasurementSet& set
     write_seamly_individual(out, named_values(set), notes);
 }
 
-/// A Seamly2D/Valentina individual measurement file (.vit; root <vit> or <smis>). Values may be
+/// A Seamly2D/Valentina individual measurement file (.vit; root `<vit>` or `<smis>`). Values may be
 /// formulas over the file's other measurements (internal/seamly_formula.h); separators (Valentina
-/// 0.5's <m type="separator">) are skipped; a value with specialUnits="true" is not scaled. A
+/// 0.5's `<m type="separator">`) are skipped; a value with specialUnits="true" is not scaled. A
 /// formula that refers to a name the file does not define (directly or through another formula)
 /// leaves its measurement out, listed in `left_out` with the reason; any other formula the
 /// reader cannot evaluate refuses the file.
@@ -264,7 +264,7 @@ inline MeasurementSet parse_seamly_individual(const std::string& text, const std
     return m;
 }
 
-/// A Seamly2D/Valentina multisize measurement table (.vst; root <vst> or <smms>).
+/// A Seamly2D/Valentina multisize measurement table (.vst; root `<vst>` or `<smms>`).
 inline MultisizeTable parse_seamly_multisize(const std::string& text, const std::string& source) {
     using namespace internal;
     const xml::Element root = xml::parse(text, source);
