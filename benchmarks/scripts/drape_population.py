@@ -117,22 +117,24 @@ def main():
              (len(ok), len(rows), 100.0 * len(ok) / max(len(rows), 1),
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",
              "| body | pattern | passed | gap max mm | edges x body | depth mm | self-x | "
-             "p95 stretch | moving % | vertices | frames | ms/step/10k | wall s | reason |",
-             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+             "p95 stretch | on body / off | % on body | moving % | vertices | frames | "
+             "ms/step/10k | wall s | reason |",
+             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     for r in rows:
         if "quality" in r:
             q = r["quality"]
-            lines.append("| %s | %s | %s | %.2f | %d | %.2f | %d | %.3f | %.1f | %d | %d | %.0f | "
-                         "%.1f | %s |" % (
+            lines.append("| %s | %s | %s | %.2f | %d | %.2f | %d | %.3f | %.3f / %.3f | %.0f | "
+                         "%.1f | %d | %d | %.0f | %.1f | %s |" % (
                              r["body"], r["pattern"], "yes" if r["passed"] else "**no**",
                              q["stitch_gap_max_mm"], q["edges_crossing_body"], q["max_depth_mm"],
                              q["self_intersections"], q["stretch_p95"],
-                             100 * q["moving_fraction"], r["mesh"]["cloth_vertices"],
+                             q["stretch_p95_on_body"], q["stretch_p95_off_body"],
+                             q["triangles_on_body_percent"], 100 * q["moving_fraction"], r["mesh"]["cloth_vertices"],
                              r["simulation"]["frames"],
                              r["simulation"]["ms_per_step_per_10k_vertices"], r["wall_seconds"],
                              r["reason"]))
         else:
-            lines.append("| %s | %s | **no** | | | | | | | | | | %.1f | %s |" %
+            lines.append("| %s | %s | **no** | | | | | | | | | | | | %.1f | %s |" %
                          (r["body"], r["pattern"], r["wall_seconds"], r["reason"]))
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")

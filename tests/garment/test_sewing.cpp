@@ -241,6 +241,42 @@ TEST(GarmentQuality, CountsEdgesCrossingABodyAndVerticesInside) {
     EXPECT_EQ(q.self_intersections, 0u);
 }
 
+// The stretch split between triangles on the body and off it. Cylinder of radius R along z;
+// separate right triangles in planes y = const parallel to its side: those at y = R + 2 (about
+// 2 mm off the skin) are stretched 1.2 along x against their pattern, those at y = R + 40 are
+// not. With a 5 mm band the on-body p95 is exactly 1.2, the off-body one 1; a band below 2 mm
+// puts every triangle off the body, and no band leaves the split out.
+TEST(GarmentQuality, SplitsStretchOnAndOffTheBody) {
+    const double R = 50, L = 400;
+    const auto body = capped_cylinder(v3(0, 0, 0), R, L, 96, 8);
+    tg::GarmentMesh g;
+    const int on_count = 6, off_count = 14;
+    for (int i = 0; i < on_count + off_count; ++i) {
+        const bool on = i < on_count;
+        const double y = on ? R + 2 : R + 40, z0 = -150 + 15 * i, s = on ? 1.2 : 1.0;
+        const std::uint32_t b = std::uint32_t(g.positions.size());
+        // A 10 × 10 mm right triangle in the plane y = const, its pattern 10/s wide along x.
+        g.positions.push_back(v3(-5, y, z0));
+        g.positions.push_back(v3(5, y, z0));
+        g.positions.push_back(v3(-5, y, z0 + 10));
+        g.triangles.push_back({b, b + 1, b + 2});
+        g.uv.push_back({tg::UV{0, 0}, tg::UV{10 / s, 0}, tg::UV{0, 10}});
+        g.triangle_piece.push_back(0);
+    }
+    const auto q = tg::garment_quality(body.points, body.triangles, g, 0, 0, 5.0);
+    EXPECT_NEAR(q.triangles_on_body_percent, 100.0 * on_count / (on_count + off_count), 1e-9);
+    EXPECT_NEAR(q.stretch_p95_on_body, 1.2, 1e-12);
+    EXPECT_NEAR(q.stretch_p95_off_body, 1.0, 1e-12);
+    EXPECT_NEAR(q.stretch_max, 1.2, 1e-12);
+    const auto tight = tg::garment_quality(body.points, body.triangles, g, 0, 0, 1.5);
+    EXPECT_EQ(tight.triangles_on_body_percent, 0.0);
+    EXPECT_NEAR(tight.stretch_p95_off_body, 1.2, 1e-12);  // 6 of 20 above the 95th percentile
+    const auto none = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+    EXPECT_EQ(none.triangles_on_body_percent, 0.0);
+    EXPECT_EQ(none.stretch_p95_on_body, 1.0);
+    EXPECT_EQ(none.stretch_p95_off_body, 1.0);
+}
+
 // set_damping acts from the next step: a free triangle falling under gravity reaches the discrete
 // terminal velocity of v <- v·exp(-k·h) + g·h, i.e. g·h / (1 - exp(-k·h)), and a bad rate is
 // refused.

@@ -426,8 +426,9 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     rep.boundary_loops = boundary_loops(w.count, g.triangles);
     // --- quality
     t0 = Clock::now();
-    rep.quality =
-        garment_quality(body.points(), body.triangles(), g, last.moving_fraction, gap_max);
+    // The cloth rests at the clearance from the skin: a triangle within twice that lies on it.
+    rep.quality = garment_quality(body.points(), body.triangles(), g, last.moving_fraction, gap_max,
+                                  2 * rep.body_clearance_mm);
     out.stretch = triangle_stretch(g.positions, g.triangles, g.uv);
     rep.gates = quality_gates(rep.quality);
     rep.passed =

@@ -110,6 +110,9 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"stretch_p95", q.stretch_p95},
                     {"stretch_max", q.stretch_max},
                     {"stretch_above_105_percent", q.stretch_above_105_percent},
+                    {"stretch_p95_on_body", q.stretch_p95_on_body},
+                    {"stretch_p95_off_body", q.stretch_p95_off_body},
+                    {"triangles_on_body_percent", q.triangles_on_body_percent},
                     {"moving_fraction", q.moving_fraction}};
     // Where the first crossings are, in the body's canonical frame (mm; x to the body's left, y
     // up from the floor, z to the front).

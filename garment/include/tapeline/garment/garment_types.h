@@ -137,6 +137,14 @@ struct QualityFigures {
     double stretch_median = 1, stretch_p95 = 1, stretch_max = 1;
     ///@}
     double stretch_above_105_percent = 0;  ///< % of triangles with a stretch above 1.05
+    /// The 95th-percentile stretch of the triangles lying on the body (centroid within the
+    /// contact band of the skin, garment_quality()) and of the others: stretch on the body is
+    /// the garment's fit, stretch off it is the cloth's own sag under gravity and the solver's
+    /// softness. 1 when there is no such triangle (or no band was given).
+    ///@{
+    double stretch_p95_on_body = 1, stretch_p95_off_body = 1;
+    ///@}
+    double triangles_on_body_percent = 0;  ///< % of triangles lying on the body
     double moving_fraction = 0;            ///< vertices that moved > 0.3 mm in the last frame
     /// Largest distance between the two vertices of a stitch pair at the end of the drape, mm.
     double stitch_gap_max_mm = 0;

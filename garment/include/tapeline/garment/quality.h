@@ -69,10 +69,13 @@ inline double percentile(std::vector<double> v, double q) {
 }  // namespace internal
 
 /// Penetration, crossings and stretch of `g` on the closed body (`body_points`, `body_tris`, the
-/// garment's frame, mm). `moving_fraction` and `stitch_gap_max_mm` are copied in.
+/// garment's frame, mm). `moving_fraction` and `stitch_gap_max_mm` are copied in. A triangle
+/// whose centroid lies within `contact_band_mm` of the skin counts as lying on the body for the
+/// split of the stretch (QualityFigures::stretch_p95_on_body); 0 leaves the split out.
 inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
                                       const std::vector<Tri>& body_tris, const GarmentMesh& g,
-                                      double moving_fraction, double stitch_gap_max_mm) {
+                                      double moving_fraction, double stitch_gap_max_mm,
+                                      double contact_band_mm = 0) {
     using K = CGAL::Simple_cartesian<double>;
     using Mesh = CGAL::Surface_mesh<K::Point_3>;
     using P = K::Point_3;
@@ -159,6 +162,20 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
         q.stretch_above_105_percent =
             100.0 * double(std::count_if(st.begin(), st.end(), [](double s) { return s > 1.05; })) /
             double(st.size());
+    }
+    if (contact_band_mm > 0 && !st.empty()) {
+        std::vector<double> on, off;
+        for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+            const Tri& t = g.triangles[f];
+            const Vec3 c = vec3::scale(
+                vec3::add(vec3::add(g.positions[t[0]], g.positions[t[1]]), g.positions[t[2]]),
+                1.0 / 3.0);
+            const double d2 = body_tree.squared_distance(P(c[0], c[1], c[2]));
+            (d2 <= contact_band_mm * contact_band_mm ? on : off).push_back(st[f]);
+        }
+        q.triangles_on_body_percent = 100.0 * double(on.size()) / double(st.size());
+        q.stretch_p95_on_body = on.empty() ? 1.0 : internal::percentile(on, 0.95);
+        q.stretch_p95_off_body = off.empty() ? 1.0 : internal::percentile(off, 0.95);
     }
     return q;
 }
