@@ -1,6 +1,7 @@
 // Reading every supported format and variant; repairs with their counts and warnings; the map back
 // to input vertices; real meshes (spot.obj in the project data, shared meshes when present).
 #include <tapeline_test/io.h>
+#include <tapeline_test/io_bytes.h>
 #include <tapeline_test/io_fixture.h>
 
 #include <gtest/gtest.h>
@@ -48,8 +49,8 @@ std::string warnings(const LoadedView& m) {
 }
 
 /// The tetrahedron of the reject tests, closed and consistently oriented (outward normals).
-const tapeline_test::Points kTetraPoints = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const tapeline_test::Faces kTetraFaces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+using tapeline_test::kTetraFaces;
+using tapeline_test::kTetraPoints;
 
 /// `file_order`: vertices keep the file's order (not so for STL, numbered by first appearance).
 void expect_clean_tetrahedron(const LoadedView& m, bool file_order = true) {
@@ -143,17 +144,7 @@ TEST_F(Read, PlyAsciiWithExtraPropertiesAndElements) {
     EXPECT_EQ(soup.vertex_properties.at("red"), (std::vector<double>{1, 2, 3, 4}));
 }
 
-template <class T>
-void put(std::string& out, T value, bool big_endian) {
-    char b[sizeof(T)];
-    std::memcpy(b, &value, sizeof(T));
-    if (big_endian) {
-        for (std::size_t i = 0; i < sizeof(T) / 2; ++i) {
-            std::swap(b[i], b[sizeof(T) - 1 - i]);
-        }
-    }
-    out.append(b, sizeof(T));
-}
+using tapeline_test::put;
 
 /// Binary PLY with mixed types: double x, float y, short z (scaled), an extra int property,
 /// an edge element, ushort/uint face lists, written in either byte order.

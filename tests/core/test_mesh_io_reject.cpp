@@ -2,6 +2,7 @@
 // the exception type and that the one-line message names the file and the element (DESIGN.md §6).
 #include <tapeline/core/errors.h>
 #include <tapeline_test/io.h>
+#include <tapeline_test/io_bytes.h>
 #include <tapeline_test/io_fixture.h>
 
 #include <gtest/gtest.h>
@@ -57,17 +58,7 @@ const char* const kTetraOff =
 
 // --- binary helpers -----------------------------------------------------------------------------
 
-template <class T>
-void put(std::string& out, T value, bool big_endian) {
-    char b[sizeof(T)];
-    std::memcpy(b, &value, sizeof(T));
-    if (big_endian) {
-        for (std::size_t i = 0; i < sizeof(T) / 2; ++i) {
-            std::swap(b[i], b[sizeof(T) - 1 - i]);
-        }
-    }
-    out.append(b, sizeof(T));
-}
+using tapeline_test::put;
 
 /// Binary PLY (float xyz, uchar/int lists) of the given soup.
 std::string binary_ply(const tapeline_test::Points& points, const tapeline_test::Faces& faces,
@@ -107,8 +98,8 @@ std::string binary_stl(const std::vector<std::array<float, 9>>& triangles) {
     return out;
 }
 
-const tapeline_test::Points kTetraPoints = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-const tapeline_test::Faces kTetraFaces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+using tapeline_test::kTetraFaces;
+using tapeline_test::kTetraPoints;
 
 // --- any format
 // -----------------------------------------------------------------------------------

@@ -216,24 +216,76 @@ TEST(GarmentDrapeSolver, BitIdenticalForAnyThreadCount) {
     const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{5});
     std::vector<std::vector<Vec3>> results;
     std::vector<std::size_t> self_contacts;
+    std::size_t anchors = 0;
     for (int threads : {1, 2}) {
         DrapeOptions options;
         options.threads = threads;
+        options.tether_stretch = 1.02;
         // 3721 vertices, 7200 triangles: every parallel path runs in several blocks.
         DrapeSolver solver(horizontal_square(60, 4, 0, 90, 0), FabricParams{}, options, &body);
         std::size_t most_self = 0;
         for (int f = 0; f < 12; ++f) {
-            most_self = std::max(most_self, solver.step().self_contacts);
+            const StepReport r = solver.step();
+            most_self = std::max(most_self, r.self_contacts);
+            anchors = std::max(anchors, r.tether_anchors);
         }
         results.push_back(solver.positions());
         self_contacts.push_back(most_self);
     }
+    EXPECT_GT(anchors, 0u);  // the tethers ran too (anchored where the cloth touches the sphere)
     ASSERT_EQ(results[0].size(), results[1].size());
     for (std::size_t i = 0; i < results[0].size(); ++i) {
         ASSERT_EQ(results[0][i], results[1][i]) << "vertex " << i;
     }
     EXPECT_EQ(self_contacts[0], self_contacts[1]);
     EXPECT_GT(self_contacts[0], 0u);  // the self-collision path ran too
+}
+
+// Tethers against the softness of XPBD: a 400 mm strip of 40 elements hangs from its pinned top
+// row with 10 sub-steps per frame. Without tethers it stretches by about g·h²·N²/2 (87 mm at
+// h = 1/300 s) — more than 5 % end to end. With tether_stretch 1.02 every vertex in row i stays
+// within 1.02·i·cell of the top vertex of its column (its nearest anchor over the rest edges,
+// straight up the column); the tether acts last in the pass here (no collider), so the bound
+// holds to rounding. Hanging under gravity the strip is still stretched, not compressed.
+TEST(GarmentDrapeSolver, TethersBoundTheStretchOfHangingCloth) {
+    const int nx = 40, ny = 3;
+    const double cell = 10;
+    ClothModel strip = cloth_grid(nx, ny, cell, {0, 0, 0}, {0, -1, 0}, {0, 0, 1});
+    strip.pinned.assign(strip.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        strip.pinned[grid_vertex(nx, 0, j)] = 1;
+    }
+    FabricParams fabric;
+    fabric.bending_un_m = 0;
+    double end_to_end[2] = {0, 0};
+    for (const double tether : {0.0, 1.02}) {
+        DrapeOptions options;
+        options.self_collision = false;
+        options.damping_per_second = 4;
+        options.tether_stretch = tether;
+        DrapeSolver solver(strip, fabric, options);
+        StepReport report;
+        for (int f = 0; f < 90; ++f) {
+            report = solver.step();
+        }
+        const auto& x = solver.positions();
+        double longest = 0;
+        for (int j = 0; j <= ny; ++j) {
+            const Vec3& top = x[grid_vertex(nx, 0, j)];
+            for (int i = 1; i <= nx; ++i) {
+                const double d = distance(x[grid_vertex(nx, i, j)], top);
+                if (tether > 0) {
+                    ASSERT_LE(d, tether * i * cell * (1 + 1e-12)) << "row " << i << " column " << j;
+                }
+            }
+            longest = std::max(longest, distance(x[grid_vertex(nx, nx, j)], top) / (nx * cell));
+        }
+        end_to_end[tether > 0] = longest;
+        EXPECT_EQ(report.tether_anchors, tether > 0 ? std::size_t(ny + 1) : 0u);
+    }
+    EXPECT_GT(end_to_end[0], 1.05) << "the solver alone is expected to be soft here";
+    EXPECT_LE(end_to_end[1], 1.02 * (1 + 1e-12));
+    EXPECT_GT(end_to_end[1], 1.0);
 }
 
 // reset() brings back the initial state, and the rerun reproduces the first run exactly.
@@ -324,6 +376,11 @@ TEST(GarmentDrapeSolver, RefusesBadInputNamingTheElement) {
         ClothModel c = good;
         c.rest_uv.pop_back();
         refuse(c, {}, {}, "rest_uv has 31 entries for 32 triangles");
+    }
+    {
+        DrapeOptions o;
+        o.tether_stretch = 0.5;
+        refuse(good, o, {}, "options.tether_stretch must be 0 (no tethers) or >= 1, got 0.5");
     }
     {
         ClothModel c = good;

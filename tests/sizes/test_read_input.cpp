@@ -20,7 +20,7 @@ std::string write_temp(const std::string& name, const std::string& text) {
     return path;
 }
 
-void expect_refused(const std::string& path, const std::string& needle) {
+void expect_input_refused(const std::string& path, const std::string& needle) {
     try {
         read_measurement_input(path);
         ADD_FAILURE() << path << ": no exception";
@@ -122,10 +122,10 @@ TEST(MeasurementInput, SeamlyNamesGetTheirFreeSewingNames) {
 }
 
 TEST(MeasurementInput, AbsurdSetsAreRefused) {
-    expect_refused(write_temp("neg.json", R"({"chest": -979})"), "must be positive");
-    expect_refused(write_temp("tall.json", R"({"waist": 1900, "height": 1700})"),
-                   "bigger than the height");
-    expect_refused(write_temp("unit.json", R"({"units": "furlong", "chest": 1})"),
-                   "unknown unit 'furlong'");
-    expect_refused(write_temp("text.json", R"({"chest": "big"})"), "chest");
+    expect_input_refused(write_temp("neg.json", R"({"chest": -979})"), "must be positive");
+    expect_input_refused(write_temp("tall.json", R"({"waist": 1900, "height": 1700})"),
+                         "bigger than the height");
+    expect_input_refused(write_temp("unit.json", R"({"units": "furlong", "chest": 1})"),
+                         "unknown unit 'furlong'");
+    expect_input_refused(write_temp("text.json", R"({"chest": "big"})"), "chest");
 }

@@ -5,6 +5,7 @@
 #include <tapeline_test/surfaces.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/plain_vec3.h>
 
 #include <cmath>
 #include <random>
@@ -18,11 +19,9 @@ using Vec3 = std::array<double, 3>;
 
 namespace {
 
-const double pi = 3.14159265358979323846;
+using tapeline_test::plain::norm;
+using tapeline_test::plain::pi;
 
-double norm(const Vec3& p) {
-    return std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-}
 double chord(const Vec3& p, const Vec3& q) {
     return norm({p[0] - q[0], p[1] - q[1], p[2] - q[2]});
 }

@@ -3,6 +3,7 @@
 #include <tapeline_test/surfaces.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/plain_vec3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,20 +19,11 @@ using Vec3 = std::array<double, 3>;
 
 namespace {
 
-const double pi = 3.14159265358979323846;
-
-Vec3 sub(const Vec3& p, const Vec3& q) {
-    return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-Vec3 cross(const Vec3& p, const Vec3& q) {
-    return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
-}
-double dot(const Vec3& p, const Vec3& q) {
-    return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-}
-double norm(const Vec3& p) {
-    return std::sqrt(dot(p, p));
-}
+using tapeline_test::plain::cross;
+using tapeline_test::plain::dot;
+using tapeline_test::plain::norm;
+using tapeline_test::plain::pi;
+using tapeline_test::plain::sub;
 
 // Distance-like residual of p from the implicit surface, written independently of the library.
 double residual(const SurfaceSpec& s, const Vec3& p) {

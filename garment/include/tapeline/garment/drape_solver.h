@@ -53,6 +53,12 @@
 // hanging from a support stretches by about g·h²·N²/2 (measured: 12 elements of 10 mm, h = 1/300 s:
 // 7 %; 40 sub-steps: 0.4 %). Fine meshes therefore need sub-steps in proportion to the number of
 // elements between supports (or more iterations, which help less), as Macklin et al. 2019 do.
+// Tethers (DrapeOptions::tether_stretch) bound that stretch where it matters, in cloth hanging
+// from its supports: long-range attachments (Kim, Chentanez, Müller, "Long Range Attachments",
+// SCA 2012) whose anchors are the vertices touching the body at the start of the frame (and the
+// pinned ones). The rest distance to the nearest anchor is the shortest path over the rest
+// edges, never shorter than the true rest geodesic, so a tether never holds cloth that the
+// fabric would let hang within its own stretch; it only pulls the vertex, never the anchor.
 // Tried and left out: over-relaxing the λ update (ω = 1.5 blows up within two frames) and
 // warm-starting each sub-step from a fraction β of the previous multipliers (β = 0.5 halves the
 // stretch, β ≥ 0.9 blows up).
@@ -73,6 +79,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <string>
@@ -162,6 +169,7 @@ private:
     void project_bend(std::size_t e, double h);
     void project_stitch(std::size_t s, double h);
     void project_attachment(std::size_t a, double h);
+    void update_tethers();
     [[noreturn]] void fail(std::size_t frame_number, const std::string& what);
 
     ClothModel model_;
@@ -183,6 +191,10 @@ private:
     std::vector<std::uint32_t> neighbour_start_, neighbours_;            // one-ring, CSR, sorted
     std::vector<std::pair<std::uint32_t, std::uint32_t>> stitch_pairs_;  // both ways, sorted
     std::vector<std::uint8_t> in_contact_;
+    std::vector<double> rest_edge_length_;      // per neighbours_ entry: rest length, mm
+    std::vector<std::uint32_t> tether_anchor_;  // per vertex: its anchor (itself: none)
+    std::vector<double> tether_limit_;          // per vertex: tether_stretch × rest distance
+    std::size_t tether_anchors_ = 0;
     std::vector<double> start_distance_;  // collider distance at the sub-step's start
     std::vector<double> end_distance_;    // after the last contact pass (a lower bound)
     std::vector<Vec3> end_normal_;        // collider gradient there
@@ -276,6 +288,11 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
     if (!(std::isfinite(options_.body_clearance_mm) && options_.body_clearance_mm >= 0)) {
         throw InvalidInput(where + "options.body_clearance_mm must be finite and >= 0, got " +
                            num(options_.body_clearance_mm));
+    }
+    if (!(std::isfinite(options_.tether_stretch) &&
+          (options_.tether_stretch == 0 || options_.tether_stretch >= 1))) {
+        throw InvalidInput(where + "options.tether_stretch must be 0 (no tethers) or >= 1, got " +
+                           num(options_.tether_stretch));
     }
     if (!(std::isfinite(options_.damping_per_second) && options_.damping_per_second >= 0)) {
         throw InvalidInput(where + "options.damping_per_second must be finite and >= 0, got " +
@@ -484,6 +501,28 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
     for (std::size_t k = 0; k < edges.size(); ++k) {
         neighbours_[k] = edges[k].second;  // sorted by (a, b): CSR rows come out sorted
     }
+    // Rest length of every CSR entry (the shortest over the triangles sharing the edge).
+    rest_edge_length_.assign(neighbours_.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t t = 0; t < nt; ++t) {
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t a = model_.triangles[t][c], b = model_.triangles[t][(c + 1) % 3];
+            const UV& ua = model_.rest_uv[t][c];
+            const UV& ub = model_.rest_uv[t][(c + 1) % 3];
+            const double len = std::hypot(ub[0] - ua[0], ub[1] - ua[1]);
+            for (const auto& [from, to] : {std::make_pair(a, b), std::make_pair(b, a)}) {
+                const auto first = neighbours_.begin() + neighbour_start_[from];
+                const auto last = neighbours_.begin() + neighbour_start_[from + 1];
+                const auto it = std::lower_bound(first, last, to);
+                double& rest = rest_edge_length_[std::size_t(it - neighbours_.begin())];
+                rest = std::min(rest, len);
+            }
+        }
+    }
+    tether_anchor_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        tether_anchor_[i] = static_cast<std::uint32_t>(i);
+    }
+    tether_limit_.assign(n, 0.0);
     double edge_sum = 0;
     for (std::size_t k = 0; k < edges.size(); ++k) {
         edge_sum += norm(sub(model_.positions[edges[k].first], model_.positions[edges[k].second]));
@@ -657,6 +696,9 @@ inline StepReport DrapeSolver::step() {
         }
     }
     const double h = options_.frame_seconds / options_.substeps;
+    if (options_.tether_stretch > 0) {
+        update_tethers();
+    }
     arena_->execute([&] {
         for (int s = 0; s < options_.substeps; ++s) {
             substep(h, frame_number);
@@ -690,6 +732,7 @@ inline StepReport DrapeSolver::step() {
     report.moving_fraction = static_cast<double>(moving) / static_cast<double>(n);
     report.kinetic_energy_j = ke * 1e-6;
     report.self_contacts = self_contacts_.size();
+    report.tether_anchors = tether_anchors_;
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
@@ -736,6 +779,20 @@ inline void DrapeSolver::substep(double h, std::size_t frame_number) {
         for_each_coloured(stitch_colours_, [&](std::uint32_t s) { project_stitch(s, h); });
         for (std::size_t a = 0; a < attachments_.size(); ++a) {
             project_attachment(a, h);
+        }
+        if (tether_anchors_ > 0) {
+            // Anchors are never moved here, so every vertex is independent of the others.
+            parallel_vertices([&](std::size_t i) {
+                const std::uint32_t a = tether_anchor_[i];
+                if (a == i || w_[i] == 0) {
+                    return;
+                }
+                const Vec3 d = sub(p_[i], p_[a]);
+                const double len = norm(d);
+                if (len > tether_limit_[i]) {
+                    p_[i] = add(p_[a], scale(d, tether_limit_[i] / len));
+                }
+            });
         }
         solve_self_contacts();
         if (collider_) {
@@ -1052,6 +1109,80 @@ inline void DrapeSolver::project_attachment(std::size_t a, double h) {
     const double dl = (-len - alpha * lambda_attachment_[a]) / (w + alpha);
     lambda_attachment_[a] += dl;
     p_[at.vertex] = add(p_[at.vertex], scale(d, w * dl / len));
+}
+
+// Multi-source Dijkstra over the rest edges and the stitches from this frame's anchors: the
+// pinned vertices and those the last sub-step left touching the collider. Serial and ordered by
+// (distance, vertex), so the anchors do not depend on the thread count.
+inline void DrapeSolver::update_tethers() {
+    const std::size_t n = x_.size();
+    std::vector<double> dist(n, std::numeric_limits<double>::infinity());
+    using Entry = std::pair<double, std::uint32_t>;
+    std::vector<Entry> heap;
+    tether_anchors_ = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        tether_anchor_[i] = static_cast<std::uint32_t>(i);
+        if (w_[i] == 0 || in_contact_[i]) {
+            dist[i] = 0;
+            heap.emplace_back(0.0, static_cast<std::uint32_t>(i));
+            ++tether_anchors_;
+        }
+    }
+    if (tether_anchors_ == 0) {
+        return;
+    }
+    // Stitches as extra edges, both ways (CSR).
+    std::vector<std::uint32_t> st_start(n + 1, 0), st_to;
+    std::vector<double> st_len;
+    for (const Stitch& st : stitches_) {
+        ++st_start[st.a + 1];
+        ++st_start[st.b + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        st_start[i + 1] += st_start[i];
+    }
+    st_to.resize(st_start[n]);
+    st_len.resize(st_start[n]);
+    {
+        std::vector<std::uint32_t> fill(st_start.begin(), st_start.end() - 1);
+        for (const Stitch& st : stitches_) {
+            st_to[fill[st.a]] = st.b;
+            st_len[fill[st.a]++] = st.rest_mm;
+            st_to[fill[st.b]] = st.a;
+            st_len[fill[st.b]++] = st.rest_mm;
+        }
+    }
+    const auto later = std::greater<Entry>();
+    std::make_heap(heap.begin(), heap.end(), later);
+    auto relax = [&](std::uint32_t v, std::uint32_t u, double len) {
+        const double d = dist[v] + len;
+        if (d < dist[u]) {
+            dist[u] = d;
+            tether_anchor_[u] = tether_anchor_[v];
+            heap.emplace_back(d, u);
+            std::push_heap(heap.begin(), heap.end(), later);
+        }
+    };
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), later);
+        const auto [d, v] = heap.back();
+        heap.pop_back();
+        if (d > dist[v]) {
+            continue;
+        }
+        for (std::uint32_t k = neighbour_start_[v]; k < neighbour_start_[v + 1]; ++k) {
+            relax(v, neighbours_[k], rest_edge_length_[k]);
+        }
+        for (std::uint32_t k = st_start[v]; k < st_start[v + 1]; ++k) {
+            relax(v, st_to[k], st_len[k]);
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!std::isfinite(dist[i])) {
+            tether_anchor_[i] = static_cast<std::uint32_t>(i);  // no anchor reaches it
+        }
+        tether_limit_[i] = options_.tether_stretch * dist[i];
+    }
 }
 
 inline void DrapeSolver::detect_self_contacts() {

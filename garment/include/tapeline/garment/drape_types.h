@@ -54,7 +54,14 @@ struct DrapeOptions {
     /// contacts keep the fabric's thickness.
     double body_clearance_mm = 0;
     bool self_collision = true;  ///< cloth–cloth proximity constraints
-    int threads = 0;             ///< 0: all cores (TBB default)
+    /// Long-range attachments (tethers, Kim, Chentanez, Müller 2012) from the cloth's supports:
+    /// at the start of every frame the vertices then touching the collider and the pinned ones
+    /// become anchors, and every other vertex is kept within `tether_stretch` times its rest
+    /// distance (shortest path over the rest edges and stitches) of its nearest anchor. Bounds
+    /// the stretch of cloth hanging from its supports that XPBD's few passes leave (see the
+    /// solver's header); 0 (default): no tethers; otherwise >= 1.
+    double tether_stretch = 0;
+    int threads = 0;  ///< 0: all cores (TBB default)
     /// A step fails (SolverFailure naming the frame) when a position is not finite, a speed
     /// exceeds this (mm/s), or kinetic energy grows this many times over a frame while no
     /// external work explains it.
@@ -108,14 +115,15 @@ struct ClothModel {
 
 /// What one step() did.
 struct StepReport {
-    std::size_t frame = 0;          ///< frames done so far
-    double simulated_seconds = 0;   ///< simulated time so far
-    double max_move_mm = 0;         ///< largest vertex displacement over this frame
-    double moving_fraction = 0;     ///< fraction of vertices that moved more than 0.3 mm
-    double kinetic_energy_j = 0;    ///< at the end of the frame
-    std::size_t contacts = 0;       ///< cloth vertices in contact with the collider
-    std::size_t self_contacts = 0;  ///< cloth–cloth proximity pairs handled
-    double seconds = 0;             ///< wall time of the step
+    std::size_t frame = 0;           ///< frames done so far
+    double simulated_seconds = 0;    ///< simulated time so far
+    double max_move_mm = 0;          ///< largest vertex displacement over this frame
+    double moving_fraction = 0;      ///< fraction of vertices that moved more than 0.3 mm
+    double kinetic_energy_j = 0;     ///< at the end of the frame
+    std::size_t contacts = 0;        ///< cloth vertices in contact with the collider
+    std::size_t self_contacts = 0;   ///< cloth–cloth proximity pairs handled
+    std::size_t tether_anchors = 0;  ///< anchors of the tethers over this frame (0: none)
+    double seconds = 0;              ///< wall time of the step
 };
 
 }  // namespace tapeline::garment

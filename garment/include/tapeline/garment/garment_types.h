@@ -58,6 +58,10 @@ struct SewingOptions {
     /// After sewing, pairs closer than this are welded into one vertex for the drape (0: half
     /// the resolution); pairs further apart stay zero-length stitches.
     double weld_within_mm = 0;
+    /// Tethers of the drape after sewing (DrapeOptions::tether_stretch; replaces the drape
+    /// options' value in that phase): cloth hanging from where it touches the body stays within
+    /// this stretch of its rest distance to the nearest contact. 0: none.
+    double tether_stretch = 1.02;
 };
 
 /// Everything dress() needs besides the body and the pattern.
