@@ -10,7 +10,7 @@ namespace tapeline_test::geodesic::cgal {
 
 namespace {
 template <class Mesh>
-Field run(Mesh& tm, const Soup& soup, const Sources& sources) {
+Field run_dijkstra(Mesh& tm, const Soup& soup, const Sources& sources) {
     Field out;
     out.d.assign(soup.points.size(), -1.0);
     auto map = boost::make_iterator_property_map(out.d.begin(), get(boost::vertex_index, tm));
@@ -20,7 +20,7 @@ Field run(Mesh& tm, const Soup& soup, const Sources& sources) {
 }  // namespace
 
 Field dijkstra_field(const Soup& soup, const Sources& sources, MeshKind kind) {
-    return with_mesh(soup, kind, [&](auto& tm) { return run(tm, soup, sources); });
+    return with_mesh(soup, kind, [&](auto& tm) { return run_dijkstra(tm, soup, sources); });
 }
 
 }  // namespace tapeline_test::geodesic::cgal

@@ -16,7 +16,7 @@ namespace tapeline_test::geodesic::cgal {
 namespace {
 
 template <class Mesh>
-Field run(Mesh& tm, const Soup& soup, const Sources& sources) {
+Field run_exact_cgal(Mesh& tm, const Soup& soup, const Sources& sources) {
     Field out;
     out.d.assign(soup.points.size(), -1.0);
     auto map = boost::make_iterator_property_map(out.d.begin(), get(boost::vertex_index, tm));
@@ -57,7 +57,7 @@ PathResult one_path(Mesh& tm, const Soup& soup, const SurfacePoint& from, const 
 }  // namespace
 
 Field exact_field(const Soup& soup, const Sources& sources, MeshKind kind) {
-    return with_mesh(soup, kind, [&](auto& tm) { return run(tm, soup, sources); });
+    return with_mesh(soup, kind, [&](auto& tm) { return run_exact_cgal(tm, soup, sources); });
 }
 
 }  // namespace tapeline_test::geodesic::cgal

@@ -19,8 +19,8 @@ namespace tapeline_test::geodesic::cgal {
 
 namespace {
 template <class Mesh>
-std::vector<Field> run(Mesh& tm, const Soup& soup, const std::vector<Sources>& queries,
-                       const HeatOptions& options) {
+std::vector<Field> run_heat(Mesh& tm, const Soup& soup, const std::vector<Sources>& queries,
+                            const HeatOptions& options) {
     tapeline::geodesic::HeatDistanceSolver<Mesh> solver(tm, options);
     std::vector<Field> out;
     for (const auto& q : queries) {
@@ -56,11 +56,11 @@ std::vector<Field> heat_queries(const Soup& soup, const std::vector<Sources>& qu
     if (kind == MeshKind::polyhedron) {
         cgal::Polyhedron tm;
         cgal::build(soup, tm);
-        return cgal::run(tm, soup, queries, heat);
+        return cgal::run_heat(tm, soup, queries, heat);
     }
     cgal::SurfaceMesh tm;
     cgal::build(soup, tm, kind == MeshKind::surface_mesh_with_garbage);
-    return cgal::run(tm, soup, queries, heat);
+    return cgal::run_heat(tm, soup, queries, heat);
 }
 
 }  // namespace tapeline_test::geodesic

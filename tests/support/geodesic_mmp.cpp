@@ -25,7 +25,8 @@ namespace {
 namespace tg = tapeline::geodesic;
 
 template <class Mesh>
-MmpField run(Mesh& tm, const Soup& soup, const Sources& sources, const ExactMmpOptions& options) {
+MmpField run_mmp(Mesh& tm, const Soup& soup, const Sources& sources,
+                 const ExactMmpOptions& options) {
     MmpField out;
     out.d.assign(soup.points.size(), -1.0);
     auto map = boost::make_iterator_property_map(out.d.begin(), get(boost::vertex_index, tm));
@@ -74,7 +75,8 @@ std::vector<std::vector<double>> matrix(Mesh& tm, const Soup& soup,
 
 MmpField mmp_distances(const Soup& soup, const Sources& sources, MeshKind kind,
                        const ExactMmpOptions& options) {
-    return cgal::with_mesh(soup, kind, [&](auto& tm) { return run(tm, soup, sources, options); });
+    return cgal::with_mesh(soup, kind,
+                           [&](auto& tm) { return run_mmp(tm, soup, sources, options); });
 }
 
 MmpField mmp_distances_with_named_parameters(const Soup& soup, const Sources& sources) {
