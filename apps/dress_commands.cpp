@@ -273,7 +273,7 @@ void register_dress_commands(CLI::App& app) {
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
     cmd->add_option("--tether-stretch", a->tether_stretch,
                     "Cloth hanging from where it touches the body stays within this stretch of "
-                    "its rest distance to the contact (0: no tethers)")
+                    "its rest distance to the contact (0: no tethers; try 1.02)")
         ->capture_default_str();
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "

@@ -1112,7 +1112,8 @@ inline void DrapeSolver::project_attachment(std::size_t a, double h) {
 }
 
 // Multi-source Dijkstra over the rest edges and the stitches from this frame's anchors: the
-// pinned vertices and those the last sub-step left touching the collider. Serial and ordered by
+// pinned vertices and those the last sub-step left touching the collider (within 1.5 times the
+// clearance of it). Serial and ordered by
 // (distance, vertex), so the anchors do not depend on the thread count.
 inline void DrapeSolver::update_tethers() {
     const std::size_t n = x_.size();
@@ -1122,7 +1123,9 @@ inline void DrapeSolver::update_tethers() {
     tether_anchors_ = 0;
     for (std::size_t i = 0; i < n; ++i) {
         tether_anchor_[i] = static_cast<std::uint32_t>(i);
-        if (w_[i] == 0 || in_contact_[i]) {
+        // Touching: within half the clearance of where contact holds it. A distance, not the
+        // contact flag, so that the anchors do not flicker with every sub-step's contacts.
+        if (w_[i] == 0 || (collider_ && end_distance_[i] <= 1.5 * clearance_)) {
             dist[i] = 0;
             heap.emplace_back(0.0, static_cast<std::uint32_t>(i));
             ++tether_anchors_;

@@ -55,7 +55,8 @@ struct DrapeOptions {
     double body_clearance_mm = 0;
     bool self_collision = true;  ///< cloth–cloth proximity constraints
     /// Long-range attachments (tethers, Kim, Chentanez, Müller 2012) from the cloth's supports:
-    /// at the start of every frame the vertices then touching the collider and the pinned ones
+    /// at the start of every frame the vertices then touching the collider (within 1.5 times the
+    /// clearance of it) and the pinned ones
     /// become anchors, and every other vertex is kept within `tether_stretch` times its rest
     /// distance (shortest path over the rest edges and stitches) of its nearest anchor. Bounds
     /// the stretch of cloth hanging from its supports that XPBD's few passes leave (see the
