@@ -53,7 +53,6 @@ struct DressArgs {
     double gap = tg::PlacementOptions{}.gap_mm;
     int substeps = tg::DrapeOptions{}.substeps;
     bool no_self_collision = false;
-    double tether_stretch = tg::SewingOptions{}.tether_stretch;
     bool strict = false;
     bool to_body = false;
     std::string from, from_set;
@@ -98,11 +97,6 @@ void run_dress(const DressArgs& a) {
             "--sew-seconds and --settle-seconds must be >= 0, --gap > 0 and "
             "--substeps >= 1");
     }
-    if (!(a.tether_stretch == 0 || a.tether_stretch >= 1)) {
-        throw InvalidInput("--tether-stretch must be 0 (no tethers) or >= 1, got " +
-                           std::to_string(a.tether_stretch));
-    }
-    o.sewing.tether_stretch = a.tether_stretch;
     o.sewing.sew_seconds = a.sew_seconds;
     o.sewing.settle_seconds = a.settle_seconds;
     if (a.settle_seconds == 0) {
@@ -271,10 +265,6 @@ void register_dress_commands(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--substeps", a->substeps, "Solver sub-steps per frame")->capture_default_str();
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
-    cmd->add_option("--tether-stretch", a->tether_stretch,
-                    "Cloth hanging from where it touches the body stays within this stretch of "
-                    "its rest distance to the contact (0: no tethers; try 1.02)")
-        ->capture_default_str();
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "
                   "one command; needs --from)");

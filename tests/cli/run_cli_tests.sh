@@ -929,8 +929,6 @@ if [ -f "$hoody" ]; then
   expect_fail "dress: a hood has no region" "piece 'left_hood' has no body region" \
     "$bin" dress "$body" --units dm "$hoody" --out x.obj
 fi
-expect_fail "dress: tether stretch below 1" "--tether-stretch must be 0 \(no tethers\) or >= 1" \
-  "$bin" dress "$body" --units dm "$gc" --tether-stretch 0.9 --out x.obj
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
 expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \

@@ -216,23 +216,18 @@ TEST(GarmentDrapeSolver, BitIdenticalForAnyThreadCount) {
     const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{5});
     std::vector<std::vector<Vec3>> results;
     std::vector<std::size_t> self_contacts;
-    std::size_t anchors = 0;
     for (int threads : {1, 2}) {
         DrapeOptions options;
         options.threads = threads;
-        options.tether_stretch = 1.02;
         // 3721 vertices, 7200 triangles: every parallel path runs in several blocks.
         DrapeSolver solver(horizontal_square(60, 4, 0, 90, 0), FabricParams{}, options, &body);
         std::size_t most_self = 0;
         for (int f = 0; f < 12; ++f) {
-            const StepReport r = solver.step();
-            most_self = std::max(most_self, r.self_contacts);
-            anchors = std::max(anchors, r.tether_anchors);
+            most_self = std::max(most_self, solver.step().self_contacts);
         }
         results.push_back(solver.positions());
         self_contacts.push_back(most_self);
     }
-    EXPECT_GT(anchors, 0u);  // the tethers ran too (anchored where the cloth touches the sphere)
     ASSERT_EQ(results[0].size(), results[1].size());
     for (std::size_t i = 0; i < results[0].size(); ++i) {
         ASSERT_EQ(results[0][i], results[1][i]) << "vertex " << i;

@@ -54,13 +54,11 @@ struct DrapeOptions {
     /// contacts keep the fabric's thickness.
     double body_clearance_mm = 0;
     bool self_collision = true;  ///< cloth–cloth proximity constraints
-    /// Long-range attachments (tethers, Kim, Chentanez, Müller 2012) from the cloth's supports:
-    /// at the start of every frame the vertices then touching the collider (within 1.5 times the
-    /// clearance of it) and the pinned ones
-    /// become anchors, and every other vertex is kept within `tether_stretch` times its rest
-    /// distance (shortest path over the rest edges and stitches) of its nearest anchor. Bounds
-    /// the stretch of cloth hanging from its supports that XPBD's few passes leave (see the
-    /// solver's header); 0 (default): no tethers; otherwise >= 1.
+    /// Long-range attachments (tethers, Kim, Chentanez, Müller 2012) from the pinned vertices:
+    /// every other vertex is kept within `tether_stretch` times its rest distance (shortest path
+    /// over the rest edges and stitches) of its nearest pinned vertex. Bounds the stretch that
+    /// XPBD's few passes leave in cloth hanging from pins (see the solver's header); 0 (default):
+    /// no tethers; otherwise >= 1.
     double tether_stretch = 0;
     int threads = 0;  ///< 0: all cores (TBB default)
     /// A step fails (SolverFailure naming the frame) when a position is not finite, a speed
@@ -123,7 +121,7 @@ struct StepReport {
     double kinetic_energy_j = 0;     ///< at the end of the frame
     std::size_t contacts = 0;        ///< cloth vertices in contact with the collider
     std::size_t self_contacts = 0;   ///< cloth–cloth proximity pairs handled
-    std::size_t tether_anchors = 0;  ///< anchors of the tethers over this frame (0: none)
+    std::size_t tether_anchors = 0;  ///< pinned vertices the tethers hang from (0: none)
     double seconds = 0;              ///< wall time of the step
 };
 

@@ -360,9 +360,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         rep.pairs_welded_before_drape = closed.size();
         const Welding pre = weld_pairs(cloth.positions.size(), closed);
         const ClothModel welded = internal::welded_cloth(cloth, pre);
-        DrapeOptions settle_options = drape_options;
-        settle_options.tether_stretch = o.sewing.tether_stretch;
-        DrapeSolver drape(welded, o.fabric, settle_options, &sdf);
+        DrapeSolver drape(welded, o.fabric, drape_options, &sdf);
         std::vector<Stitch> stitches;
         for (const Stitch& s : open) {
             const std::uint32_t a = pre.weld_map[s.a], b = pre.weld_map[s.b];

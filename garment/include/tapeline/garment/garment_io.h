@@ -172,8 +172,7 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"damping_per_second", o.drape.damping_per_second},
                     {"max_extra_seconds", o.sewing.max_extra_seconds},
                     {"settle_damping_per_second", o.sewing.settle_damping_per_second},
-                    {"weld_within_mm", o.sewing.weld_within_mm},
-                    {"tether_stretch", o.sewing.tether_stretch}};
+                    {"weld_within_mm", o.sewing.weld_within_mm}};
     j["fabric"] = {{"name", fabric.name},
                    {"density_g_m2", fabric.density_g_m2},
                    {"stretch_warp_n_m", fabric.stretch_warp_n_m},

@@ -58,11 +58,6 @@ struct SewingOptions {
     /// After sewing, pairs closer than this are welded into one vertex for the drape (0: half
     /// the resolution); pairs further apart stay zero-length stitches.
     double weld_within_mm = 0;
-    /// Tethers of the drape after sewing (DrapeOptions::tether_stretch; replaces the drape
-    /// options' value in that phase): cloth hanging from where it touches the body stays within
-    /// this stretch of its rest distance to the nearest contact. 0 (default): none — they lower
-    /// the stretch but can keep a loose garment from coming to rest (garment/README.md).
-    double tether_stretch = 0;
 };
 
 /// Everything dress() needs besides the body and the pattern.
