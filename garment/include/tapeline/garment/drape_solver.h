@@ -545,6 +545,9 @@ inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOpti
     arena_ = std::make_unique<tbb::task_arena>(
         options_.threads > 0 ? options_.threads : static_cast<int>(tbb::task_arena::automatic));
     reset();
+    if (options_.tether_stretch > 0) {
+        update_tethers();  // after reset(): it sizes the vertex arrays
+    }
 }
 
 template <typename VertexOf>
@@ -659,6 +662,9 @@ inline void DrapeSolver::set_stitches(std::vector<Stitch> stitches) {
         stitch_pairs_.emplace_back(st.b, st.a);
     }
     std::sort(stitch_pairs_.begin(), stitch_pairs_.end());
+    if (options_.tether_stretch > 0) {
+        update_tethers();  // stitches shorten the rest paths
+    }
 }
 
 inline void DrapeSolver::reset() {
@@ -699,9 +705,6 @@ inline StepReport DrapeSolver::step() {
         }
     }
     const double h = options_.frame_seconds / options_.substeps;
-    if (options_.tether_stretch > 0) {
-        update_tethers();
-    }
     arena_->execute([&] {
         for (int s = 0; s < options_.substeps; ++s) {
             substep(h, frame_number);
@@ -1115,7 +1118,7 @@ inline void DrapeSolver::project_attachment(std::size_t a, double h) {
 }
 
 // Multi-source Dijkstra over the rest edges and the stitches from the anchors, the pinned
-// vertices (again every frame: stitches may have changed). Serial and ordered by
+// vertices: once at construction and again whenever the stitches change. Serial and ordered by
 // (distance, vertex), so the anchors do not depend on the thread count.
 inline void DrapeSolver::update_tethers() {
     const std::size_t n = x_.size();
