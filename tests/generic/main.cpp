@@ -1,5 +1,6 @@
-// Genericity, proven: the main algorithms compile on CGAL::Polyhedron_3 and on a small sphere
-// give what they give on Surface_mesh.
+// Genericity, proven: the main algorithms compile on CGAL::Polyhedron_3 and on a minimal
+// hand-written mesh type (minimal_mesh.h), and on a small sphere give what they give on
+// Surface_mesh.
 // Same vertex and face order everywhere, so the same arithmetic: the fields must agree to
 // rounding (1e-12 relative), and differ only where a mesh type's traversal order feeds a
 // floating-point sum.
@@ -81,6 +82,7 @@ int main() {
         }
     }
     compare("Polyhedron_3", tg::on_polyhedron(spec, source, target), ref);
+    compare("minimal mesh", tg::on_minimal_mesh(spec, source, target), ref);
     std::printf(failures ? "%d differences\n" : "every field equals Surface_mesh's\n", failures);
     return failures ? 1 : 0;
 }

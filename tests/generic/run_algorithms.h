@@ -1,6 +1,8 @@
 // The main public algorithms run on one mesh type: exact MMP distances and path, heat, Dijkstra,
-// curvature-flow distances (gcf-window) and the two-point flow, unfolding. One translation unit
-// per mesh type (generic_<type>.cpp) instantiates run_algorithms; main.cpp compares the results.
+// curvature-flow distances (gcf-window) and the two-point flow, unfolding. One source file per
+// mesh type instantiates run_algorithms: CGAL::Surface_mesh (generic_surface_mesh.cpp, the
+// reference), CGAL::Polyhedron_3 (generic_polyhedron.cpp) and the minimal mesh of minimal_mesh.h
+// (generic_minimal.cpp); main.cpp compares the results.
 #pragma once
 
 #include <tapeline/surfaces/analytic_surface_types.h>
@@ -18,6 +20,7 @@ struct Results {
 /// Everything from vertex `source` (and paths to vertex `target`) on the mesh of `spec`.
 Results on_surface_mesh(const tapeline::SurfaceSpec& spec, std::size_t source, std::size_t target);
 Results on_polyhedron(const tapeline::SurfaceSpec& spec, std::size_t source, std::size_t target);
+Results on_minimal_mesh(const tapeline::SurfaceSpec& spec, std::size_t source, std::size_t target);
 
 }  // namespace tapeline_test::generic
 
