@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
 
+#include <atomic>
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -133,3 +134,38 @@ TEST_F(ProgressTest, CountsAddUpFromTbbWorkers) {
 }
 
 }  // namespace
+
+// A cancel request stops work at its next progress point, also inside a TBB loop (the exception
+// reaches the caller), and is withdrawn by clear_cancel().
+TEST_F(ProgressTest, CancelStopsWorkAtTheNextProgressPoint) {
+    tapeline::clear_cancel();
+    {
+        Progress p("before", 10);
+        EXPECT_NO_THROW(p.advance());
+        tapeline::request_cancel();
+        EXPECT_THROW(p.advance(), tapeline::Cancelled);
+        EXPECT_THROW(p.set(5), tapeline::Cancelled);
+    }
+    std::atomic<std::size_t> done{0};
+    {
+        Progress p("tbb", 100000);
+        EXPECT_THROW(tbb::parallel_for(std::size_t{0}, std::size_t{100000},
+                                       [&](std::size_t) {
+                                           p.advance();
+                                           done.fetch_add(1);
+                                       }),
+                     tapeline::Cancelled);
+    }
+    EXPECT_EQ(done.load(), 0u);
+    tapeline::clear_cancel();
+    Progress p("after", 10);
+    EXPECT_NO_THROW(p.advance());
+    try {
+        tapeline::request_cancel();
+        p.advance();
+        FAIL() << "no Cancelled";
+    } catch (const tapeline::Cancelled& e) {
+        EXPECT_STREQ(e.what(), "after: cancelled");
+    }
+    tapeline::clear_cancel();
+}

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <functional>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -39,6 +40,13 @@ struct ProgressEvent {
 /// Receiver of progress events (tests, a GUI, a log).
 using ProgressSink = std::function<void(const ProgressEvent&)>;
 
+/// Thrown by Progress::advance() and Progress::set() after request_cancel(): long work stops at
+/// its next progress point (a GUI's cancel button, Ctrl-C in the Python module).
+class Cancelled : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
 namespace internal {
 struct ProgressSettings {
     std::mutex mutex;
@@ -49,7 +57,23 @@ inline ProgressSettings& progress_settings() {
     static ProgressSettings s;
     return s;
 }
+
+/// The process-wide cancel request (a lock-free flag: safe to set from a signal handler).
+inline std::atomic<bool>& cancel_flag() noexcept {
+    static std::atomic<bool> requested{false};
+    return requested;
+}
 }  // namespace internal
+
+/// Asks every running phase to stop: its next advance() or set() throws Cancelled. Safe to call
+/// from a signal handler or another thread.
+inline void request_cancel() noexcept {
+    internal::cancel_flag().store(true, std::memory_order_relaxed);
+}
+/// Withdraws a cancel request (before starting new work).
+inline void clear_cancel() noexcept {
+    internal::cancel_flag().store(false, std::memory_order_relaxed);
+}
 
 /// Sets when progress is drawn on stderr (the command-line tool: `--quiet` → never,
 /// `--progress` → always).
@@ -108,13 +132,17 @@ public:
     bool enabled() const { return enabled_; }
 
     /// Counts `n` more items done; thread-safe.
+    /// \throws Cancelled after request_cancel().
     void advance(std::size_t n = 1) {
+        check_cancel();
         const std::size_t done = done_.fetch_add(n, std::memory_order_relaxed) + n;
         if (enabled_)
             maybe_report(done, false);
     }
     /// Sets the number of items done.
+    /// \throws Cancelled after request_cancel().
     void set(std::size_t done) {
+        check_cancel();
         done_.store(done, std::memory_order_relaxed);
         if (enabled_)
             maybe_report(done, false);
@@ -137,6 +165,10 @@ public:
     }
 
 private:
+    void check_cancel() const {
+        if (internal::cancel_flag().load(std::memory_order_relaxed))
+            throw Cancelled(phase_ + ": cancelled");
+    }
     double elapsed() const {
         return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     }
