@@ -78,6 +78,34 @@ inline void check_measurement_set(const MeasurementSet& m) {
     }
 }
 
+/// A measurement set from a parsed JSON document: a measurement JSON or a flat object of
+/// millimetres (or of the unit of its "units" member); `where` names it in messages and is its
+/// name. Not a FreeSewing sets file (read_measurement_input picks a set of those).
+///
+/// \throws InvalidInput naming `where` when the document is in neither form, a unit is unknown,
+///         or check_measurement_set refuses the set.
+inline MeasurementSet measurement_set_from_json(const json::Json& doc, const std::string& where) {
+    using json::Json;
+    const json::Where top{where, ""};
+    json::require_object(doc, top);
+    MeasurementSet m;
+    if (is_measurement_json(doc)) {
+        m = parse_measurement_json(doc, where);
+    } else {
+        std::string unit = "mm";
+        Json values = doc;
+        if (const Json* u = json::optional_field(doc, "units")) {
+            unit = json::string(*u, top.key("units"));
+            values.erase("units");
+        }
+        m = internal::measurement_object(values, top, millimetres_per_unit(unit, where + ": units"));
+        m.name = where;
+    }
+    m.source = where;
+    check_measurement_set(m);
+    return m;
+}
+
 /// Reads `path` (see the file comment); `set_name` picks a set of a FreeSewing sets file.
 ///
 /// \throws InvalidInput naming the file (and element) when it cannot be read or parsed, is in
@@ -118,14 +146,7 @@ inline MeasurementSet read_measurement_input(const std::string& path,
                                        " (" + names + "); pick one with --from-set/--to-set");
                 }
             } else {
-                std::string unit = "mm";
-                Json values = doc;
-                if (const Json* u = json::optional_field(doc, "units")) {
-                    unit = json::string(*u, top.key("units"));
-                    values.erase("units");
-                }
-                m = internal::measurement_object(values, top,
-                                                 millimetres_per_unit(unit, path + ": units"));
+                m = measurement_set_from_json(doc, path);
                 m.name = internal::file_stem(path);
             }
         }
