@@ -10,9 +10,9 @@
 #include <CLI/CLI.hpp>
 
 #ifdef TAPELINE_HAVE_GRADING
+#include <tapeline/bench/grade_run.h>
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/grading/compare.h>
-#include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
 #include <tapeline/grading/output.h>
 #include <tapeline/pattern/database.h>
@@ -86,37 +86,6 @@ tp::Pattern load(const GradeArgs& a) {
     return tp::PatternDatabase(path, o).load(a.pattern);
 }
 
-/// grade_pattern with the FreeSewing bindings and seam table when the pattern is a FreeSewing
-/// draft (unless `freesewing_bindings` is false); the graded pattern keeps the seams it was graded
-/// with. `skipped_seams` receives the seam rules that could not be applied.
-tg::GradeResult grade_with_seams(tp::Pattern base, const sizes::MeasurementSet& from,
-                                 const sizes::MeasurementSet& to, const tg::GradingOptions& o,
-                                 bool freesewing_bindings,
-                                 std::vector<std::string>& skipped_seams) {
-    std::vector<tp::SeamSpec> seams;
-    if (freesewing_bindings && base.designer == "FreeSewing") {
-        tg::add_freesewing_bindings(base);
-        // The importer stored the derived seams a pattern can hold; the rest join here.
-        for (tp::SeamSpec& s : tp::freesewing_seams(base, &skipped_seams)) {
-            const bool held = std::any_of(base.seams.begin(), base.seams.end(),
-                                          [&](const tp::Seam& q) { return q.name == s.name; });
-            if (!held) {
-                seams.push_back(std::move(s));
-            }
-        }
-    }
-    tg::GradeResult g = tg::grade_pattern(base, from, to, o, seams);
-    if (freesewing_bindings && base.designer == "FreeSewing" && seams.empty() &&
-        base.seams.empty() && skipped_seams.empty()) {
-        g.report.notes.push_back("no seam table for FreeSewing design '" + base.name +
-                                 "': graded without seams");
-    }
-    for (const tp::Seam& s : tp::pattern_seams(seams)) {
-        g.pattern.seams.push_back(s);  // the graded pattern keeps the seams it was graded with
-    }
-    return g;
-}
-
 void run_grade(const GradeArgs& a) {
     // Everything is read and checked before anything is computed or written.
     const std::string out_ext = extension(a.out);
@@ -144,12 +113,7 @@ void run_grade(const GradeArgs& a) {
     o.threads = a.threads;
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
-    std::vector<std::string> skipped_seams;
-    tg::GradeResult g = grade_with_seams(base, from, to, o, !a.no_fs_bindings, skipped_seams);
-    for (const std::string& s : skipped_seams) {
-        g.report.notes.push_back("seam rule '" + s + "' not applied: a chain end is not an " +
-                                 "outline vertex of this draft");
-    }
+    tg::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
 
     // Render every output in memory, then write each atomically.
     std::vector<std::pair<std::string, std::string>> files;
@@ -260,8 +224,7 @@ pattern::Pattern grade_for_body(const pattern::Pattern& base, const sizes::Measu
     tg::GradingOptions o;
     o.seed = seed;
     o.threads = threads;
-    std::vector<std::string> skipped_seams;
-    tg::GradeResult g = grade_with_seams(base, from, to, o, true, skipped_seams);
+    tg::GradeResult g = bench::grade_as_tool(base, from, to, o, true);
     for (const std::string& note : g.report.notes) {
         std::cerr << "tapeline: grading: " << note << '\n';
     }

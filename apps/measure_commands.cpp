@@ -5,11 +5,10 @@
 #include "commands.h"
 #include "measured_body.h"
 
+#include <tapeline/bench/measure_run.h>
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
 #include <tapeline/core/mesh_io.h>
-#include <tapeline/measurement/lengths.h>
-#include <tapeline/measurement/measure.h>
 #include <tapeline/measurement/measurement_json.h>
 #include <tapeline/measurement/picture.h>
 #include <tapeline/sizes/json_formats.h>
@@ -104,12 +103,9 @@ void run_measure(const MeasureArgs& a) {
 
     const auto loaded = read_triangle_mesh<MeasureMesh>(a.body);
     const auto t1 = Clock::now();
-    const tm::Body prepared = tm::make_body(loaded.mesh, body);
-    const double frame_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
-    tm::BodyMeasurements r = tm::measure_body(prepared, {}, overrides);
-    r.report.frame_seconds = frame_seconds;
-    const double length_seconds =
-        tm::measure_skin_lengths(prepared, loaded.mesh, r.landmarks, r.measurements);
+    bench::MeasureRun run = bench::measure_mesh(loaded.mesh, body, overrides);
+    tm::BodyMeasurements& r = run.result;
+    const double length_seconds = run.length_seconds;
     const auto t2 = Clock::now();
 
     Json j = tm::body_measurements_json(a.body, r.frame, r.measurements, r.landmarks, r.report,
@@ -197,10 +193,10 @@ MeasuredBody measured_body(const std::string& path, const measurement::BodyOptio
                            bool with_measurements) {
     const auto loaded = read_triangle_mesh<MeasureMesh>(path);
     const auto t0 = std::chrono::steady_clock::now();
-    MeasuredBody b{tm::make_body(loaded.mesh, options), {}, 0, std::nullopt};
-    tm::BodyMeasurements m = tm::measure_body(b.body);
+    bench::MeasureRun run = bench::measure_mesh(loaded.mesh, options, {}, with_measurements);
+    MeasuredBody b{std::move(run.body), {}, 0, std::nullopt};
+    tm::BodyMeasurements& m = run.result;
     if (with_measurements) {
-        tm::measure_skin_lengths(b.body, loaded.mesh, m.landmarks, m.measurements);
         const Json j = tm::body_measurements_json(path, m.frame, m.measurements, m.landmarks,
                                                   m.report, m.warnings);
         b.measurements = sizes::parse_measurement_json(nlohmann::json::parse(j.dump()), path);
