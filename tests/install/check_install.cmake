@@ -1,5 +1,6 @@
 # Installs the build tree into a scratch prefix, then configures, builds and runs a tiny consumer
-# project that only knows `find_package(tapeline)`.
+# project that only knows `find_package(tapeline)`; with PYTHON, imports the installed Python
+# package from PREFIX/PYTHON_DIR and computes a distance field with it.
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 function(run)
@@ -26,3 +27,17 @@ if(NOT last_output MATCHES "consumer ok")
   message(FATAL_ERROR "consumer printed: ${last_output}")
 endif()
 message(STATUS "${last_output}")
+
+if(PYTHON)
+  set(package ${prefix}/${PYTHON_DIR}/tapeline)
+  if(NOT EXISTS ${package}/__init__.py OR NOT EXISTS ${package}/geodesic.pyi)
+    message(FATAL_ERROR "no Python package under ${package}")
+  endif()
+  run(${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/${PYTHON_DIR} ${PYTHON} -c
+      "import sys, tapeline\nfrom tapeline import geodesic as g\nV, F, _ = tapeline.read_mesh(sys.argv[1])\nd = g.distances(V, F, 0, method='heat')\nassert tapeline.__file__.startswith(sys.argv[2]), tapeline.__file__\nassert d[0] == 0 and d.max() > 0\nprint('python ok', len(d))"
+      ${MESH} ${prefix})
+  if(NOT last_output MATCHES "python ok")
+    message(FATAL_ERROR "the installed Python package printed: ${last_output}")
+  endif()
+  message(STATUS "${last_output}")
+endif()

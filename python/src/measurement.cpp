@@ -1,0 +1,68 @@
+// tapeline.measure: landmarks, tape girths and skin lengths of a body mesh, as the measurement
+// JSON `tapeline measure --out` writes (a dict here).
+#include "common.h"
+
+#include <tapeline/bench/measure_run.h>
+#include <tapeline/measurement/measurement_json.h>
+
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+
+namespace tapeline::python {
+
+namespace {
+
+namespace tm = tapeline::measurement;
+
+py::dict measure_arrays(const py::object& V, const py::object& F,
+                        const std::optional<std::string>& units, const std::string& up,
+                        const std::string& front, const std::string& pose,
+                        const py::object& landmarks, const std::string& name) {
+    tm::BodyOptions options;
+    options.name = name;
+    if (units) {
+        options.unit = tm::parse_length_unit(*units, "units");
+    }
+    options.up = tm::Axis::parse(up, "up");
+    options.front = tm::Axis::parse(front, "front");
+    options.pose = tm::parse_pose(pose, "pose");
+    tm::LandmarkOverrides overrides;
+    if (!landmarks.is_none()) {
+        // A dict in the landmark-override format ({"frame": ..., "landmarks": {...}}).
+        const std::string text =
+            py::module_::import("json").attr("dumps")(landmarks).cast<std::string>();
+        overrides = tm::parse_landmark_overrides(text, "landmarks");
+    }
+    const auto mesh = mesh_from_arrays(V, F, name);
+    bench::MeasureRun run;
+    {
+        InterruptGuard interrupt_guard;
+        py::gil_scoped_release release;
+        run = bench::measure_mesh(mesh->loaded.mesh, options, overrides);
+    }
+    const auto& r = run.result;
+    nlohmann::ordered_json j = tm::body_measurements_json(name, r.frame, r.measurements,
+                                                          r.landmarks, r.report, r.warnings);
+    return to_python(j).cast<py::dict>();
+}
+
+}  // namespace
+
+void bind_measurement(py::module_& m) {
+    const tm::BodyOptions defaults;
+    m.def("measure", &measure_arrays, py::arg("V"), py::arg("F"), py::arg("units") = py::none(),
+          py::arg("up") = defaults.up.to_string(), py::arg("front") = defaults.front.to_string(),
+          py::arg("pose") = std::string(tm::to_string(defaults.pose)),
+          py::arg("landmarks") = py::none(), py::arg("name") = defaults.name,
+          "Measures the body mesh (V, F) as `tapeline measure` does: landmarks, tape girths and "
+          "lengths along the skin. units: 'm', 'dm', 'cm' or 'mm' (None: inferred from the "
+          "height); up, front: '+X' .. '-Z'; pose: 'A' or 'T'; landmarks: an override dict in "
+          "the format of `tapeline measure --landmarks`. Returns the measurement JSON as a dict: "
+          "'measurements' (each with its ISO 8559-1 number, FreeSewing and Seamly2D names, value "
+          "in mm and the tape loop or path), 'missing', 'landmarks', 'frame', 'report', "
+          "'warnings'.");
+}
+
+}  // namespace tapeline::python

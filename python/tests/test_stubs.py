@@ -1,0 +1,61 @@
+"""The type stubs (.pyi) name what the module has, with the module's own defaults."""
+import ast
+import os
+import re
+
+import pytest
+
+import tapeline
+from tapeline import geodesic, pattern
+
+STUBS = os.path.join(os.path.dirname(tapeline.__file__))
+
+
+def stub_functions(name):
+    tree = ast.parse(open(os.path.join(STUBS, name)).read())
+    out = {}
+    for node in tree.body:
+        if isinstance(node, ast.FunctionDef):
+            out[node.name] = node
+        elif isinstance(node, ast.ClassDef):
+            out[node.name] = node
+    return out
+
+
+def runtime_defaults(function):
+    """name -> default text from pybind11's signature line of `function`."""
+    line = function.__doc__.splitlines()[0]
+    args = line[line.index("(") + 1: line.rindex(")")]
+    return dict(re.findall(r"(\w+): [\w\[\], .]+ = ('[^']*'|[^,]+)", args))
+
+
+@pytest.mark.parametrize("module, stub", [(tapeline, "__init__.pyi"), (geodesic, "geodesic.pyi"),
+                                          (pattern, "pattern.pyi")])
+def test_stub_names_exist_and_defaults_agree(module, stub):
+    for name, node in stub_functions(stub).items():
+        assert hasattr(module, name), f"{stub} names {name}, which the module lacks"
+        if isinstance(node, ast.FunctionDef):
+            given = runtime_defaults(getattr(module, name))
+            args = node.args.args
+            for arg, default in zip(args[len(args) - len(node.args.defaults):], node.args.defaults):
+                value = ast.literal_eval(default)
+                text = given.get(arg.arg)
+                assert text is not None, f"{name}({arg.arg}) has no default at run time"
+                assert ast.literal_eval(text if text not in ("None",) else "None") == value, (
+                    f"{name}({arg.arg}): stub default {value!r}, module {text}")
+
+
+def test_every_public_name_has_a_stub():
+    for module, stub in [(tapeline, "__init__.pyi"), (geodesic, "geodesic.pyi"),
+                         (pattern, "pattern.pyi")]:
+        names = stub_functions(stub)
+        for name in module.__all__:
+            assert name in names or name in ("geodesic", "pattern"), f"{name} missing from {stub}"
+
+
+def test_option_classes_in_the_stubs_have_the_runtime_fields():
+    for cls in ["ExactMmpOptions", "HeatOptions", "CurvatureFlowOptions", "PointCloudOptions"]:
+        node = stub_functions("geodesic.pyi")[cls]
+        fields = {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
+        runtime = set(getattr(geodesic, cls)().to_dict().keys())
+        assert fields <= runtime | {"target_vertices"}, (cls, fields - runtime)
