@@ -54,6 +54,7 @@ std::vector<double> float_rows(const py::handle& array, const char* what, std::s
 struct ArrayMesh {
     Loaded loaded;
     std::vector<std::array<std::size_t, 3>> faces;
+    double build_seconds = 0;  ///< triangle_mesh_from_soup (the C++ loader's own work)
 };
 
 /// The triangle mesh of V (float, (n, 3)) and F (integer, (m, 3)), validated and repaired as

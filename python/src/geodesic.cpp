@@ -60,17 +60,8 @@ py::array_t<double> field_of(const ArrayMesh& mesh, const std::vector<double>& d
     return input_order(mesh.loaded, d);
 }
 
-/// Distances per mesh vertex into a vector through a property map indexed by Surface_mesh index.
-struct Field {
-    std::vector<double> values;
-    explicit Field(std::size_t n) : values(n, std::numeric_limits<double>::infinity()) {}
-    auto map() {
-        return boost::make_function_property_map<Vertex, double&>(
-            [this](Vertex v) -> double& { return values[static_cast<std::size_t>(v.idx())]; });
-    }
-};
-
-/// Writes into a Field (WritablePropertyMap with key Vertex).
+/// Distances per mesh vertex into a vector indexed by Surface_mesh index (a WritablePropertyMap
+/// with key Vertex).
 struct FieldMap {
     std::vector<double>* values;
     friend void put(const FieldMap& m, Vertex v, double d) {
@@ -381,6 +372,7 @@ void bind_geodesic(py::module_& parent) {
             }
             py::dict report = to_python(nlohmann::json(r.report)).cast<py::dict>();
             report["options"] = to_python(bench::method_options_json(method, settings));
+            report["mesh_seconds"] = mesh->build_seconds;  // the loader's checks and repairs
             return py::object(py::make_tuple(d, report));
         },
         py::arg("V"), py::arg("F"), py::arg("sources"), py::arg("method") = "exact-mmp",
@@ -390,7 +382,8 @@ void bind_geodesic(py::module_& parent) {
         "gcf-window-thesis, gcf-points; gcf methods take ':W' and '/faces'). sources: a vertex "
         "index, a sequence of them, or (face, (b0, b1, b2)) points of F's faces. Returns a "
         "float64 array with one distance per row of V (inf where unreachable or unused); with "
-        "with_report, (distances, report dict with the options used).");
+        "with_report, (distances, report dict with the options used and mesh_seconds, the time "
+        "the C++ loader took to check and build the mesh).");
 
     py::class_<ExactMmp>(m, "ExactMmpSolver",
                          "Exact polyhedral geodesics (Mitchell-Mount-Papadimitriou). The mesh is "

@@ -8,6 +8,7 @@
 
 #include <pybind11/stl.h>
 
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -268,7 +269,10 @@ std::shared_ptr<const ArrayMesh> mesh_from_arrays(const py::handle& V, const py:
     options.strict = strict;
     InterruptGuard interrupt_guard;
     py::gil_scoped_release release;
+    const auto t0 = std::chrono::steady_clock::now();
     out->loaded = triangle_mesh_from_soup<Mesh>(points, rows, name, options);
+    out->build_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return out;
 }
 
