@@ -15,9 +15,13 @@ for method in exact-mmp exact-cgal heat heat-idt dijkstra gcf-window; do
 done
 "$bin" geodesic distances "$root/data/spot.obj" --source 0 --method exact-mmp --out "$out/spot_exact-mmp.txt"
 
-echo "== the same from Python (the module tapeline, built beside the tool)"
-PYTHONPATH="$(dirname "$(dirname "$bin")")/python" /usr/bin/python3 "$root/python/examples/quickstart.py" \
-    "$root/data"
+python_dir="$(dirname "$(dirname "$bin")")/python"
+if [ -d "$python_dir/tapeline" ]; then
+  echo "== the same from Python (the module tapeline, built beside the tool)"
+  PYTHONPATH="$python_dir" /usr/bin/python3 "$root/python/examples/quickstart.py" "$root/data"
+else
+  echo "== (the Python module is built by 'scripts/tapeline-setup test' or the target tapeline_python)"
+fi
 
 echo "== geodesic paths on data/spot.obj: exact, and by curvature flow with its unfolded strip"
 "$bin" geodesic path "$root/data/spot.obj" --from 0 --to 1500 --method exact-mmp --out "$out/spot_path.json"

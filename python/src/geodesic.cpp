@@ -2,6 +2,8 @@
 // solvers that keep their set-up (exact MMP, heat, curvature-flow paths) and point clouds.
 #include "common.h"
 
+#include <tapeline_python_docs.h>
+
 #include <tapeline/core/errors.h>
 #include <tapeline/geodesic/curvature_flow.h>
 #include <tapeline/geodesic/curvature_flow_json.h>
@@ -302,52 +304,77 @@ void bind_geodesic(py::module_& parent) {
         {tg::CurvatureFlowSolver::eigen_normal_ldlt, tg::CurvatureFlowSolver::eigen_sparse_qr,
          tg::CurvatureFlowSolver::eigen_lscg, tg::CurvatureFlowSolver::ceres});
 
-    py::class_<tg::ExactMmpOptions>(m, "ExactMmpOptions",
-                                    "Options of exact MMP (C++ ExactMmpOptions).")
+    py::class_<tg::ExactMmpOptions>(m, "ExactMmpOptions", cxx_doc("ExactMmpOptions"))
         .def(py::init<>())
-        .def_readwrite("max_distance", &tg::ExactMmpOptions::max_distance)
-        .def_readwrite("target_vertices", &tg::ExactMmpOptions::target_vertices)
+        .def_readwrite("max_distance", &tg::ExactMmpOptions::max_distance,
+                       cxx_doc("ExactMmpOptions.max_distance"))
+        .def_readwrite("target_vertices", &tg::ExactMmpOptions::target_vertices,
+                       cxx_doc("ExactMmpOptions.target_vertices"))
         .def_readwrite("prune_with_vertex_distances",
-                       &tg::ExactMmpOptions::prune_with_vertex_distances)
-        .def_readwrite("keep_windows", &tg::ExactMmpOptions::keep_windows)
-        .def_readwrite("max_propagated_windows", &tg::ExactMmpOptions::max_propagated_windows)
+                       &tg::ExactMmpOptions::prune_with_vertex_distances,
+                       cxx_doc("ExactMmpOptions.prune_with_vertex_distances"))
+        .def_readwrite("keep_windows", &tg::ExactMmpOptions::keep_windows,
+                       cxx_doc("ExactMmpOptions.keep_windows"))
+        .def_readwrite("max_propagated_windows", &tg::ExactMmpOptions::max_propagated_windows,
+                       cxx_doc("ExactMmpOptions.max_propagated_windows"))
         .def("to_dict", &options_dict<tg::ExactMmpOptions>);
-    py::class_<tg::HeatOptions>(m, "HeatOptions", "Options of the heat method (C++ HeatOptions).")
+    py::class_<tg::HeatOptions>(m, "HeatOptions", cxx_doc("HeatOptions"))
         .def(py::init<>())
-        .def_readwrite("intrinsic_delaunay", &tg::HeatOptions::intrinsic_delaunay)
-        .def_readwrite("multi_source", &tg::HeatOptions::multi_source)
-        .def_readwrite("degenerate_face_tolerance", &tg::HeatOptions::degenerate_face_tolerance)
-        .def_readwrite("reject_degenerate_faces", &tg::HeatOptions::reject_degenerate_faces)
+        .def_readwrite("intrinsic_delaunay", &tg::HeatOptions::intrinsic_delaunay,
+                       cxx_doc("HeatOptions.intrinsic_delaunay"))
+        .def_readwrite("multi_source", &tg::HeatOptions::multi_source,
+                       cxx_doc("HeatOptions.multi_source"))
+        .def_readwrite("degenerate_face_tolerance", &tg::HeatOptions::degenerate_face_tolerance,
+                       cxx_doc("HeatOptions.degenerate_face_tolerance"))
+        .def_readwrite("reject_degenerate_faces", &tg::HeatOptions::reject_degenerate_faces,
+                       cxx_doc("HeatOptions.reject_degenerate_faces"))
         .def("to_dict", &options_dict<tg::HeatOptions>);
-    py::class_<tg::CurvatureFlowOptions>(m, "CurvatureFlowOptions",
-                                         "Options of one curvature-flow path (C++ "
-                                         "CurvatureFlowOptions).")
+    py::class_<tg::CurvatureFlowOptions>(m, "CurvatureFlowOptions", cxx_doc("CurvatureFlowOptions"))
         .def(py::init<>())
-        .def_readwrite("sample_spacing", &tg::CurvatureFlowOptions::sample_spacing)
-        .def_readwrite("sample_count", &tg::CurvatureFlowOptions::sample_count)
-        .def_readwrite("step", &tg::CurvatureFlowOptions::step)
-        .def_readwrite("tolerance", &tg::CurvatureFlowOptions::tolerance)
-        .def_readwrite("update_tolerance", &tg::CurvatureFlowOptions::update_tolerance)
-        .def_readwrite("max_iterations", &tg::CurvatureFlowOptions::max_iterations)
-        .def_readwrite("endpoint_weight", &tg::CurvatureFlowOptions::endpoint_weight)
-        .def_readwrite("solver", &tg::CurvatureFlowOptions::solver)
-        .def_readwrite("straighten", &tg::CurvatureFlowOptions::straighten)
-        .def_readwrite("interpolate_normals", &tg::CurvatureFlowOptions::interpolate_normals)
+        .def_readwrite("sample_spacing", &tg::CurvatureFlowOptions::sample_spacing,
+                       cxx_doc("CurvatureFlowOptions.sample_spacing"))
+        .def_readwrite("sample_count", &tg::CurvatureFlowOptions::sample_count,
+                       cxx_doc("CurvatureFlowOptions.sample_count"))
+        .def_readwrite("step", &tg::CurvatureFlowOptions::step,
+                       cxx_doc("CurvatureFlowOptions.step"))
+        .def_readwrite("tolerance", &tg::CurvatureFlowOptions::tolerance,
+                       cxx_doc("CurvatureFlowOptions.tolerance"))
+        .def_readwrite("update_tolerance", &tg::CurvatureFlowOptions::update_tolerance,
+                       cxx_doc("CurvatureFlowOptions.update_tolerance"))
+        .def_readwrite("max_iterations", &tg::CurvatureFlowOptions::max_iterations,
+                       cxx_doc("CurvatureFlowOptions.max_iterations"))
+        .def_readwrite("endpoint_weight", &tg::CurvatureFlowOptions::endpoint_weight,
+                       cxx_doc("CurvatureFlowOptions.endpoint_weight"))
+        .def_readwrite("solver", &tg::CurvatureFlowOptions::solver,
+                       cxx_doc("CurvatureFlowOptions.solver"))
+        .def_readwrite("straighten", &tg::CurvatureFlowOptions::straighten,
+                       cxx_doc("CurvatureFlowOptions.straighten"))
+        .def_readwrite("interpolate_normals", &tg::CurvatureFlowOptions::interpolate_normals,
+                       cxx_doc("CurvatureFlowOptions.interpolate_normals"))
         .def("to_dict", &options_dict<tg::CurvatureFlowOptions>);
     py::class_<tg::PointCloudDistanceOptions>(m, "PointCloudOptions",
-                                              "Options of the point-cloud method (C++ "
-                                              "PointCloudDistanceOptions).")
+                                              cxx_doc("PointCloudDistanceOptions"))
         .def(py::init<>())
-        .def_readwrite("cell_size", &tg::PointCloudDistanceOptions::cell_size)
-        .def_readwrite("neighbours", &tg::PointCloudDistanceOptions::neighbours)
-        .def_readwrite("window", &tg::PointCloudDistanceOptions::window)
-        .def_readwrite("manifold_dimension", &tg::PointCloudDistanceOptions::manifold_dimension)
-        .def_readwrite("projection", &tg::PointCloudDistanceOptions::projection)
-        .def_readwrite("knn", &tg::PointCloudDistanceOptions::knn)
-        .def_readwrite("sample_spacing", &tg::PointCloudDistanceOptions::sample_spacing)
-        .def_readwrite("cut_locus_guard", &tg::PointCloudDistanceOptions::cut_locus_guard)
-        .def_readwrite("near_source_samples", &tg::PointCloudDistanceOptions::near_source_samples)
-        .def_readwrite("anchor_slides", &tg::PointCloudDistanceOptions::anchor_slides)
+        .def_readwrite("cell_size", &tg::PointCloudDistanceOptions::cell_size,
+                       cxx_doc("PointCloudDistanceOptions.cell_size"))
+        .def_readwrite("neighbours", &tg::PointCloudDistanceOptions::neighbours,
+                       cxx_doc("PointCloudDistanceOptions.neighbours"))
+        .def_readwrite("window", &tg::PointCloudDistanceOptions::window,
+                       cxx_doc("PointCloudDistanceOptions.window"))
+        .def_readwrite("manifold_dimension", &tg::PointCloudDistanceOptions::manifold_dimension,
+                       cxx_doc("PointCloudDistanceOptions.manifold_dimension"))
+        .def_readwrite("projection", &tg::PointCloudDistanceOptions::projection,
+                       cxx_doc("PointCloudDistanceOptions.projection"))
+        .def_readwrite("knn", &tg::PointCloudDistanceOptions::knn,
+                       cxx_doc("PointCloudDistanceOptions.knn"))
+        .def_readwrite("sample_spacing", &tg::PointCloudDistanceOptions::sample_spacing,
+                       cxx_doc("PointCloudDistanceOptions.sample_spacing"))
+        .def_readwrite("cut_locus_guard", &tg::PointCloudDistanceOptions::cut_locus_guard,
+                       cxx_doc("PointCloudDistanceOptions.cut_locus_guard"))
+        .def_readwrite("near_source_samples", &tg::PointCloudDistanceOptions::near_source_samples,
+                       cxx_doc("PointCloudDistanceOptions.near_source_samples"))
+        .def_readwrite("anchor_slides", &tg::PointCloudDistanceOptions::anchor_slides,
+                       cxx_doc("PointCloudDistanceOptions.anchor_slides"))
         .def("to_dict", &options_dict<tg::PointCloudDistanceOptions>);
 
     m.def("methods", &bench::distance_methods,

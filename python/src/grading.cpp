@@ -1,6 +1,8 @@
 // tapeline.grade: a pattern resized to a target measurement set, as `tapeline grade` does it.
 #include "common.h"
 
+#include <tapeline_python_docs.h>
+
 #ifdef TAPELINE_HAVE_GRADING
 #include <tapeline/bench/grade_run.h>
 #include <tapeline/grading/grading_json.h>
@@ -92,21 +94,31 @@ void bind_grading(py::module_& m) {
             throw InvalidInput("ease '" + s + "': expected proportional or keep_mm");
         }));
     py::implicitly_convertible<std::string, tg::EaseMode>();
-    py::class_<tg::GradingOptions>(m, "GradingOptions", "Options of grading (C++ GradingOptions).")
+    py::class_<tg::GradingOptions>(m, "GradingOptions", cxx_doc("GradingOptions"))
         .def(py::init<>())
-        .def_readwrite("seed", &tg::GradingOptions::seed)
-        .def_readwrite("population", &tg::GradingOptions::population)
-        .def_readwrite("generations", &tg::GradingOptions::generations)
-        .def_readwrite("ease", &tg::GradingOptions::ease)
-        .def_readwrite("threads", &tg::GradingOptions::threads)
-        .def_readwrite("ceres_polish", &tg::GradingOptions::ceres_polish)
-        .def_readwrite("ceres_iterations", &tg::GradingOptions::ceres_iterations)
-        .def_readwrite("reference_length_mm", &tg::GradingOptions::reference_length_mm)
-        .def_readwrite("neighbours", &tg::GradingOptions::neighbours)
-        .def_readwrite("min_fit_factor", &tg::GradingOptions::min_fit_factor)
-        .def_readwrite("max_fit_factor", &tg::GradingOptions::max_fit_factor)
-        .def_readwrite("split_girths", &tg::GradingOptions::split_girths)
-        .def_readwrite("trim_aspect", &tg::GradingOptions::trim_aspect)
+        .def_readwrite("seed", &tg::GradingOptions::seed, cxx_doc("GradingOptions.seed"))
+        .def_readwrite("population", &tg::GradingOptions::population,
+                       cxx_doc("GradingOptions.population"))
+        .def_readwrite("generations", &tg::GradingOptions::generations,
+                       cxx_doc("GradingOptions.generations"))
+        .def_readwrite("ease", &tg::GradingOptions::ease, cxx_doc("GradingOptions.ease"))
+        .def_readwrite("threads", &tg::GradingOptions::threads, cxx_doc("GradingOptions.threads"))
+        .def_readwrite("ceres_polish", &tg::GradingOptions::ceres_polish,
+                       cxx_doc("GradingOptions.ceres_polish"))
+        .def_readwrite("ceres_iterations", &tg::GradingOptions::ceres_iterations,
+                       cxx_doc("GradingOptions.ceres_iterations"))
+        .def_readwrite("reference_length_mm", &tg::GradingOptions::reference_length_mm,
+                       cxx_doc("GradingOptions.reference_length_mm"))
+        .def_readwrite("neighbours", &tg::GradingOptions::neighbours,
+                       cxx_doc("GradingOptions.neighbours"))
+        .def_readwrite("min_fit_factor", &tg::GradingOptions::min_fit_factor,
+                       cxx_doc("GradingOptions.min_fit_factor"))
+        .def_readwrite("max_fit_factor", &tg::GradingOptions::max_fit_factor,
+                       cxx_doc("GradingOptions.max_fit_factor"))
+        .def_readwrite("split_girths", &tg::GradingOptions::split_girths,
+                       cxx_doc("GradingOptions.split_girths"))
+        .def_readwrite("trim_aspect", &tg::GradingOptions::trim_aspect,
+                       cxx_doc("GradingOptions.trim_aspect"))
         .def("to_dict", [](const tg::GradingOptions& o) { return to_python(nlohmann::json(o)); });
     m.def(
         "grade",

@@ -59,3 +59,23 @@ def test_option_classes_in_the_stubs_have_the_runtime_fields():
         fields = {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
         runtime = set(getattr(geodesic, cls)().to_dict().keys())
         assert fields <= runtime | {"target_vertices"}, (cls, fields - runtime)
+
+
+def test_option_docstrings_are_the_cxx_comments():
+    # The comment above ExactMmpOptions::max_distance in the C++ header, read here independently.
+    header = os.path.join(os.path.dirname(__file__), "..", "..", "geodesic", "include", "tapeline",
+                          "geodesic", "exact_mmp_types.h")
+    lines = open(header).read().splitlines()
+    k = next(i for i, l in enumerate(lines) if "double max_distance" in l)
+    comment = []
+    while lines[k - 1].strip().startswith("///"):
+        k -= 1
+        comment.insert(0, lines[k].strip()[3:].strip())
+    assert geodesic.ExactMmpOptions.max_distance.__doc__ == " ".join(comment)
+    for cls in ["ExactMmpOptions", "HeatOptions", "CurvatureFlowOptions", "PointCloudOptions"]:
+        c = getattr(geodesic, cls)
+        assert c.__doc__, cls
+        for field in c().to_dict():
+            prop = getattr(c, field, None)
+            if isinstance(prop, property):
+                assert prop.__doc__, f"{cls}.{field} has no docstring"
