@@ -98,7 +98,8 @@ inline MeasurementSet measurement_set_from_json(const json::Json& doc, const std
             unit = json::string(*u, top.key("units"));
             values.erase("units");
         }
-        m = internal::measurement_object(values, top, millimetres_per_unit(unit, where + ": units"));
+        m = internal::measurement_object(values, top,
+                                         millimetres_per_unit(unit, where + ": units"));
         m.name = where;
     }
     m.source = where;
