@@ -43,6 +43,9 @@ private:
 /// Python dict / list / scalar of a JSON value (objects keep their key order).
 py::object to_python(const nlohmann::json& j);
 py::object to_python(const nlohmann::ordered_json& j);
+/// The JSON of a Python dict / list / scalar (through Python's json module); InvalidInput naming
+/// `where` when it is not JSON.
+nlohmann::json json_of(const py::handle& value, const std::string& where);
 
 /// A float array of shape (n, d) (any floating dtype, any strides) as rows of doubles; ValueError
 /// naming `what` on another dtype, shape or a non-finite value when `finite`.

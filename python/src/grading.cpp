@@ -23,11 +23,6 @@ namespace {
 
 namespace tg = tapeline::grading;
 
-nlohmann::json json_of(const py::handle& d) {
-    const std::string text = py::module_::import("json").attr("dumps")(d).cast<std::string>();
-    return nlohmann::json::parse(text);
-}
-
 /// A measurement set given as a file path (any form `tapeline grade --from` reads), a measurement
 /// JSON dict (what tapeline.measure returns) or a flat dict {name: millimetres}.
 sizes::MeasurementSet set_of(const py::handle& h, const char* what) {
@@ -38,7 +33,7 @@ sizes::MeasurementSet set_of(const py::handle& h, const char* what) {
         throw py::value_error(std::string(what) +
                               ": expected a measurement file path or a dict of measurements");
     }
-    return sizes::measurement_set_from_json(json_of(h), what);
+    return sizes::measurement_set_from_json(json_of(h, what), what);
 }
 
 template <class T>
@@ -52,7 +47,7 @@ py::array_t<T> column(const std::vector<tg::ParetoPoint>& front, T tg::ParetoPoi
 
 py::tuple grade(const py::dict& pattern, const py::object& base, const py::object& target,
                 bool freesewing_bindings, const tg::GradingOptions& options) {
-    pattern::Pattern p = pattern::from_json(json_of(pattern), "pattern");
+    pattern::Pattern p = pattern::from_json(json_of(pattern, "pattern"), "pattern");
     pattern::require_valid(p);
     const sizes::MeasurementSet from = set_of(base, "base");
     const sizes::MeasurementSet to = set_of(target, "target");

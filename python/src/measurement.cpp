@@ -31,9 +31,8 @@ py::dict measure_arrays(const py::object& V, const py::object& F,
     tm::LandmarkOverrides overrides;
     if (!landmarks.is_none()) {
         // A dict in the landmark-override format ({"frame": ..., "landmarks": {...}}).
-        const std::string text =
-            py::module_::import("json").attr("dumps")(landmarks).cast<std::string>();
-        overrides = tm::parse_landmark_overrides(text, "landmarks");
+        overrides =
+            tm::parse_landmark_overrides(json_of(landmarks, "landmarks").dump(), "landmarks");
     }
     const auto mesh = mesh_from_arrays(V, F, name);
     bench::MeasureRun run;

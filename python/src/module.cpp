@@ -226,6 +226,15 @@ py::object to_python(const nlohmann::ordered_json& j) {
     return json_to_python(j);
 }
 
+nlohmann::json json_of(const py::handle& value, const std::string& where) {
+    const std::string text = py::module_::import("json").attr("dumps")(value).cast<std::string>();
+    try {
+        return nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {
+        throw InvalidInput(where + ": not JSON: " + e.what());
+    }
+}
+
 std::vector<double> float_rows(const py::handle& array, const char* what, std::size_t& rows,
                                std::size_t& dim, std::size_t want_dim) {
     const std::string expected =

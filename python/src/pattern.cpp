@@ -27,14 +27,7 @@ py::dict pattern_dict(const tp::Pattern& p) {
 
 /// A pattern dict (as pattern_dict makes) back to the model; InvalidInput as the JSON reader.
 tp::Pattern pattern_of(const py::dict& d, const std::string& where) {
-    const std::string text = py::module_::import("json").attr("dumps")(d).cast<std::string>();
-    nlohmann::json j;
-    try {
-        j = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        throw InvalidInput(where + ": not JSON: " + e.what());
-    }
-    return tp::from_json(j, where);
+    return tp::from_json(json_of(d, where), where);
 }
 
 py::dict summary_dict(const tp::PatternSummary& s) {
