@@ -56,6 +56,7 @@ struct GradeArgs {
     std::size_t population = tg::GradingOptions{}.population;
     std::size_t generations = tg::GradingOptions{}.generations;
     std::size_t threads = tg::GradingOptions{}.threads;
+    double max_target_ratio = tg::GradingOptions{}.max_target_ratio;
 };
 
 std::string extension(const std::string& path) {
@@ -111,6 +112,7 @@ void run_grade(const GradeArgs& a) {
     o.population = a.population;
     o.generations = a.generations;
     o.threads = a.threads;
+    o.max_target_ratio = a.max_target_ratio;
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
     tg::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
@@ -269,6 +271,11 @@ void register_grade_commands(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--threads", a->threads, "Threads (0: all)");
     cmd->add_option("--ease", a->ease, "Ease mode: proportional or keep_mm")->capture_default_str();
+    cmd->add_option("--max-target-ratio", a->max_target_ratio,
+                    "Refuse a target more than this many times its base value, or less than its "
+                    "base value divided by it (0: no limit)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");
     cmd->add_flag("--no-freesewing-bindings", a->no_fs_bindings,
                   "Only the importer's bindings (no FreeSewing point-name bindings or seams)");

@@ -114,6 +114,8 @@ void bind_grading(py::module_& m) {
                        cxx_doc("GradingOptions.split_girths"))
         .def_readwrite("trim_aspect", &tg::GradingOptions::trim_aspect,
                        cxx_doc("GradingOptions.trim_aspect"))
+        .def_readwrite("max_target_ratio", &tg::GradingOptions::max_target_ratio,
+                       cxx_doc("GradingOptions.max_target_ratio"))
         .def("to_dict", [](const tg::GradingOptions& o) { return to_python(nlohmann::json(o)); });
     m.def(
         "grade",

@@ -54,6 +54,7 @@ class GradingOptions:
     max_fit_factor: float
     split_girths: bool
     trim_aspect: float
+    max_target_ratio: float
     def to_dict(self) -> Dict[str, Any]: ...
 
 def grade(

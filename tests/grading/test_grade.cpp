@@ -197,6 +197,44 @@ TEST(Grading, TargetMissingABoundMeasurementIsRefused) {
     }
 }
 
+// A target no grade of this draft can reach (another unit, garbage) is refused before Ceres runs:
+// beyond GradingOptions::max_target_ratio of the base value either way, not finite, not positive.
+TEST(Grading, TargetsBeyondTheRatioLimitAreRefused) {
+    tp::Pattern p;
+    p.name = "rect";
+    p.pieces.push_back(rectangle("body", 250, 600));
+    p.bindings.push_back({"chest", {{"body", {}, "bl", "br", 2}}, 20});
+    const auto from = set("a", {{"chest", 480}});
+    tg::GradingOptions o = quick();
+    o.generations = 0;
+    auto message = [&](double target, double limit) {
+        o.max_target_ratio = limit;
+        try {
+            tapeline_test::grade(p, from, set("tgt", {{"chest", target}}), o);
+        } catch (const tapeline::InvalidInput& e) {
+            return std::string(e.what());
+        }
+        return std::string("graded");
+    };
+    for (double t : {1e9, 1e-9, 1e308, 1441.0, 159.0}) {
+        const std::string m = message(t, 3);
+        EXPECT_NE(m.find("target set 'tgt': measurement 'chest' is "), std::string::npos) << m;
+        EXPECT_NE(m.find("times the base set 'a''s 480 mm; a grade beyond 3 times"),
+                  std::string::npos)
+            << m;
+    }
+    EXPECT_NE(message(1e9, 3).find("2.083e+06 times"), std::string::npos) << message(1e9, 3);
+    for (double t : {std::nan(""), HUGE_VAL, -480.0, 0.0}) {
+        EXPECT_NE(message(t, 3).find("a bound length must be a positive number"), std::string::npos)
+            << t;
+    }
+    // Just inside the limit both ways, and a wider limit, grade.
+    EXPECT_EQ(message(1439, 3), "graded");
+    EXPECT_EQ(message(161, 3), "graded");
+    EXPECT_EQ(message(1900, 4), "graded");
+    EXPECT_EQ(message(1e4, 0), "graded");  // 0: no limit
+}
+
 TEST(Grading, PatternWithoutBindingsIsRefused) {
     tp::Pattern p;
     p.name = "plain";

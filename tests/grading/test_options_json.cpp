@@ -34,7 +34,8 @@ TEST(GradingJson, Options) {
                       FIELD(o, min_fit_factor),
                       FIELD(o, max_fit_factor),
                       FIELD(o, split_girths),
-                      FIELD(o, trim_aspect)};
+                      FIELD(o, trim_aspect),
+                      FIELD(o, max_target_ratio)};
     EXPECT_EQ(tapeline::test::field_count<GradingOptions>(), f.size());
     const json j = o;
     expect_fields(j, f, "GradingOptions");

@@ -129,3 +129,45 @@ TEST(MeasurementInput, AbsurdSetsAreRefused) {
                          "unknown unit 'furlong'");
     expect_input_refused(write_temp("text.json", R"({"chest": "big"})"), "chest");
 }
+
+TEST(MeasurementInput, ValuesNoHumanBodyHasAreRefused) {
+    const std::string girths = "(10 to 4000 mm for girths); check its unit";
+    expect_input_refused(write_temp("1e9.json", R"({"chest": 1e9})"), "'chest' is 1e+09 mm");
+    expect_input_refused(write_temp("1e9b.json", R"({"chest": 1e9})"), girths);
+    expect_input_refused(write_temp("1e-9.json", R"({"chest": 1e-9})"), "'chest' is 1e-09 mm");
+    expect_input_refused(write_temp("1e308.json", R"({"chest": 1e308})"), "is 1e+308 mm");
+    // Metres given without their unit, millimetres declared as centimetres; each naming of the
+    // catalogue: ours (with sides), Seamly2D's.
+    expect_input_refused(write_temp("m.json", R"({"chest": 0.979})"), "is 0.979 mm");
+    expect_input_refused(write_temp("cm.json", R"({"units": "cm", "chest": 979})"), "is 9790 mm");
+    expect_input_refused(write_temp("side.json", R"({"thigh_girth_left": 5})"), girths);
+    expect_input_refused(write_temp("seamly.json", R"({"bust_circ": 9.79})"), girths);
+    expect_input_refused(write_temp("stature.json", R"({"height": 17500})"),
+                         "(10 to 4000 mm for heights)");
+    expect_input_refused(write_temp("angle.json", R"({"shoulderSlope": 130})"),
+                         "(-90 to 90 degree for angles)");
+
+    // The bounds themselves, angles below zero and names outside the catalogue are accepted.
+    const std::string ok = write_temp(
+        "edges.json", R"({"chest": 4000, "waist": 10, "shoulderSlope": -5, "myLength": 1e6})");
+    const auto m = read_measurement_input(ok);
+    EXPECT_DOUBLE_EQ(*m.get("myLength"), 1e6);
+    std::remove(ok.c_str());
+}
+
+TEST(MeasurementInput, EveryBundledSetIsWithinTheHumanRange) {
+    // The range must not refuse real data: the bundled individual file, and every FreeSewing
+    // size set of the shared data.
+    EXPECT_NO_THROW(read_measurement_input(std::string(TAPELINE_DATA_DIR) +
+                                           "/patterns/example_individual.vit"));
+    EXPECT_NO_THROW(read_measurement_input(std::string(TAPELINE_DATA_DIR) +
+                                           "/patterns/aaron_cisFemaleAdult36_measurements.json"));
+    const std::string sets =
+        std::string(TAPELINE_SHARED_DATA_DIR) + "/patterns/freesewing/measurement_sets.json";
+    if (!std::ifstream(sets)) {
+        GTEST_SKIP() << sets << " absent";
+    }
+    for (const char* name : {"cisFemaleAdult36", "cisFemaleAdult42"}) {
+        EXPECT_NO_THROW(read_measurement_input(sets, name)) << name;
+    }
+}

@@ -52,6 +52,7 @@ inline void to_json(nlohmann::json& j, const GradingOptions& o) {
     j["max_fit_factor"] = o.max_fit_factor;
     j["split_girths"] = o.split_girths;
     j["trim_aspect"] = o.trim_aspect;
+    j["max_target_ratio"] = o.max_target_ratio;
 }
 
 inline void to_json(nlohmann::json& j, const FitRow& f) {

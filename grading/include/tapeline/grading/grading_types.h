@@ -79,6 +79,12 @@ struct GradingOptions {
     /// binding strip, a placket) is a trim: graded in length only, as commercial grade rules treat
     /// trims (its width is held by the trim prior instead of growing with the garment). 0: off.
     double trim_aspect = 5;
+    /// A bound measurement whose target is more than this many times its base value, or less
+    /// than its base value divided by this, is refused (InvalidInput) instead of graded: no grade
+    /// of one draft spans a factor of 3 (a child's chest is about 0.6 of an adult's), and a
+    /// target in another unit or of garbage would draft a pattern kilometres or microns wide.
+    /// 0: no limit.
+    double max_target_ratio = 3;
 };
 
 /// One row of the fit table: the body measurement the pattern now fits (pattern dimension minus

@@ -216,4 +216,32 @@ inline bool is_angle_measurement(const std::string& name) {
            n.find("incl") != std::string::npos;
 }
 
+/// The values a measurement of a human body can take, newborn to the largest adults recorded,
+/// with margin: every length, girth, width and height within [10, 4000] mm (the tallest stature
+/// recorded is 2,720 mm; a newborn's shortest catalogue length, shoulder to elbow, is about
+/// 70 mm), every angle within [-90, 90] degrees. A value outside is a unit mistake or garbage,
+/// not a body.
+struct PlausibleRange {
+    double low = 0, high = 0;  ///< inclusive bounds, in the row's unit()
+};
+
+/// The plausible range of a catalogue row (see PlausibleRange).
+inline PlausibleRange plausible_range(const CatalogueEntry& e) {
+    return e.kind == MeasurementKind::angle ? PlausibleRange{-90, 90} : PlausibleRange{10, 4000};
+}
+
+/// The catalogue row a measurement set key stands for, whatever naming it uses: ours (with
+/// the per-side variants), Seamly2D's known names, FreeSewing's; "@" stripped. nullptr when
+/// none.
+inline const CatalogueEntry* catalogue_row_of_key(const std::string& key) {
+    const std::string k = !key.empty() && key[0] == '@' ? key.substr(1) : key;
+    if (const CatalogueMatch m = find_measurement(k)) {
+        return m.entry;
+    }
+    if (const CatalogueEntry* e = from_seamly_name(k)) {
+        return e;
+    }
+    return from_freesewing_name(k);
+}
+
 }  // namespace tapeline::sizes

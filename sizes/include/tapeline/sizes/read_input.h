@@ -22,11 +22,21 @@
 
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace tapeline::sizes {
+
+namespace internal {
+/// A value in messages: 6 significant digits ("1e+09", "979", "1e-09").
+inline std::string set_value_text(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+}  // namespace internal
 
 /// The FreeSewing name a measurement set key stands for: the catalogue's FreeSewing name of the
 /// row whose Seamly2D name or our name `key` is ("@" stripped); else the key itself, "@"
@@ -53,8 +63,9 @@ inline void add_freesewing_aliases(MeasurementSet& m) {
     m.values.insert(add.begin(), add.end());
 }
 
-/// Refuses non-finite or non-positive lengths and a waist above the height (when both are given),
-/// naming the set.
+/// Refuses non-finite or non-positive lengths, a measurement of the catalogue (under any of its
+/// names) outside its plausible_range, and a waist above the height (when both are given), naming
+/// the set.
 ///
 /// \throws InvalidInput on the first such value.
 inline void check_measurement_set(const MeasurementSet& m) {
@@ -66,6 +77,16 @@ inline void check_measurement_set(const MeasurementSet& m) {
         if (!is_angle_measurement(k) && v <= 0) {
             throw InvalidInput(where + ": measurement '" + k + "' is " + std::to_string(v) +
                                " mm; lengths must be positive");
+        }
+        if (const CatalogueEntry* e = catalogue_row_of_key(k)) {
+            const PlausibleRange r = plausible_range(*e);
+            if (v < r.low || v > r.high) {
+                throw InvalidInput(
+                    where + ": measurement '" + k + "' is " + internal::set_value_text(v) + " " +
+                    e->unit() + ", outside the range of a human body (" +
+                    internal::set_value_text(r.low) + " to " + internal::set_value_text(r.high) +
+                    " " + e->unit() + " for " + to_string(e->kind) + "s); check its unit");
+            }
         }
     }
     for (const char* h : {"height", "body_height", "heightTotal"}) {

@@ -7,6 +7,7 @@
 #include <tapeline/grading/grading_types.h>
 #include <tapeline/grading/internal/terms.h>
 #include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/catalogue.h>
 #include <tapeline/sizes/measurement_set.h>
 
 #include <algorithm>
@@ -14,7 +15,9 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <variant>
@@ -240,8 +243,37 @@ public:
         t.items.push_back(item);
     }
 
+    // A target further than max_target_ratio from the base value either way is no grade of
+    // this draft (a unit mistake, garbage): refused before Ceres sees it.
+    void check_target_ratio(const std::string& name, const std::optional<double>& base,
+                            double target, double limit, const sizes::MeasurementSet& from,
+                            const sizes::MeasurementSet& to) const {
+        if (!std::isfinite(target) || (!sizes::is_angle_measurement(name) && target <= 0)) {
+            throw InvalidInput("target set '" + to.name + "': measurement '" + name + "' is " +
+                               ratio_text(target) + "; a bound length must be a positive number");
+        }
+        if (!base || *base <= 0 || sizes::is_angle_measurement(name) || !(limit > 0)) {
+            return;
+        }
+        const double r = target / *base;
+        if (!(r <= limit && r >= 1 / limit)) {
+            throw InvalidInput("target set '" + to.name + "': measurement '" + name + "' is " +
+                               ratio_text(target) + " mm, " + ratio_text(r) +
+                               " times the base set '" + from.name + "''s " + ratio_text(*base) +
+                               " mm; a grade beyond " + ratio_text(limit) +
+                               " times either way is refused (max_target_ratio)");
+        }
+    }
+
+    static std::string ratio_text(double v) {
+        std::ostringstream s;
+        s.precision(4);
+        s << v;
+        return s.str();
+    }
+
     void build_bindings(const sizes::MeasurementSet& from, const sizes::MeasurementSet& to,
-                        EaseMode ease, double weight, bool split_girths) {
+                        EaseMode ease, double weight, bool split_girths, double max_target_ratio) {
         for (const tp::MeasurementBinding& b : p_.bindings) {
             LengthTerm t;
             t.weight = weight;
@@ -281,6 +313,7 @@ public:
                 throw InvalidInput("target set '" + to.name + "': no measurement '" +
                                    b.measurement + "', which the pattern binds (" + where + ")");
             }
+            check_target_ratio(b.measurement, base, *target, max_target_ratio, from, to);
             double e = b.ease_mm;
             if (ease == EaseMode::proportional) {
                 if (!base || *base <= 0) {
@@ -531,7 +564,7 @@ inline Model build_model(const tp::Pattern& p, const sizes::MeasurementSet& from
     ModelBuilder b(p, m);
     b.build_nodes();
     b.mark_trims(o.trim_aspect);
-    b.build_bindings(from, to, o.ease, o.weights.fit, o.split_girths);
+    b.build_bindings(from, to, o.ease, o.weights.fit, o.split_girths, o.max_target_ratio);
     b.build_seams(o.weights.seam, o.tolerances.seam_mm, seams);
     b.build_style(o.weights, o.reference_length_mm);
     b.build_graph(o.neighbours, o.weights.proportion);
