@@ -4,7 +4,11 @@ generated here) under a time and memory limit, and checks each run: no crash (si
 (timeout), a refusal is a non-zero exit with exactly one line on stderr, and a refused run leaves
 no file in its output directory. Named cases also check the message or the result.
 
-    run_corpus.py TAPELINE_BINARY SOURCE_DIR WORK_DIR [--summary FILE]
+    run_corpus.py TAPELINE_BINARY SOURCE_DIR WORK_DIR [--summary FILE] [--sanitized]
+
+--sanitized: the binary is built with AddressSanitizer + UndefinedBehaviorSanitizer
+(TAPELINE_SANITIZE). The memory limit is then ASan's RSS limit (an address-space limit stops
+ASan's shadow memory), the time limit is doubled, and any sanitizer report counts as a crash.
 """
 import json
 import math
@@ -22,7 +26,15 @@ TIME_LIMIT_S = 60
 MEMORY_LIMIT = 4 << 30  # address space per run
 
 binary, root, work = sys.argv[1], sys.argv[2], sys.argv[3]
-summary_path = sys.argv[5] if len(sys.argv) > 5 and sys.argv[4] == "--summary" else None
+options = sys.argv[4:]
+summary_path = options[options.index("--summary") + 1] if "--summary" in options else None
+sanitized = "--sanitized" in options
+if sanitized:
+    TIME_LIMIT_S *= 2
+    os.environ["ASAN_OPTIONS"] = "hard_rss_limit_mb=%d:abort_on_error=0" % (MEMORY_LIMIT >> 20)
+    os.environ["UBSAN_OPTIONS"] = "print_stacktrace=1"
+SANITIZER_REPORT = re.compile(r"ERROR: (Address|Leak)Sanitizer|runtime error: |"
+                              r"AddressSanitizer: hard rss limit")
 corpus = os.path.join(root, "tests", "corpus")
 data = os.path.join(root, "data")
 spot = os.path.join(data, "spot.obj")
@@ -126,7 +138,8 @@ accepted = {
 
 
 def limits():
-    resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
+    if not sanitized:
+        resource.setrlimit(resource.RLIMIT_AS, (MEMORY_LIMIT, MEMORY_LIMIT))
     resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
 
 
@@ -160,7 +173,7 @@ def check_refusal(name, argv, out, pattern=None, allow_success=False, time_limit
         results["hangs"] += 1
         record_failure(name, "no answer within %d s" % time_limit)
         return rc, stderr
-    if rc < 0 or rc >= 128:
+    if rc < 0 or rc >= 128 or SANITIZER_REPORT.search(stderr):
         results["crashes"] += 1
         record_failure(name, "crashed (exit %s) %s" % (rc, stderr[-300:]))
         return rc, stderr
@@ -233,6 +246,18 @@ case("point cloud at 1e300",
 case("directory as mesh", ["geodesic", "distances", directory_input, "--source", "0",
                            "--out", "{out}/d.txt"], r"a_directory\.obj: is a directory")
 case("directory as pattern", ["pattern", "validate", directory_input], r"is a directory")
+# Targets no body has, or no grade of the draft reaches: refused, not a pattern kilometres wide,
+# a collapsed one "within tolerance", or Ceres' log.
+base_set = json.load(open(demo_set))
+for chest, pattern in [(1e9, r"'chest' is 1e\+09 mm, outside the range of a human body"),
+                       (1e-9, r"'chest' is 1e-09 mm, outside the range of a human body"),
+                       (1e308, r"'chest' is 1e\+308 mm, outside the range of a human body"),
+                       (3000, r"'chest' is 3000 mm, 3\.064 times the base set .* beyond 3 times")]:
+    target = os.path.join(gen, "chest_%g.json" % chest)
+    json.dump(dict(base_set, chest=chest), open(target, "w"))
+    case("grade to a chest of %g mm" % chest,
+         ["grade", demo, "--from", demo_set, "--to", target, "--out", "{out}/g.json",
+          "--generations", "0"], pattern)
 case("grade output in a missing directory",
      ["grade", demo, "--from", demo_set, "--to", demo_set, "--out", "{out}/g.json",
       "--svg", "{out}/nodir/x.svg"], r"nodir/x\.svg: directory .*nodir does not exist")
