@@ -5,9 +5,13 @@ MakeHuman's ruler (difference in mm; MakeHuman's ruler is a vertex loop on the b
 band, not truth) and the time.
 
 usage: measure_population.py TAPELINE DATA_DIR OUT.md [--bodies dev|holdout|all] [--json OUT.json]
+                             [--population DIR]
   dev:     bundled bodies and mh_pop_000 ... mh_pop_029 (the part used while developing)
   holdout: mh_pop_030 ... mh_pop_039 only
   all:     both
+  --population DIR: instead, every body of another population made by
+           ../shared/data_tools/mh_population.py (DIR/population.json and its PLY files), e.g. one
+           drawn with a new seed that no rule of the measurement was tuned on.
 """
 import argparse
 import json
@@ -50,6 +54,13 @@ def bodies(data, which):
     return out
 
 
+def population_bodies(directory):
+    meta = json.load(open(os.path.join(directory, "population.json")))
+    prefix = os.path.basename(directory.rstrip("/")) + "/"
+    return [(prefix + name, os.path.join(directory, name + ".ply"), body["makehuman_ruler_cm"])
+            for name, body in sorted(meta["bodies"].items())], meta.get("seed")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("tapeline")
@@ -57,11 +68,17 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--bodies", default="dev", choices=["dev", "holdout", "all"])
     ap.add_argument("--json")
+    ap.add_argument("--population")
     a = ap.parse_args()
+    if a.population:
+        todo, seed = population_bodies(a.population)
+        a.bodies = "population of %s, seed %s" % (os.path.basename(a.population.rstrip("/")), seed)
+    else:
+        todo = bodies(a.data, a.bodies)
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        for name, path, ruler in bodies(a.data, a.bodies):
-            out = os.path.join(work, name + ".json")
+        for name, path, ruler in todo:
+            out = os.path.join(work, name.replace("/", "_") + ".json")
             t0 = time.monotonic()
             p = subprocess.run([a.tapeline, "measure", path, "--units", "dm", "--out", out],
                                capture_output=True, text=True)
@@ -105,8 +122,9 @@ def write_table(rows, a):
          "a fixed vertex loop on MakeHuman's base mesh: a sanity band, not truth). `time`: the "
          "CLI's total seconds (load, landmarks, girths, lengths along the skin) on a shared, "
          "loaded machine." % (" ".join(["benchmarks/scripts/measure_population.py",
-                                         "build/apps/tapeline", "../shared/data/bodies", "OUT.md",
-                                         "--bodies", a.bodies]), a.bodies), "",
+                                         "build/apps/tapeline", "../shared/data/bodies", "OUT.md"] +
+                                        (["--population", "DIR"] if a.population else
+                                         ["--bodies", a.bodies])), a.bodies), "",
          "Bodies measured: %d of %d; all landmarks found on %d; self-check warnings: %d; "
          "bodies with a missing measurement: %d; time median %.2f s, max %.2f s." % (
              len(ok), len(rows), full, nwarn, sum(1 for r in ok if r["missing"]),

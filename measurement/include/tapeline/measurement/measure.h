@@ -36,7 +36,7 @@ struct BodyMeasurements {
 inline void refuse_unlike_human_heights(const Body& body, const LandmarkSet& landmarks) {
     const double h = body.frame.height;
     std::size_t off = 0;
-    std::string first;
+    std::string which;
     for (const auto& b : landmark_height_bands()) {
         const Landmark* l = landmarks.find(b.landmark);
         if (l == nullptr || l->status != LandmarkStatus::found) {
@@ -44,18 +44,17 @@ inline void refuse_unlike_human_heights(const Body& body, const LandmarkSet& lan
         }
         const double f = l->point[1] / h;
         if (f < b.lo || f > b.hi) {
-            if (off++ == 0) {
-                char buf[160];
-                std::snprintf(buf, sizeof buf, "%s at %.3f of the stature, expected %.2f-%.2f",
-                              b.landmark, f, b.lo, b.hi);
-                first = buf;
-            }
+            char buf[160];
+            std::snprintf(buf, sizeof buf, "%s%s at %.3f (%.2f-%.2f)", off++ == 0 ? "" : ", ",
+                          b.landmark, f, b.lo, b.hi);
+            which += buf;
         }
     }
     if (off >= 5) {
         throw InvalidInput(body.mesh.name + ": does not look like a body: " + std::to_string(off) +
-                           " landmarks lie outside the heights of a human body (first: " + first +
-                           "); check --up, --front and --units, or the mesh");
+                           " landmarks lie outside the heights of a human body, as fractions of "
+                           "the stature: " +
+                           which + "; check --up, --front and --units, or the mesh");
     }
 }
 

@@ -280,6 +280,30 @@ private:
         set_missing("crotch", "the two leg sections never merge");
     }
 
+    /// Follows section `sec` of level `k` down the scan while the section below holds its
+    /// centroid (within 2 % of the height) and is neither the torso nor a leg, calling
+    /// visit(section, index) on each; returns the lowest level reached.
+    template <typename Visit>
+    std::size_t follow_down(std::size_t k, int sec, Visit&& visit) const {
+        while (sec >= 0) {
+            const PlaneSection& ps = levels_[k].ps;
+            visit(ps, static_cast<std::size_t>(sec));
+            if (k == 0) {
+                break;
+            }
+            double d = 0;
+            const Vec2 c = ps.sections[static_cast<std::size_t>(sec)].centroid;
+            const int below = levels_[k - 1].ps.locate(c, &d);
+            if (below < 0 || below == levels_[k - 1].torso || d > 0.02 * height_ ||
+                below == levels_[k - 1].leg[0] || below == levels_[k - 1].leg[1]) {
+                break;
+            }
+            --k;
+            sec = below;
+        }
+        return k;
+    }
+
     void find_torso_and_armpits() {
         if (!crotch_y_) {
             for (int s = 0; s < 2; ++s) {
@@ -320,6 +344,14 @@ private:
                     warnings_.push_back(std::string("a ") + side_name(side) +
                                         " section joins the torso at " + mm(levels_[k].y) +
                                         ", below the armpit band (hand touching the hip?)");
+                    continue;
+                }
+                // An arm hangs at least a tenth of the height below where it joins the torso;
+                // a shorter part joining it is the lower half of a hanging breast or a fold
+                // (the breast's underside is cut apart from the chest below the crease).
+                const std::size_t bottom =
+                    follow_down(k, static_cast<int>(s), [](const PlaneSection&, std::size_t) {});
+                if (levels_[k].y - levels_[bottom].y < 0.1 * height_) {
                     continue;
                 }
                 arm_merge_level_[side] = k;
@@ -1089,29 +1121,16 @@ private:
             const Vec3 joint = mul(add(*ac, *ap), 0.5);
             Vec3 fingertip = joint;
             if (arm_merge_level_[s]) {
-                std::size_t k = *arm_merge_level_[s];
-                int sec = arm_section_[s];
-                while (sec >= 0) {
-                    const PlaneSection& ps = levels_[k].ps;
-                    for (std::size_t l : ps.sections[static_cast<std::size_t>(sec)].loops) {
-                        for (const auto& p : ps.loops[l].points) {
-                            if (dist(p, joint) > dist(fingertip, joint)) {
-                                fingertip = p;
-                            }
-                        }
-                    }
-                    if (k == 0) {
-                        break;
-                    }
-                    double d = 0;
-                    const Vec2 c = ps.sections[static_cast<std::size_t>(sec)].centroid;
-                    const int below = levels_[k - 1].ps.locate(c, &d);
-                    --k;
-                    sec = (below >= 0 && below != levels_[k].torso && d <= 0.02 * height_ &&
-                           below != levels_[k].leg[0] && below != levels_[k].leg[1])
-                              ? below
-                              : -1;
-                }
+                follow_down(*arm_merge_level_[s], arm_section_[s],
+                            [&](const PlaneSection& ps, std::size_t sec) {
+                                for (std::size_t l : ps.sections[sec].loops) {
+                                    for (const auto& p : ps.loops[l].points) {
+                                        if (dist(p, joint) > dist(fingertip, joint)) {
+                                            fingertip = p;
+                                        }
+                                    }
+                                }
+                            });
             }
             if (fingertip_[s]) {
                 fingertip = *fingertip_[s];
