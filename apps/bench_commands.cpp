@@ -50,12 +50,14 @@ void register_bench_commands(CLI::App& app) {
     geo->add_option(
            "--window", a->settings.window,
            "Samples flowed per vertex by gcf-window (a method 'gcf-window:W' sets its own)")
+        ->check(CLI::Range(1, 4096))
         ->capture_default_str();
     geo->add_option("--cell", a->settings.points.cell_size,
                     "gcf-points: grid cell size (0: the median distance to the d-th neighbour)")
         ->capture_default_str();
     geo->add_option("--neighbours", a->settings.points.neighbours,
                     "gcf-points: neighbours d of the local surfaces")
+        ->check(CLI::Range(1, 10000))
         ->capture_default_str();
     add_projection_option(geo, a->settings.points, "gcf-points: mls or plane");
     geo->add_option("--noise", a->settings.noise,

@@ -253,6 +253,7 @@ void register_dress_commands(CLI::App& app) {
     cmd->add_option("--without", a->without, "Leave this piece (and its seams) out; repeatable")
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_option("--threads", a->threads, "Solver threads (0: all cores)")
+        ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     cmd->add_option("--sew-seconds", a->sew_seconds,
                     "Simulated time over which the seams are pulled shut (0 with --settle-seconds "
@@ -263,7 +264,9 @@ void register_dress_commands(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--gap", a->gap, "Clearance of the placed pieces from the body, mm")
         ->capture_default_str();
-    cmd->add_option("--substeps", a->substeps, "Solver sub-steps per frame")->capture_default_str();
+    cmd->add_option("--substeps", a->substeps, "Solver sub-steps per frame")
+        ->check(CLI::Range(1, 10000))
+        ->capture_default_str();
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "

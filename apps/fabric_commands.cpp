@@ -303,8 +303,10 @@ void register_fabric_commands(CLI::App& app) {
                      "Cusick: random vertical offsets of the flat start, mm")
         ->capture_default_str();
     test->add_option("--repeats", ta->repeats, "Cusick: runs with seeds 1..N")
+        ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     test->add_option("--threads", ta->threads, "Solver threads (0: all cores)")
+        ->check(CLI::Range(0, 1024))
         ->capture_default_str();
     test->callback([ta] { run_test(*ta); });
 }

@@ -200,6 +200,7 @@ struct PathArgs {
 };
 
 void run_path(const PathArgs& args) {
+    OutputFiles outputs({args.out, args.svg});  // both checked before any work
     InputMesh input = load(args.mesh);
     const Vertex from = vertices_of(input, args.from, "--from").front();
     const Vertex to = vertices_of(input, args.to, "--to").front();
@@ -224,19 +225,12 @@ void run_path(const PathArgs& args) {
         j["unfold"] = std::move(u.summary);
         svg = std::move(u.svg);
     }
-    // Picture first: when it cannot be written, no JSON either; when the JSON cannot be written,
-    // the picture of this run is taken back.
+    // Both to temporary names, renamed together: a failure leaves neither.
     if (!args.svg.empty()) {
-        write_file_atomically(args.svg, [&](std::ostream& out) { out << svg; });
+        outputs.write(args.svg, [&](std::ostream& out) { out << svg; });
     }
-    try {
-        write_file_atomically(args.out, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
-    } catch (...) {
-        if (!args.svg.empty()) {
-            std::remove(args.svg.c_str());
-        }
-        throw;
-    }
+    outputs.write(args.out, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    outputs.commit();
     std::cout << "wrote " << args.out << ": " << args.method << " path of length "
               << j["length"].dump() << " with " << j["points"].size() << " points\n";
     if (!args.svg.empty()) {
@@ -292,6 +286,7 @@ void register_geodesic_commands(CLI::App& app) {
             },
             "METHOD"));
     dist->add_option("--window", d->settings.window, "Samples flowed per vertex by gcf-window")
+        ->check(CLI::Range(1, 4096))
         ->capture_default_str();
     dist->add_option("--out,-o", d->out,
                      "Output: .txt (one distance per input vertex per line, inf if unreachable) "
@@ -306,6 +301,7 @@ void register_geodesic_commands(CLI::App& app) {
         ->capture_default_str();
     dist->add_option("--neighbours", d->settings.points.neighbours,
                      "gcf-points: neighbours d of the local surfaces (PCA, MLS)")
+        ->check(CLI::Range(1, 10000))
         ->capture_default_str();
     add_projection_option(dist, d->settings.points,
                           "gcf-points: local surface, mls (quadric) or plane");

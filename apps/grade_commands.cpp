@@ -266,15 +266,18 @@ void register_grade_commands(CLI::App& app) {
     cmd->add_option("--compare", a->compare,
                     "Reference draft of the target size: outline deviation in the report");
     cmd->add_option("--seed", a->seed, "Random seed (NSGA-II)")->capture_default_str();
-    cmd->add_option("--population", a->population, "NSGA-II population")->capture_default_str();
-    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)")
+    cmd->add_option("--population", a->population, "NSGA-II population")
+        ->check(CLI::Range(0, 100000))
         ->capture_default_str();
-    cmd->add_option("--threads", a->threads, "Threads (0: all)");
+    cmd->add_option("--generations", a->generations, "NSGA-II generations (0: Ceres only)")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd->add_option("--threads", a->threads, "Threads (0: all)")->check(CLI::Range(0, 1024));
     cmd->add_option("--ease", a->ease, "Ease mode: proportional or keep_mm")->capture_default_str();
     cmd->add_option("--max-target-ratio", a->max_target_ratio,
                     "Refuse a target more than this many times its base value, or less than its "
                     "base value divided by it (0: no limit)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(CLI::Range(0.0, 1000.0))
         ->capture_default_str();
     cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");
     cmd->add_flag("--no-freesewing-bindings", a->no_fs_bindings,

@@ -9,6 +9,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -43,6 +45,51 @@ void check_command_words(CLI::App& app, int argc, char** argv) {
     }
 }
 
+/// CLI11 reads "" as 0, "-1" as the largest unsigned value, "1e999" and "nan" as numbers: every
+/// option value is checked for what its type needs before the command sees it (ASCII digits for
+/// whole numbers, within 32 bits; a finite number for real values; no empty text), so a typo is a
+/// one-line refusal naming the option instead of a run of hours or a silent default. Options whose
+/// work grows with their value also have a range of their own.
+std::string check_value(const std::string& type, const std::string& v) {
+    if (v.empty()) {
+        return "empty value";
+    }
+    if (type.find("INT") != std::string::npos) {
+        const bool is_unsigned = type.find("UINT") != std::string::npos;
+        const std::size_t first = (!is_unsigned && v[0] == '-') ? 1 : 0;
+        bool digits = v.size() > first && v.size() - first <= 10;
+        for (std::size_t i = first; i < v.size() && digits; ++i) {
+            digits = v[i] >= '0' && v[i] <= '9';
+        }
+        const double limit = is_unsigned ? 4294967295.0 : 2147483647.0;
+        if (!digits || std::stod(v.substr(first)) > limit) {
+            return "'" + v + "' is not a whole number" +
+                   (is_unsigned ? " from 0 to 4294967295" : " within +-2147483647");
+        }
+    } else if (type.find("FLOAT") != std::string::npos) {
+        char* end = nullptr;
+        const double x = std::strtod(v.c_str(), &end);
+        if (end != v.c_str() + v.size() || !std::isfinite(x)) {
+            return "'" + v + "' is not a finite number";
+        }
+    }
+    return "";
+}
+
+void check_option_values(CLI::App& app) {
+    for (CLI::Option* opt : app.get_options()) {
+        if (opt->get_type_size_max() == 0) {
+            continue;  // a flag
+        }
+        const std::string type = opt->get_type_name();
+        opt->check(CLI::Validator([type](std::string& v) { return check_value(type, v); }, "",
+                                  "value of its type"));
+    }
+    for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+        check_option_values(*sub);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -74,6 +121,7 @@ int main(int argc, char** argv) {
     tapeline::app::register_measure_commands(app);
     tapeline::app::register_dress_commands(app);
     tapeline::app::register_fabric_commands(app);
+    check_option_values(app);
     try {
         check_command_words(app, argc, argv);
         app.parse(argc, argv);

@@ -94,10 +94,15 @@ void run_measure(const MeasureArgs& a) {
     if (!a.vit.empty()) {
         check_output(a.vit, ".vit", "--vit");
     }
+    std::vector<std::string> paths{a.out, a.vit};
     for (const std::string& picture : a.pictures) {
         tm::picture_format(picture, "--picture");  // .svg or .png, else refused before any work
         check_output(picture, lower_extension(picture), "--picture");
+        paths.push_back(picture);
     }
+    // Every output is written to a temporary name and all are renamed at the end: a failure
+    // (a full disk, say) leaves none of them.
+    OutputFiles outputs(paths);
     const tm::LandmarkOverrides overrides =
         a.landmarks.empty() ? tm::LandmarkOverrides{} : tm::read_landmark_overrides(a.landmarks);
 
@@ -140,16 +145,17 @@ void run_measure(const MeasureArgs& a) {
         po.title = std::filesystem::path(a.body).filename().string();
         const tm::PictureMesh pm = tm::picture_mesh(loaded.mesh, r.frame);
         for (const std::string& picture : a.pictures) {
-            tm::write_measurement_picture(picture, pm.points, pm.triangles, r.measurements,
-                                          r.landmarks, po);
+            tm::write_measurement_picture(outputs.temporary(picture), pm.points, pm.triangles,
+                                          r.measurements, r.landmarks, po);
         }
     }
     if (!a.vit.empty()) {
-        write_file_atomically(a.vit, [&](std::ostream& out) {
+        outputs.write(a.vit, [&](std::ostream& out) {
             sizes::write_seamly_individual(out, tm::named_values(r.measurements), a.body);
         });
     }
-    write_file_atomically(a.out, [&](std::ostream& out) { out << text; });
+    outputs.write(a.out, [&](std::ostream& out) { out << text; });
+    outputs.commit();
     std::cout << a.out << ": " << r.measurements.measurements.size() << " measurements, "
               << r.measurements.missing.size() << " missing, " << r.report.landmarks_found << "/"
               << r.landmarks.landmarks.size() << " landmarks (unit " << tm::to_string(r.frame.unit)

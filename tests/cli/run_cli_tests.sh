@@ -159,7 +159,7 @@ if paste gcf_w.txt gcf_t.txt gcf_d.txt | awk 'NR > 1 { w = ($1 - $3) / $3; t = (
      if (w < 0) w = -w; if (t < 0) t = -t; if (w > mw) mw = w; if (t > mt) mt = t }
      END { print "max rel diff window " mw ", thesis " mt; exit !(mw < 1e-2 && mt > mw) }' >gcf_win.txt; then
   ok "gcf-window close to gcf-exact, thesis rule farther ($(cat gcf_win.txt))"; else fail "gcf-window vs gcf-exact ($(cat gcf_win.txt))"; fi
-expect_fail "gcf-window with window 0" "at least 1" "$bin" geodesic distances ico.off --source 0 --method gcf-window --window 0 --out x.txt
+expect_fail "gcf-window with window 0" "--window: Value 0 not in range 1 to 4096" "$bin" geodesic distances ico.off --source 0 --method gcf-window --window 0 --out x.txt
 expect_ok "gcf path" "$bin" geodesic path ico.off --from 0 --to 300 --method gcf --out gcf.json
 if $py - "$(sed -n 301p ico_exact.txt)" "$(sed -n 301p truth.txt)" <<'PY'
 import json, sys

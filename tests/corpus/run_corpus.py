@@ -217,8 +217,13 @@ sweep_runs = results["runs"]
 case_dir = os.path.join(work, "cases")
 
 
+case_count = [0]
+
+
 def case(name, argv, pattern, **kw):
-    out = os.path.join(case_dir, re.sub(r"[^a-z0-9]+", "_", name.lower()))
+    case_count[0] += 1
+    out = os.path.join(case_dir, "%03d_%s" % (case_count[0], re.sub(r"[^a-z0-9]+", "_",
+                                                                      name.lower())[:60]))
     argv = [a.replace("{out}", out) for a in argv]
     return check_refusal("case " + name, argv, out, pattern, **kw), out
 
@@ -333,6 +338,84 @@ if rc == 0:
         record_failure("case ellipsoid 50k", "%d values, %d inf" % (len(values), unreached))
 else:
     record_failure("case ellipsoid 50k", "exit %s" % rc)
+
+# --- command-line values: negative, non-numeric, huge, non-finite, empty, unicode digits ----------
+# Each must be refused in one line naming the option (or, where listed, accepted for what it is).
+bad_values = ["-1", "abc", "1e999", "99999999999999999999999", "nan", "inf", "", "\u0663",
+              "\uff11", "1;2"]
+value_slots = {
+    "--source": ["geodesic", "distances", spot, "--source", "{v}", "--out", "{out}/d.txt"],
+    "--window": ["geodesic", "distances", spot, "--source", "0", "--method", "gcf-window",
+                 "--window", "{v}", "--out", "{out}/d.txt"],
+    "--from": ["geodesic", "path", spot, "--from", "{v}", "--to", "1", "--out", "{out}/p.json"],
+    "--cell": ["geodesic", "distances", sphere_points, "--point-cloud", "--source", "0",
+               "--cell", "{v}", "--out", "{out}/d.txt"],
+    "--generations": ["grade", demo, "--from", demo_set, "--to", demo_set, "--out",
+                      "{out}/g.json", "--generations", "{v}"],
+    "--max-target-ratio": ["grade", demo, "--from", demo_set, "--to", demo_set, "--out",
+                           "{out}/g.json", "--generations", "0", "--max-target-ratio", "{v}"],
+    "--units": ["measure", os.path.join(data, "bodies", "mh_female_average.obj"), "--units",
+                "{v}", "--out", "{out}/m.json"],
+}
+value_accepted = set()
+for slot, template in value_slots.items():
+    for v in bad_values:
+        argv = [a.replace("{v}", v) for a in template]
+        case("%s %r" % (slot, v), argv, None, allow_success=(slot, v) in value_accepted)
+
+# --- paths and names in other scripts are ordinary names --------------------------------------------
+uni_dir = os.path.join(case_dir, "unicode")
+os.makedirs(uni_dir)
+uni_mesh = os.path.join(uni_dir, "\u00fcber \u540d\u524d \U0001F9F5.obj")
+shutil.copy(spot, uni_mesh)
+(rc, _), out = case("unicode input and output names",
+                    ["geodesic", "distances", uni_mesh, "--source", "0",
+                     "--out", "{out}/\u8ddd\u96e2 \u00e9.txt"], None, allow_success=True)
+if rc != 0 or os.listdir(out) != ["\u8ddd\u96e2 \u00e9.txt"]:
+    record_failure("case unicode names", "exit %s, files %s" % (rc, os.listdir(out)))
+
+# --- a full disk: writes fail (file size limit, SIGXFSZ ignored so write() returns EFBIG) ---------
+
+
+def small_disk():
+    limits()
+    signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+    resource.setrlimit(resource.RLIMIT_FSIZE, (4096, 4096))
+
+
+for name, argv in [("distances", ["geodesic", "distances", spot, "--source", "0",
+                                  "--out", "{out}/d.txt"]),
+                   ("pattern export", ["pattern", "export", demo, "--svg", "{out}/a.svg",
+                                       "--json", "{out}/a.json"]),
+                   ("measure", ["measure", os.path.join(data, "bodies", "mh_female_average.obj"),
+                                "--units", "dm", "--out", "{out}/m.json", "--vit",
+                                "{out}/m.vit"])]:
+    out = os.path.join(case_dir, "full_disk_" + name.replace(" ", "_"))
+    os.makedirs(out)
+    argv = [a.replace("{out}", out) for a in argv]
+    p = subprocess.run([binary] + argv, cwd=out, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                       stderr=subprocess.PIPE, preexec_fn=small_disk, timeout=TIME_LIMIT_S)
+    results["runs"] += 1
+    err = p.stderr.decode(errors="replace")
+    lines = [l for l in err.splitlines() if not l.startswith("tapeline: warning: ")]
+    if (p.returncode <= 0 or p.returncode >= 128 or len(lines) != 1 or os.listdir(out)
+            or not re.search(r"write|space|large", lines[0] if lines else "")):
+        record_failure("case full disk (%s)" % name, "exit %d, stderr %r, files %s"
+                       % (p.returncode, err[:300], os.listdir(out)))
+    else:
+        results["refused"] += 1
+
+# --- a database another process holds locked: the writer waits, then says so -------------------
+locked_db = os.path.join(case_dir, "locked.sqlite")
+rc, _, err = run(["pattern", "import", demo, "--db", locked_db], case_dir)
+holder = sqlite3.connect(locked_db, timeout=0, isolation_level=None)
+holder.execute("BEGIN EXCLUSIVE")
+(rc, err), out = case("database locked by another process",
+                      ["pattern", "import", os.path.join(data, "patterns",
+                                                         "aaron_cisFemaleAdult36.json"),
+                       "--db", locked_db, "--replace"], r"locked|busy")
+holder.execute("ROLLBACK")
+holder.close()
 
 # --- summary -------------------------------------------------------------------------------------
 results["corpus_files"] = len(inputs)

@@ -131,7 +131,7 @@ void raw_sql(const std::string& path, const std::string& sql) {
     const int rc = sqlite3_exec(db, sql.c_str(), nullptr, nullptr, &err);
     EXPECT_EQ(rc, SQLITE_OK) << (err ? err : "");
     sqlite3_free(err);
-    sqlite3_close(db);
+    EXPECT_EQ(sqlite3_close(db), SQLITE_OK);
 }
 
 }  // namespace
@@ -436,7 +436,7 @@ TEST(PatternDatabase, MigratesAVersion1File) {
     ASSERT_EQ(sqlite3_open(bad.c_str(), &raw), SQLITE_OK);
     EXPECT_EQ(internal::sql_integer(raw, bad, "PRAGMA user_version"), 1);
     EXPECT_EQ(internal::sql_integer(raw, bad, "SELECT count(*) FROM patterns"), 1);
-    sqlite3_close(raw);
+    EXPECT_EQ(sqlite3_close(raw), SQLITE_OK);
 }
 
 TEST(PatternDatabase, DefaultPathFollowsXdg) {
@@ -763,10 +763,12 @@ TEST(PatternDatabase, FaultInjectionHundredTrials) {
                                                 "name IN ('patterns_v1', 'pattern_tags')"),
                           0);
             }
-            internal::SqlStatement check(raw, path, "PRAGMA integrity_check");
-            ASSERT_TRUE(check.step());
-            EXPECT_EQ(check.text(0), "ok");
-            sqlite3_close(raw);
+            {
+                internal::SqlStatement check(raw, path, "PRAGMA integrity_check");
+                ASSERT_TRUE(check.step());
+                EXPECT_EQ(check.text(0), "ok");
+            }  // finalized before the close, which leaves a connection open while any is not
+            ASSERT_EQ(sqlite3_close(raw), SQLITE_OK);
         }
         // The rerun completes and leaves every pattern whole.
         PatternDatabase db(path);
