@@ -51,7 +51,9 @@ for t in "${targets[@]}"; do
   bin=$out/fuzz_$t
   libs=()
   [ "$t" = pattern_blob ] || [ "$t" = pattern_json ] && libs=(-lzstd)
-  if [ ! -x "$bin" ] || [ "benchmarks/fuzz/fuzz_$t.cpp" -nt "$bin" ]; then
+  # Rebuilt when the target or any header it may include changed since.
+  if [ ! -x "$bin" ] || [ -n "$(find benchmarks/fuzz core/include sizes/include pattern/include \
+                                    -newer "$bin" -print -quit)" ]; then
     nice "$cxx" "${flags[@]}" "benchmarks/fuzz/fuzz_$t.cpp" -o "$bin" "${libs[@]}" -lgmp -lmpfr
   fi
   corpus=$out/corpus/$t findings=$out/findings/$t

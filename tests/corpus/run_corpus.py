@@ -187,6 +187,8 @@ def check_refusal(name, argv, out, pattern=None, allow_success=False, time_limit
     lines = [l for l in stderr.splitlines() if not l.startswith("tapeline: warning: ")]
     if len(lines) != 1 or not lines[0].startswith("tapeline: "):
         record_failure(name, "stderr is not one line: %r" % stderr[:400])
+    elif "internal error" in lines[0]:  # an exception nobody turned into a message
+        record_failure(name, "internal error: %r" % lines[0][:300])
     if pattern and not re.search(pattern, stderr):
         record_failure(name, "message %r does not match %r" % (stderr.strip(), pattern))
     if left:

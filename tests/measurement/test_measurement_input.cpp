@@ -108,7 +108,7 @@ TEST(MeasurementInput, ShapeWithoutLegsArmsOrNeckIsNotABody) {
 }
 
 TEST(MeasurementInput, BadOverrideFilesAreRejected) {
-    expect_error<InvalidInput>([] { parse_overrides("{"); }, {"L.json", "invalid JSON"}, "json");
+    expect_error<InvalidInput>([] { parse_overrides("{"); }, {"L.json", "malformed JSON"}, "json");
     expect_error<InvalidInput>([] { parse_overrides("[]"); }, {"L.json", "\"landmarks\""}, "shape");
     expect_error<InvalidInput>([] { parse_overrides(R"({"landmarks": {"navel": [0, 0, 0]}})"); },
                                {"L.json", "unknown landmark 'navel'", "crotch"}, "name");

@@ -72,7 +72,8 @@ inline void check_json_depth(const std::string& text, const std::string& source)
 
 /// Parses JSON text; a syntax error (truncated file, NaN literal, ...) names the source and byte.
 ///
-/// \throws InvalidInput on a syntax error or nesting deeper than max_json_depth.
+/// \throws InvalidInput on a syntax error, a number beyond the range of a double (2e682), or
+///         nesting deeper than max_json_depth.
 inline Json parse_json(const std::string& text, const std::string& source) {
     check_json_depth(text, source);
     try {
@@ -80,6 +81,8 @@ inline Json parse_json(const std::string& text, const std::string& source) {
     } catch (const nlohmann::json::parse_error& e) {
         throw InvalidInput(source + ": malformed JSON at byte " + std::to_string(e.byte) + ": " +
                            e.what());
+    } catch (const nlohmann::json::exception& e) {  // out_of_range.406: number overflow
+        throw InvalidInput(source + ": malformed JSON: " + e.what());
     }
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/json_read.h>
 #include <tapeline/measurement/body.h>
 #include <tapeline/measurement/internal/landmark_finder.h>
 #include <tapeline/measurement/measurement_types.h>
@@ -48,12 +49,7 @@ struct LandmarkOverrides {
 ///         finite numbers.
 inline LandmarkOverrides parse_landmark_overrides(const std::string& text,
                                                   const std::string& where) {
-    nlohmann::json doc;
-    try {
-        doc = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-        throw InvalidInput(where + ": invalid JSON: " + e.what());
-    }
+    const nlohmann::json doc = tapeline::json::parse_json(text, where);
     if (!doc.is_object() || !doc.contains("landmarks") || !doc["landmarks"].is_object()) {
         throw InvalidInput(where + ": expected an object with a \"landmarks\" object");
     }
