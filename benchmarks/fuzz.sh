@@ -39,7 +39,8 @@ seeds() {  # seeds of target $1 into directory $2 (first byte: the format select
       printf 'TPZ\001\000' >"$dir/seed0"
       if [ -x build/apps/tapeline ]; then
         rm -f "$out/seed.sqlite"
-        build/apps/tapeline pattern import data/patterns/*.json --db "$out/seed.sqlite" >/dev/null
+        build/apps/tapeline pattern import $(ls data/patterns/*.json | grep -v _measurements) \
+          --db "$out/seed.sqlite" >/dev/null
         /usr/bin/python3 -c 'import sqlite3, sys
 for i, (b,) in enumerate(sqlite3.connect(sys.argv[1]).execute("SELECT data FROM patterns")):
     open("%s/blob%d" % (sys.argv[2], i), "wb").write(b)' "$out/seed.sqlite" "$dir"

@@ -121,6 +121,12 @@ commands = {
                    "--svg", "{out}/g.svg", "--generations", "0"],
     "grade --from": ["grade", demo, "--from", "{in}", "--to", demo_set, "--out", "{out}/g.json"],
     "measure": ["measure", "{in}", "--out", "{out}/m.json", "--vit", "{out}/m.vit"],
+    "dress (body)": ["dress", "{in}", demo, "--units", "dm", "--out", "{out}/d.obj",
+                     "--report", "{out}/r.json"],
+    "dress (pattern)": ["dress", os.path.join(data, "bodies", "mh_female_average.obj"), "{in}",
+                        "--units", "dm", "--out", "{out}/d.obj"],
+    "fabric show": ["fabric", "show", "{in}"],
+    "fabric convert": ["fabric", "convert", "--kes", "{in}", "--out", "{out}/f.json"],
 }
 
 # Inputs a command may accept: they are hostile to other readers only.
