@@ -174,6 +174,17 @@ TEST(PatternCompression, DamagedBlobsAreInvalidInput) {
     expect_invalid([&] { decompress_pattern(cut, "pattern 'p'"); }, {"pattern 'p'", "damaged"});
     blob[3] = 9;
     expect_invalid([&] { decompress_pattern(blob, "pattern 'p'"); }, {"format 9"});
+
+    // A frame header claiming 2 GiB for one byte of content (found by fuzz_pattern_blob: the
+    // decoder zero-filled the claimed size first): refused before anything is allocated.
+    std::vector<std::uint8_t> bomb = {'T',  'P',  'Z',  pattern_blob_format,
+                                      0x28, 0xB5, 0x2F, 0xFD,  // zstd magic
+                                      0xE0,                    // single segment, 8-byte size
+                                      0,    0,    0,    0x80,
+                                      0,    0,    0,    0,     // 2^31 bytes
+                                      0x09, 0,    0,    'x'};  // last block, raw, 1 byte
+    expect_invalid([&] { decompress_pattern(bomb, "pattern 'p'"); },
+                   {"pattern 'p'", "claims 2147483648 bytes, more than its 17 compressed bytes"});
 }
 
 TEST(PatternDatabase, RoundTripOfEverySharedPattern) {

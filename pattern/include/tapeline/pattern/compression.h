@@ -25,6 +25,7 @@
 #include <zstd.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -330,9 +331,18 @@ inline Pattern decompress_pattern(const void* data, std::size_t size, const std:
                            std::to_string(pattern_blob_format) + ")");
     }
     const unsigned long long raw_size = ZSTD_getFrameContentSize(b + 4, size - 4);
-    if (raw_size == ZSTD_CONTENTSIZE_ERROR || raw_size == ZSTD_CONTENTSIZE_UNKNOWN ||
-        raw_size > (1ull << 31)) {
+    if (raw_size == ZSTD_CONTENTSIZE_ERROR || raw_size == ZSTD_CONTENTSIZE_UNKNOWN) {
         throw InvalidInput(where + ": compressed pattern is damaged (bad zstd frame header)");
+    }
+    // The header's size is a claim: a zstd block of at most 128 KiB takes at least 4 bytes (an
+    // RLE block), so a frame of n bytes holds at most n * 32768; a claim beyond that, or beyond
+    // the largest document read, is refused before anything is allocated for it.
+    const unsigned long long most =
+        std::min<unsigned long long>((size - 4) * 32768ull, 256ull << 20);
+    if (raw_size > most) {
+        throw InvalidInput(where + ": compressed pattern is damaged (its header claims " +
+                           std::to_string(raw_size) + " bytes, more than its " +
+                           std::to_string(size - 4) + " compressed bytes can hold)");
     }
     std::vector<std::uint8_t> raw(raw_size);
     const std::size_t n = ZSTD_decompress(raw.data(), raw.size(), b + 4, size - 4);
