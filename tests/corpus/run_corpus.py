@@ -152,11 +152,11 @@ def limits():
 run_counter = [0]
 
 
-def run(argv, out, time_limit=TIME_LIMIT_S):
+def run(argv, out, time_limit=TIME_LIMIT_S, preexec=limits):
     os.makedirs(out, exist_ok=True)
     try:
         p = subprocess.run([binary] + argv, cwd=out, stdin=subprocess.DEVNULL,
-                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=limits,
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, preexec_fn=preexec,
                            timeout=time_limit)
         return p.returncode, p.stdout.decode(errors="replace"), p.stderr.decode(errors="replace")
     except subprocess.TimeoutExpired:
@@ -171,8 +171,9 @@ def record_failure(name, why):
     results["failures"].append(name + ": " + why)
 
 
-def check_refusal(name, argv, out, pattern=None, allow_success=False, time_limit=TIME_LIMIT_S):
-    rc, stdout, stderr = run(argv, out, time_limit)
+def check_refusal(name, argv, out, pattern=None, allow_success=False, time_limit=TIME_LIMIT_S,
+                  preexec=limits):
+    rc, stdout, stderr = run(argv, out, time_limit, preexec)
     results["runs"] += 1
     left = sorted(os.listdir(out))
     if rc == "timeout":
@@ -398,20 +399,8 @@ for name, argv in [("distances", ["geodesic", "distances", spot, "--source", "0"
                    ("measure", ["measure", os.path.join(data, "bodies", "mh_female_average.obj"),
                                 "--units", "dm", "--out", "{out}/m.json", "--vit",
                                 "{out}/m.vit"])]:
-    out = os.path.join(case_dir, "full_disk_" + name.replace(" ", "_"))
-    os.makedirs(out)
-    argv = [a.replace("{out}", out) for a in argv]
-    p = subprocess.run([binary] + argv, cwd=out, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                       stderr=subprocess.PIPE, preexec_fn=small_disk, timeout=TIME_LIMIT_S)
-    results["runs"] += 1
-    err = p.stderr.decode(errors="replace")
-    lines = [l for l in err.splitlines() if not l.startswith("tapeline: warning: ")]
-    if (p.returncode <= 0 or p.returncode >= 128 or len(lines) != 1 or os.listdir(out)
-            or not re.search(r"write|space|large", lines[0] if lines else "")):
-        record_failure("case full disk (%s)" % name, "exit %d, stderr %r, files %s"
-                       % (p.returncode, err[:300], os.listdir(out)))
-    else:
-        results["refused"] += 1
+    case("full disk (%s)" % name, argv, r"tapeline: error: .*(write|space|large)",
+         preexec=small_disk)
 
 # --- a database another process holds locked: the writer waits, then says so -------------------
 locked_db = os.path.join(case_dir, "locked.sqlite")
