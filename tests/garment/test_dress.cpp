@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <string>
 
 namespace tg = tapeline::garment;
@@ -126,6 +127,85 @@ TEST(Dress, DISABLED_PlacedPiecesDoNotCross) {
     place_on_population([](const char* name, const tg::DressReport& r) {
         EXPECT_EQ(r.placement_piece_intersections, 0u) << name;
     });
+}
+
+// FreeSewing's T-shirt drafts its sleeve once: dressing pairs it with a mirrored copy, splits the
+// sleeve cap between the front and back armholes, and places each sleeve on its own arm (the
+// original on the body's left, +x, where the original halves of the folded front and back go),
+// the cap's front part towards the front of the arm. Placement only; on the bundled body and on
+// a population body.
+TEST(Dress, TShirtSleevesArePairedAndPlacedOnTheirArms) {
+    const std::filesystem::path file = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) /
+                                       "patterns" / "freesewing" / "teagan_cisFemaleAdult36.json";
+    const std::filesystem::path pop = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) / "bodies" /
+                                      "population" / "mh_pop_007.ply";
+    if (!std::filesystem::exists(file)) {
+        GTEST_SKIP() << file << " is absent";
+    }
+    const tp::Pattern tshirt = tp::read_pattern_file(file.string());
+    std::vector<std::string> bodies = {bundled("bodies/mh_female_average.obj")};
+    if (std::filesystem::exists(pop)) {
+        bodies.push_back(pop.string());
+    }
+    for (const std::string& path : bodies) {
+        SCOPED_TRACE(path);
+        const MeasuredBody b = load_body(path);
+        tg::DressOptions o;
+        o.resolution_mm = 25;
+        o.sewing.sew_seconds = 0;  // placement and strings only
+        o.sewing.settle_seconds = 0;
+        o.sewing.max_extra_seconds = 0;
+        const tg::DressResult r = tg::dress(b.body, b.landmarks, tshirt, o);
+        const tg::DressReport& rep = r.report;
+        EXPECT_EQ(rep.placement_vertices_inside, 0u);
+        ASSERT_EQ(rep.pieces.size(), 4u);
+        std::map<std::string, std::pair<std::size_t, std::size_t>> range;  // piece → vertices
+        std::size_t at = 0;
+        for (const tg::PieceReport& p : rep.pieces) {
+            range[p.name] = {at, at + p.vertices};
+            at += p.vertices;
+        }
+        EXPECT_EQ(rep.pieces[2].name, "teagan.sleeve");
+        EXPECT_EQ(rep.pieces[2].region, "sleeve_left");
+        EXPECT_EQ(rep.pieces[3].name, "teagan.sleeve (mirror)");
+        EXPECT_EQ(rep.pieces[3].region, "sleeve_right");
+        // Mean x of each sleeve: on its own side of the body.
+        const auto mean = [&](const std::string& piece, int axis) {
+            double sum = 0;
+            const auto [lo, hi] = range.at(piece);
+            for (std::size_t v = lo; v < hi; ++v) {
+                sum += r.placed[v][axis];
+            }
+            return sum / double(hi - lo);
+        };
+        EXPECT_GT(mean("teagan.sleeve", 0), 100);
+        EXPECT_LT(mean("teagan.sleeve (mirror)", 0), -100);
+        // Each armhole seam and its mirror has pairs; on each sleeve, the cap part sewn to the
+        // front lies in front of the part sewn to the back.
+        std::map<std::string, double> cap_z;
+        std::map<std::string, std::size_t> cap_n;
+        for (std::size_t k = 0; k < r.sewing.pairs.size(); ++k) {
+            const std::string& seam = rep.seams[r.sewing.seam_of_pair[k]].name;
+            for (std::uint32_t v : {r.sewing.pairs[k].a, r.sewing.pairs[k].b}) {
+                for (const char* sleeve : {"teagan.sleeve", "teagan.sleeve (mirror)"}) {
+                    const auto [lo, hi] = range.at(sleeve);
+                    if (v >= lo && v < hi) {
+                        cap_z[seam] += r.placed[v][2];
+                        ++cap_n[seam];
+                    }
+                }
+            }
+        }
+        for (const char* seam : {"armhole (front)", "armhole (back)", "armhole (front) (mirror)",
+                                 "armhole (back) (mirror)", "sleeve", "sleeve (mirror)"}) {
+            EXPECT_GT(cap_n[seam], 0u) << seam;
+        }
+        for (const std::string m : {"", " (mirror)"}) {
+            EXPECT_GT(cap_z["armhole (front)" + m] / cap_n["armhole (front)" + m],
+                      cap_z["armhole (back)" + m] / cap_n["armhole (back)" + m] + 20)
+                << "sleeve" << m;
+        }
+    }
 }
 
 TEST(Dress, Refusals) {

@@ -163,7 +163,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
                                            return left_out(s.a.piece) || left_out(s.b.piece);
                                        }),
                         pattern.seams.end());
-    pattern.bindings.clear();  // they may name pieces left out; dressing does not use them
+    pattern.bindings.clear();    // they may name pieces left out; dressing does not use them
+    split_chain_seams(pattern);  // FreeSewing's sleeve cap against two armholes, ...
     if (pattern.pieces.empty()) {
         throw InvalidInput(where + " has no pieces left to dress");
     }
@@ -212,7 +213,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     std::vector<PieceLayout> layouts;
     for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
         layouts.push_back(piece_layout(pattern.pieces[i], pm.pieces[i], regions[i], top_y,
-                                       shape.waist_y + o.placement.gap_mm, gc_shift));
+                                       shape.waist_y + o.placement.gap_mm, gc_shift,
+                                       sleeve_front_sign(pattern, i, regions)));
     }
     std::vector<std::vector<Vec3>> xyz;
     wrap_pieces(shape, layouts, pm, o.placement, xyz);

@@ -275,11 +275,57 @@ struct PieceLayout {
     ///@{
     std::vector<double> s, h;
     ///@}
+    /// A whole sleeve (FreeSewing): s = 0 goes on top of the arm, s > 0 towards the front, and
+    /// its two side edges meet under the arm.
+    bool whole_sleeve = false;
 };
+
+/// For a FreeSewing sleeve (no 3D placement) of `p` at `index`: +1 when the edges sewn to the
+/// front torso pieces lie at larger x than the piece's centre, −1 when at smaller x; 1 for other
+/// pieces or when no seam tells.
+inline double sleeve_front_sign(const pattern::Pattern& p, std::size_t index,
+                                const std::vector<Region>& regions) {
+    const pattern::Piece& piece = p.pieces[index];
+    if (piece.placement ||
+        (regions[index] != Region::sleeve_left && regions[index] != Region::sleeve_right)) {
+        return 1;
+    }
+    double xmin = 1e300, xmax = -1e300;
+    for (const pattern::Edge& e : piece.outline.edges) {
+        xmin = std::min(xmin, pattern::start_point(e).x);
+        xmax = std::max(xmax, pattern::start_point(e).x);
+    }
+    const double xc = 0.5 * (xmin + xmax);
+    double lean = 0;
+    for (const pattern::Seam& seam : p.seams) {
+        for (int side = 0; side < 2; ++side) {
+            const pattern::EdgeRange& mine = side == 0 ? seam.a : seam.b;
+            const pattern::EdgeRange& other = side == 0 ? seam.b : seam.a;
+            if (mine.piece != piece.name) {
+                continue;
+            }
+            Region r = Region::torso_front;
+            for (std::size_t j = 0; j < p.pieces.size(); ++j) {
+                if (p.pieces[j].name == other.piece) {
+                    r = regions[j];
+                }
+            }
+            const double w = r == Region::torso_front ? 1 : r == Region::torso_back ? -1 : 0;
+            const std::size_t n = piece.outline.edges.size();
+            for (std::size_t k = 0; k < mine.count; ++k) {
+                const auto& e = piece.outline.edges[(mine.first_edge + k) % n];
+                lean += w * (pattern::start_point(e).x + pattern::end_point(e).x - 2 * xc);
+            }
+        }
+    }
+    return lean < 0 ? -1 : 1;
+}
 
 /// The region of a piece, or nullopt with `why` set. GarmentCode panels: "sleeve" → sleeve (side
 /// by the panel's placement x), "skirt" → skirt, "torso" → torso (front or back by placement z).
-/// FreeSewing pieces: "front*" → torso front, "back" and "yoke" → torso back.
+/// FreeSewing pieces: "front*" → torso front, "back" and "yoke" → torso back, "sleeve" → the
+/// left sleeve, its mirrored copy (unfold.h) → the right one: the copy is sewn to the mirror
+/// halves of the front and back, which lie on the body's right (piece_layout).
 inline std::optional<Region> piece_region(const pattern::Piece& piece, std::string& why) {
     using internal::contains;
     const std::string& n = piece.name;
@@ -308,6 +354,12 @@ inline std::optional<Region> piece_region(const pattern::Piece& piece, std::stri
     if (base == "back" || base == "yoke") {
         return Region::torso_back;
     }
+    if (base == "sleeve") {
+        return Region::sleeve_left;
+    }
+    if (base == "sleeve (mirror)") {
+        return Region::sleeve_right;
+    }
     why =
         "the design table gives no region for it (bindings, cuffs, collars and trouser legs "
         "are not placed yet)";
@@ -318,7 +370,8 @@ inline std::optional<Region> piece_region(const pattern::Piece& piece, std::stri
 /// height the top of the garment goes to; `gc_shift` the vertical offset from GarmentCode's
 /// placement to the body (GarmentCode pieces keep their relative heights).
 inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::PieceMesh& mesh,
-                                Region region, double top_y, double waist_y, double gc_shift) {
+                                Region region, double top_y, double waist_y, double gc_shift,
+                                double sleeve_front = 1) {
     PieceLayout out;
     out.region = region;
     const std::size_t n = mesh.uv.size();
@@ -361,6 +414,16 @@ inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::Piec
         xmin = std::min(xmin, q.x);
         xmax = std::max(xmax, q.x);
         ymax = std::max(ymax, q.y);
+    }
+    if (sleeve) {
+        // A whole FreeSewing sleeve, cap up: across its x axis around the arm (centre on top, the
+        // front edges towards the front), down its y axis along the arm from the top of the cap.
+        out.whole_sleeve = true;
+        for (std::size_t v = 0; v < n; ++v) {
+            out.s[v] = sleeve_front * (mesh.uv[v].x - 0.5 * (xmin + xmax));
+            out.h[v] = ymax - mesh.uv[v].y;
+        }
+        return out;
     }
     const double xc =
         piece.fold ? 0.5 * (piece.fold->line.a.x + piece.fold->line.b.x) : 0.5 * (xmin + xmax);
@@ -566,7 +629,9 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
             }();
             xyz[i].resize(l.s.size());
             for (std::size_t v = 0; v < l.s.size(); ++v) {
-                const double theta = (front_half ? 1 : -1) * (smax - l.s[v]) / radius;
+                const double theta = l.whole_sleeve
+                                         ? l.s[v] / radius
+                                         : (front_half ? 1 : -1) * (smax - l.s[v]) / radius;
                 const double along = start + l.h[v] - hmin_s;
                 const Vec3 c = add(a0, scale(d, along));
                 xyz[i][v] = add(c, add(scale(n_up, radius * std::cos(theta)),
