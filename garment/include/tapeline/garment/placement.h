@@ -10,7 +10,7 @@
 //    piece's centre line on the body's centre front (back) line and its width laid out in arc
 //    length along the section;
 //  - sleeves around a circular cylinder along the arm's axis (acromion to wrist), the sleeve cap
-//    at the shoulder.
+//    as near the shoulder as it keeps clear of the body pieces.
 // Heights come from the body's landmarks: the top of the upper-body pieces at the side-neck
 // height, skirts hang from the waist. Where front and back would overlap, the section is offset
 // further so that its perimeter holds both. The result is checked by the caller (dress.h): no
@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -532,7 +533,41 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
             }
         }
     }
-    // --- sleeves: a cylinder per arm
+    // --- sleeves: a cylinder per arm. The body pieces' vertices in a hash grid, for the
+    // clearance of the sleeves from them.
+    const double clear_mm = 2 * o.layer_gap_mm;
+    std::map<std::array<long, 3>, std::vector<Vec3>> torso_grid;
+    const auto cell_of = [&](const Vec3& p) {
+        return std::array<long, 3>{long(std::floor(p[0] / clear_mm)),
+                                   long(std::floor(p[1] / clear_mm)),
+                                   long(std::floor(p[2] / clear_mm))};
+    };
+    for (std::size_t i = 0; i < layouts.size(); ++i) {
+        if (layouts[i].region != Region::sleeve_left && layouts[i].region != Region::sleeve_right) {
+            for (const Vec3& p : xyz[i]) {
+                torso_grid[cell_of(p)].push_back(p);
+            }
+        }
+    }
+    const auto near_torso = [&](const Vec3& p) {
+        const auto c = cell_of(p);
+        for (long dx = -1; dx <= 1; ++dx) {
+            for (long dy = -1; dy <= 1; ++dy) {
+                for (long dz = -1; dz <= 1; ++dz) {
+                    const auto it = torso_grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+                    if (it == torso_grid.end()) {
+                        continue;
+                    }
+                    for (const Vec3& q : it->second) {
+                        if (norm(sub(p, q)) < clear_mm) {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        return false;
+    };
     for (int side = 0; side < 2; ++side) {
         const Region reg = side == 0 ? Region::sleeve_left : Region::sleeve_right;
         const Vec3 a0 = body.shoulder[side];
@@ -581,10 +616,53 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
         if (n_front[2] < 0) {
             n_front = scale(n_front, -1);
         }
-        // The sleeve starts where its cylinder has left the trunk's prism (with a layer gap),
-        // so that sleeves and body pieces do not cross before they are sewn.
+        // Where a sleeve vertex goes when the top of the sleeve is `start` down the arm.
+        const auto sleeve_point = [&](const PieceLayout& l, bool front_half, std::size_t v,
+                                      double start) {
+            const double theta =
+                l.whole_sleeve ? l.s[v] / radius : (front_half ? 1 : -1) * (smax - l.s[v]) / radius;
+            const Vec3 c = add(a0, scale(d, start + l.h[v] - hmin_s));
+            return add(c, add(scale(n_up, radius * std::cos(theta)),
+                              scale(n_front, radius * std::sin(theta))));
+        };
+        std::vector<std::size_t> sleeves;
+        std::vector<bool> front_halves;
+        for (std::size_t i = 0; i < layouts.size(); ++i) {
+            if (layouts[i].region != reg) {
+                continue;
+            }
+            sleeves.push_back(i);
+            // GarmentCode halves: the one placed in front goes over the front of the arm.
+            front_halves.push_back(mesh.pieces[i].xyz.empty() ? true : [&] {
+                double z = 0;
+                for (const auto& p : mesh.pieces[i].xyz) {
+                    z += p[2];
+                }
+                return z >= 0;
+            }());
+        }
+        // The sleeve starts as near the shoulder as it keeps clear of the body pieces already
+        // placed (twice the layer gap from every vertex of theirs: the armhole leaves room for the
+        // cap), so that sleeves and body pieces do not cross before they are sewn; failing that,
+        // where its cylinder has left the trunk's prism.
+        const double arm_length = norm(sub(body.wrist[side], a0));
         double start = 0;
-        if (have_prism) {
+        bool placed = !have_prism || torso_grid.empty();
+        for (; !placed && start < arm_length; start += 5) {
+            bool clear = true;
+            for (std::size_t k = 0; k < sleeves.size() && clear; ++k) {
+                const PieceLayout& l = layouts[sleeves[k]];
+                for (std::size_t v = 0; v < l.s.size() && clear; ++v) {
+                    clear = !near_torso(sleeve_point(l, front_halves[k], v, start));
+                }
+            }
+            placed = clear;
+            if (placed) {
+                break;
+            }
+        }
+        if (!placed) {
+            start = 0;
             const auto inside_prism = [&](const Vec3& p) {
                 if (p[1] > hmax + o.layer_gap_mm || p[1] < hmin - o.layer_gap_mm) {
                     return false;
@@ -599,7 +677,6 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
                 }
                 return true;
             };
-            const double arm_length = norm(sub(body.wrist[side], a0));
             for (; start < arm_length; start += 5) {
                 bool clear = true;
                 for (int k = 0; k < 24 && clear; ++k) {
@@ -614,28 +691,11 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
                 }
             }
         }
-        for (std::size_t i = 0; i < layouts.size(); ++i) {
-            const PieceLayout& l = layouts[i];
-            if (l.region != reg) {
-                continue;
-            }
-            // GarmentCode halves: the one placed in front goes over the front of the arm.
-            const bool front_half = mesh.pieces[i].xyz.empty() ? true : [&] {
-                double z = 0;
-                for (const auto& p : mesh.pieces[i].xyz) {
-                    z += p[2];
-                }
-                return z >= 0;
-            }();
-            xyz[i].resize(l.s.size());
+        for (std::size_t k = 0; k < sleeves.size(); ++k) {
+            const PieceLayout& l = layouts[sleeves[k]];
+            xyz[sleeves[k]].resize(l.s.size());
             for (std::size_t v = 0; v < l.s.size(); ++v) {
-                const double theta = l.whole_sleeve
-                                         ? l.s[v] / radius
-                                         : (front_half ? 1 : -1) * (smax - l.s[v]) / radius;
-                const double along = start + l.h[v] - hmin_s;
-                const Vec3 c = add(a0, scale(d, along));
-                xyz[i][v] = add(c, add(scale(n_up, radius * std::cos(theta)),
-                                       scale(n_front, radius * std::sin(theta))));
+                xyz[sleeves[k]][v] = sleeve_point(l, front_halves[k], v, start);
             }
         }
     }
