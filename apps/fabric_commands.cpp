@@ -8,6 +8,7 @@
 
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/core/json_read.h>
 #include <tapeline/draw/png.h>
 #include <tapeline/garment/fabric.h>
 #include <tapeline/garment/fabric_lab.h>
@@ -29,21 +30,6 @@ namespace tapeline::app {
 namespace {
 
 namespace tg = tapeline::garment;
-
-nlohmann::json read_json_file(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) {
-        throw InvalidInput(path + ": cannot read the file");
-    }
-    nlohmann::json j;
-    try {
-        in >> j;
-    } catch (const std::exception& e) {
-        std::string what = e.what();
-        throw InvalidInput(path + ": not valid JSON (" + what + ")");
-    }
-    return j;
-}
 
 std::string fmt(const char* f, double v) {
     char buf[64];
@@ -76,7 +62,7 @@ void run_convert(const ConvertArgs& a) {
     }
     OutputFiles outputs({a.out});
     const std::string& in = a.kes.empty() ? a.fast : a.kes;
-    const nlohmann::json j = read_json_file(in);
+    const nlohmann::json j = tapeline::json::parse_json_file(in);
     tg::Fabric f = a.kes.empty() ? tg::fabric_from_fast(j, in) : tg::fabric_from_kes(j, in);
     if (!a.name.empty()) {
         f.params.name = a.name;

@@ -1032,8 +1032,13 @@ expect_fail "fabric convert: missing keys" "missing.json: missing FAST key\(s\):
   "$bin" fabric convert --fast missing.json --out o.json
 expect_fail "fabric convert: negative value" "\"C_warp\" must be a positive finite number, got -3" \
   "$bin" fabric convert --fast negative.json --out o.json
-expect_fail "fabric convert: bad JSON" "broken.json: not valid JSON" \
+expect_fail "fabric convert: bad JSON" "broken.json: malformed JSON at byte" \
   "$bin" fabric convert --kes broken.json --out o.json
+$py -c 'open("deep.json", "w").write("{\"W\": " + "[" * 300000 + "]" * 300000 + "}")'
+expect_fail "fabric convert: JSON nested too deep" "deep.json: JSON nested deeper than 256 levels" \
+  "$bin" fabric convert --kes deep.json --out o.json
+expect_fail "fabric show: JSON nested too deep" "deep.json: JSON nested deeper than 256 levels" \
+  "$bin" fabric show deep.json
 expect_fail "fabric convert: a FAST record as KES" "fast.json: unknown KES key\(s\): C_warp, C_weft" \
   "$bin" fabric convert --kes fast.json --out o.json
 expect_fail "fabric convert: both records" "exactly one of --kes and --fast" \

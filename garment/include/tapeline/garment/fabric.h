@@ -7,12 +7,12 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/json_read.h>
 #include <tapeline/garment/drape_types.h>
 #include <tapeline/garment/fabric_lab.h>
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -47,17 +47,7 @@ inline Fabric fabric_record_from(const std::string& name_or_file) {
         throw InvalidInput("--fabric: unknown fabric '" + name_or_file + "' (known: " + known +
                            "; or a .json fabric file)");
     }
-    std::ifstream in(name_or_file);
-    if (!in) {
-        throw InvalidInput(name_or_file + ": cannot read the fabric file");
-    }
-    nlohmann::json j;
-    try {
-        in >> j;
-    } catch (const std::exception& e) {
-        throw InvalidInput(name_or_file + ": not valid JSON (" + e.what() + ")");
-    }
-    return fabric_from_json(j, name_or_file);
+    return fabric_from_json(tapeline::json::parse_json_file(name_or_file), name_or_file);
 }
 
 /// The solver parameters of fabric_record_from(name_or_file).
