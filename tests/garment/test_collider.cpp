@@ -3,6 +3,8 @@
 #include <tapeline/garment/collider.h>
 
 #include <CGAL/Surface_mesh.h>
+#include <tapeline_test/expect.h>
+
 #include <gtest/gtest.h>
 #include <tapeline_test/garment_shapes.h>
 
@@ -11,6 +13,8 @@
 #include <string>
 
 namespace {
+
+using tapeline_test::message_of;
 
 using tapeline::garment::ColliderOptions;
 using tapeline::garment::SignedDistanceGrid;
@@ -28,16 +32,6 @@ Vec3 random_direction(std::mt19937& rng) {
     Vec3 v{n(rng), n(rng), n(rng)};
     const double len = norm(v);
     return {v[0] / len, v[1] / len, v[2] / len};
-}
-
-template <typename F>
-std::string message_of(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "(no exception)";
 }
 
 // Tolerances: the mesh lies within its sagitta H of the analytic surface, so the exact mesh

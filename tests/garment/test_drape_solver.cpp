@@ -4,6 +4,8 @@
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/drape_solver.h>
 
+#include <tapeline_test/expect.h>
+
 #include <gtest/gtest.h>
 #include <tapeline_test/garment_shapes.h>
 
@@ -12,6 +14,8 @@
 #include <vector>
 
 namespace {
+
+using tapeline_test::message_of;
 
 using tapeline::garment::Attachment;
 using tapeline::garment::ClothModel;
@@ -25,16 +29,6 @@ using tapeline::garment::Stitch;
 using tapeline::garment::Vec3;
 using tapeline_test::cloth_grid;
 using tapeline_test::grid_vertex;
-
-template <typename F>
-std::string message_of(F&& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
 
 double distance(const Vec3& a, const Vec3& b) {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +

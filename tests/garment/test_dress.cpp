@@ -6,6 +6,8 @@
 #include <tapeline/pattern/io_detect.h>
 #include <tapeline_test/measured_body.h>
 
+#include <tapeline_test/expect.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,6 +22,8 @@ namespace tp = tapeline::pattern;
 
 namespace {
 
+using tapeline_test::message_of;
+
 using tapeline_test::measurement::MeasuredBody;
 
 MeasuredBody load_body(const std::string& path) {
@@ -31,15 +35,6 @@ MeasuredBody load_body(const std::string& path) {
 
 std::string bundled(const std::string& rel) {
     return std::string(TAPELINE_DATA_DIR) + "/" + rel;
-}
-
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const std::exception& e) {
-        return e.what();
-    }
-    return "";
 }
 
 }  // namespace

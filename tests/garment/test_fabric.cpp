@@ -5,32 +5,26 @@
 #include <tapeline/garment/fabric.h>
 #include <tapeline/garment/fabric_lab.h>
 
+#include <tapeline_test/expect.h>
+
 #include <gtest/gtest.h>
 #include <tapeline_test/garment_shapes.h>
 
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace {
 
+using tapeline_test::message_of;
+
 namespace tg = tapeline::garment;
 using tg::ClothModel;
 using tg::UV;
 using tg::Vec3;
 constexpr double kPi = 3.14159265358979323846;
-
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const tapeline::InvalidInput& e) {
-        return e.what();
-    }
-    return "(no InvalidInput)";
-}
 
 // Units: 1 gf = 9.80665e-3 N (standard gravity), so 1 gf·cm²/cm = 9.80665e-3·1e-4/1e-2 N·m and
 // 1 gf/(cm·deg) = 0.980665 N/m per (π/180 rad).
@@ -114,38 +108,42 @@ TEST(GarmentFabricLab, KesRecord) {
 TEST(GarmentFabricLab, RefusalsNameTheKeys) {
     auto fast = fast_record();
     fast["E50_warp"] = 1;
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
                   tg::fabric_from_fast(fast, "f.json");
               }).find("f.json: unknown FAST key(s): E50_warp"),
               std::string::npos);
     fast = fast_record();
     fast.erase("C_weft");
     fast.erase("EB5");
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
                   tg::fabric_from_fast(fast, "f.json");
               }).find("f.json: missing FAST key(s): C_weft, EB5"),
               std::string::npos);
     fast = fast_record();
     fast["C_warp"] = -3;
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
                   tg::fabric_from_fast(fast, "f.json");
               }).find("\"C_warp\" must be a positive finite number, got -3"),
               std::string::npos);
     fast = fast_record();
     fast["E20_warp"] = 0.5;
-    EXPECT_NE(message_of([&] { tg::fabric_from_fast(fast, "f.json"); }).find("E5_warp < E20_warp"),
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
+                  tg::fabric_from_fast(fast, "f.json");
+              }).find("E5_warp < E20_warp"),
               std::string::npos);
     auto kes = kes_record();
     kes.erase("2HG5_weft");
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
                   tg::fabric_from_kes(kes, "k.json");
               }).find("k.json: missing KES key(s): 2HG5_weft"),
               std::string::npos);
     kes = kes_record();
     kes["WT_warp"] = 20;
-    EXPECT_NE(message_of([&] { tg::fabric_from_kes(kes, "k.json"); }).find("WT_warp"),
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
+                  tg::fabric_from_kes(kes, "k.json");
+              }).find("WT_warp"),
               std::string::npos);
-    EXPECT_NE(message_of([&] {
+    EXPECT_NE(message_of<tapeline::InvalidInput>([&] {
                   tg::fabric_from_json({{"bending_un_m", "soft"}}, "x.json");
               }).find("x.json: \"bending_un_m\" must be a non-negative"),
               std::string::npos);

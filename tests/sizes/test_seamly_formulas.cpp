@@ -4,33 +4,27 @@
 // scale applied once, to the result).
 #include <tapeline/core/errors.h>
 #include <tapeline/sizes/seamly.h>
+#include <tapeline_test/expect.h>
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <functional>
 #include <string>
 
 using namespace tapeline::sizes;
 
 namespace {
 
+using tapeline_test::message_of;
+
 std::string vit(const std::string& unit, const std::string& body) {
     return "<?xml version=\"1.0\"?>\n<vit>\n<unit>" + unit + "</unit>\n<body-measurements>\n" +
            body + "</body-measurements>\n</vit>\n";
 }
 
-std::string message_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const tapeline::InvalidInput& e) {
-        return e.what();
-    }
-    return "(no InvalidInput)";
-}
-
 void expect_refused(const std::string& body, std::initializer_list<std::string> parts) {
-    const std::string msg = message_of([&] { parse_seamly_individual(vit("mm", body), "f.vit"); });
+    const std::string msg = message_of<tapeline::InvalidInput>(
+        [&] { parse_seamly_individual(vit("mm", body), "f.vit"); });
     EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
     for (const std::string& p : parts) {
         EXPECT_NE(msg.find(p), std::string::npos) << "'" << p << "' missing from: " << msg;
@@ -107,14 +101,14 @@ TEST(SeamlyFormulas, WhatCannotBeEvaluatedIsRefusedInOneLine) {
         chain += "<m name=\"m" + std::to_string(i) + "\" value=\"m" + std::to_string(i - 1) +
                  " + 1\"/>\n";
     }
-    const std::string msg = message_of([&] {
+    const std::string msg = message_of<tapeline::InvalidInput>([&] {
         parse_seamly_individual(vit("mm", "<m name=\"top\" value=\"m1500\"/>\n" + chain), "f.vit");
     });
     EXPECT_NE(msg.find("more than 1000 deep"), std::string::npos) << msg;
 }
 
 TEST(SeamlyFormulas, ValentinaFiveMultisizeTablesAreRefusedByName) {
-    const std::string msg = message_of([] {
+    const std::string msg = message_of<tapeline::InvalidInput>([] {
         parse_seamly_multisize(
             "<vst>\n<unit>cm</unit>\n<dimensions>\n<dimension type=\"x\"/>\n"
             "</dimensions>\n<body-measurements/>\n</vst>",

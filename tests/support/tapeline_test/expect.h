@@ -13,6 +13,18 @@ inline bool contains(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
+/// The message of the E that `call` throws, "(no exception)" when it throws none (another
+/// exception type propagates).
+template <class E = std::exception, class Call>
+std::string message_of(Call&& call) {
+    try {
+        call();
+    } catch (const E& e) {
+        return e.what();
+    }
+    return "(no exception)";
+}
+
 /// Runs `call` and checks that it throws E with every one of `parts` in its message.
 template <class E, class Call>
 void expect_error(Call call, const std::vector<std::string>& parts, const std::string& context) {
