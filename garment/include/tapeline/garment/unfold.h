@@ -129,16 +129,6 @@ inline void split_outline_edge(pattern::Pattern& p, std::size_t pi, std::size_t 
     p.bindings.clear();  // their edge lists refer to the outline before the split
 }
 
-/// Outline vertex index of `piece` at `q` (within 0.01 mm), or the edge count when none is.
-inline std::size_t vertex_at(const pattern::Piece& piece, const pattern::Point2& q) {
-    for (std::size_t k = 0; k < piece.outline.edges.size(); ++k) {
-        if (tapeline::distance(pattern::start_point(piece.outline.edges[k]), q) <= 0.01) {
-            return k;
-        }
-    }
-    return piece.outline.edges.size();
-}
-
 /// The mirror image of `piece` about the line x = 0, named "NAME (mirror)": outline edge i becomes
 /// edge n − 1 − i, traversed the other way, so that the outline keeps its orientation.
 inline pattern::Piece mirrored_copy(const pattern::Piece& piece) {
@@ -224,7 +214,7 @@ inline std::size_t split_chain_seams(pattern::Pattern& p,
         };
         bool present = false;
         for (const pattern::Seam& s : p.seams) {
-            present = present || s.name.rfind(rule.name, 0) == 0;
+            present = present || s.name == rule.name || s.name.rfind(rule.name + " (", 0) == 0;
         }
         const std::vector<pattern::SeamSpec> spec = pattern::named_seams(p, {rule});
         if (spec.empty() || present) {
