@@ -1,10 +1,13 @@
-// `tapeline mesh generate` and `tapeline mesh check`.
+// `tapeline mesh generate`, `check`, `remesh` and `simplify`.
 #include "app_types.h"
 #include "commands.h"
 #include "output.h"
 
+#include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/core/internal/text_scan.h>
 #include <tapeline/core/mesh_writers.h>
+#include <tapeline/core/remesh.h>
 #include <tapeline/surfaces/analytic_geodesics.h>
 
 #include <CLI/CLI.hpp>
@@ -67,6 +70,45 @@ void run_check(const std::string& path, bool strict) {
     }
 }
 
+struct RemeshArgs {
+    std::string in, out;
+    double edge = 0;
+    unsigned iterations = 3;
+    std::size_t vertices = 0;
+};
+
+/// Refuses an output that write_mesh cannot write before the (long) re-meshing starts.
+void check_mesh_output(const std::string& path) {
+    const std::string ext = internal::lower_extension(path);
+    if (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") {
+        throw InvalidInput(path + ": unknown mesh format '" + ext +
+                           "' for writing (expected .off, .obj, .ply or .stl)");
+    }
+    check_output_path(path);
+}
+
+void report_remesh(const std::string& out, const RemeshReport& r) {
+    std::cout << "wrote " << out << ": " << r.vertices_after << " vertices, " << r.faces_after
+              << " faces (from " << r.vertices_before << " vertices, " << r.faces_before
+              << " faces)\n";
+}
+
+void run_remesh(const RemeshArgs& a) {
+    check_mesh_output(a.out);
+    InputMesh input = load_input_mesh_file(a.in, false);
+    const RemeshReport r = remesh_isotropic(input.loaded.mesh, a.edge, a.iterations, a.in);
+    write_mesh(a.out, input.loaded.mesh);
+    report_remesh(a.out, r);
+}
+
+void run_simplify(const RemeshArgs& a) {
+    check_mesh_output(a.out);
+    InputMesh input = load_input_mesh_file(a.in, false);
+    const RemeshReport r = simplify_to_vertices(input.loaded.mesh, a.vertices, a.in);
+    write_mesh(a.out, input.loaded.mesh);
+    report_remesh(a.out, r);
+}
+
 }  // namespace
 
 void register_mesh_commands(CLI::App& app) {
@@ -96,6 +138,30 @@ void register_mesh_commands(CLI::App& app) {
     check->add_flag("--strict", *check_strict,
                     "Reject polygons, duplicates and non-manifold elements instead of repairing");
     check->callback([check_path, check_strict] { run_check(*check_path, *check_strict); });
+
+    auto rem = std::make_shared<RemeshArgs>();
+    CLI::App* remesh = mesh->add_subcommand(
+        "remesh",
+        "Re-mesh a surface to near-equilateral triangles of a target edge length (CGAL isotropic "
+        "remeshing; borders kept)");
+    remesh->add_option("mesh", rem->in, "Mesh file (OFF, OBJ, PLY, STL)")->required();
+    remesh
+        ->add_option("--edge", rem->edge,
+                     "Target edge length in the mesh's unit (0.05 is 5 mm on a decimetre body)")
+        ->required();
+    remesh->add_option("--iterations", rem->iterations, "Remeshing rounds")->capture_default_str();
+    remesh->add_option("--out,-o", rem->out, "Output mesh (.off, .obj, .ply, .stl)")->required();
+    remesh->callback([rem] { run_remesh(*rem); });
+
+    auto sim = std::make_shared<RemeshArgs>();
+    CLI::App* simplify = mesh->add_subcommand(
+        "simplify",
+        "Decimate a triangle mesh to about N vertices (CGAL edge collapse, Garland-Heckbert "
+        "quadrics)");
+    simplify->add_option("mesh", sim->in, "Mesh file (OFF, OBJ, PLY, STL)")->required();
+    simplify->add_option("--vertices", sim->vertices, "Target vertex count")->required();
+    simplify->add_option("--out,-o", sim->out, "Output mesh (.off, .obj, .ply, .stl)")->required();
+    simplify->callback([sim] { run_simplify(*sim); });
 }
 
 }  // namespace tapeline::app

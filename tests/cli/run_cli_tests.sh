@@ -54,7 +54,7 @@ make_spot_exact() {
 
 # --- help ---------------------------------------------------------------------------------------
 if in_section help; then
-for sub in "" "mesh generate" "mesh check" "geodesic distances" "geodesic path" "bench geodesic" \
+for sub in "" "mesh generate" "mesh check" "mesh remesh" "mesh simplify" "geodesic distances" "geodesic path" "bench geodesic" \
            "measure"; do
   # shellcheck disable=SC2086
   if "$bin" $sub --help >help.txt 2>&1 && grep -q "Usage" help.txt; then ok "help: tapeline $sub"
@@ -1093,6 +1093,82 @@ r = json.load(open("placed.json"))
 assert r["fabric"]["name"] == "wool", r["fabric"]
 assert abs(r["fabric"]["bending_un_m"] - 168 * 15**3 * 9.81e-6) < 1e-9
 PY
+fi
+
+# --- mesh remesh / simplify ---------------------------------------------------------------------
+if in_section remesh; then
+expect_ok "generate icosphere:4" "$bin" mesh generate icosphere:4 --out ico4.off
+expect_ok "remesh to 0.1 edges" "$bin" mesh remesh ico4.off --edge 0.1 --out r.off
+expect_ok "simplify to 200 vertices" "$bin" mesh simplify ico4.off --vertices 200 --out s.ply
+# Truth: the input is inscribed in the unit sphere and the remeshing projects onto it, so every
+# vertex lies between the inscribed mesh's inradius and 1; a closed genus-0 triangle mesh has
+# F = 2V - 4; CGAL splits edges longer than 4/3 of the target and collapses those shorter than 4/5
+# of it, so every edge is below 0.1333 and the mean lies a little under the target (0.077 here):
+# an equilateral triangle of side 0.077 has area sqrt(3)/4 * 0.077^2, and the sphere about 4 pi /
+# that = 4,900 faces.
+$py - <<'PY' && ok "remesh: on the sphere, closed, edges near 0.1" || fail "remesh output"
+import math, struct
+def off(path):
+    t = open(path).read().split()
+    assert t[0] == "OFF"
+    nv, nf = int(t[1]), int(t[2])
+    v = [tuple(map(float, t[4 + 3 * i: 7 + 3 * i])) for i in range(nv)]
+    k, f = 4 + 3 * nv, []
+    for _ in range(nf):
+        n = int(t[k]); f.append(tuple(map(int, t[k + 1:k + 1 + n]))); k += 1 + n
+    return v, f
+v, f = off("r.off")
+r = [math.sqrt(x * x + y * y + z * z) for x, y, z in v]
+assert 0.98 < min(r) and max(r) < 1 + 1e-9, (min(r), max(r))
+assert len(f) == 2 * len(v) - 4, (len(v), len(f))
+assert 3000 < len(f) < 7000, len(f)
+e = [math.dist(v[a], v[b]) for t in f for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))]
+mean = sum(e) / len(e)
+assert 0.07 < mean < 0.1 and max(e) < 0.4 / 3 and min(e) > 0.04, (mean, min(e), max(e))
+PY
+$py - <<'PY' && ok "simplify: 200 vertices, closed" || fail "simplify output"
+import struct
+data = open("s.ply", "rb").read()
+head, body = data.split(b"end_header\n", 1)
+nv = nf = None
+for line in head.decode().splitlines():
+    if line.startswith("element vertex"): nv = int(line.split()[2])
+    if line.startswith("element face"): nf = int(line.split()[2])
+assert abs(nv - 200) <= 5, nv
+assert nf == 2 * nv - 4, (nv, nf)
+PY
+# An open mesh keeps its hole where it was: the cap above z = 0.9 cut out of the sphere stays out
+# (every vertex below 0.9) and `mesh check` still finds one boundary loop.
+$py - <<'PY'
+t = open("ico4.off").read().split()
+nv, nf = int(t[1]), int(t[2])
+v = [tuple(map(float, t[4 + 3 * i: 7 + 3 * i])) for i in range(nv)]
+k, keep = 4 + 3 * nv, []
+for _ in range(nf):
+    n = int(t[k]); f = t[k + 1:k + 1 + n]; k += 1 + n
+    if all(v[int(i)][2] < 0.9 for i in f):
+        keep.append(f)
+with open("open.off", "w") as o:
+    o.write("OFF\n%d %d 0\n" % (nv, len(keep)))
+    o.writelines("%r %r %r\n" % p for p in v)
+    o.writelines("3 %s\n" % " ".join(f) for f in keep)
+PY
+expect_ok "remesh an open mesh" "$bin" mesh remesh open.off --edge 0.1 --out open_r.off
+expect_ok "check the re-meshed open mesh" "$bin" mesh check open_r.off
+if grep -q "1 boundary loop" out.txt && $py -c "
+t = open('open_r.off').read().split(); n = int(t[1])
+assert max(float(t[6 + 3 * i]) for i in range(n)) < 0.9"; then ok "remesh kept the hole"
+else fail "remesh of an open mesh: $(head -c 300 out.txt)"; fi
+expect_fail "remesh: zero edge" "edge length must be a positive number" "$bin" mesh remesh ico4.off --edge 0 --out x.off
+expect_fail "remesh: negative edge" "edge length must be a positive number" "$bin" mesh remesh ico4.off --edge -0.1 --out x.off
+expect_fail "remesh: an edge for the wrong unit" "would give about .* faces, more than 20 million" "$bin" mesh remesh ico4.off --edge 0.0001 --out x.off
+expect_fail "remesh: zero iterations" "at least one iteration" "$bin" mesh remesh ico4.off --edge 0.1 --iterations 0 --out x.off
+expect_fail "remesh: unknown output format" "x.abc.*unknown mesh format" "$bin" mesh remesh ico4.off --edge 0.1 --out x.abc
+expect_fail "remesh: missing input" "nothere.off" "$bin" mesh remesh nothere.off --edge 0.1 --out x.off
+expect_fail "simplify: too few vertices" "cannot simplify 2562 vertices to 3" "$bin" mesh simplify ico4.off --vertices 3 --out x.off
+expect_fail "simplify: not fewer vertices" "cannot simplify 2562 vertices to 2562" "$bin" mesh simplify ico4.off --vertices 2562 --out x.off
+expect_fail "simplify: missing directory" "nodir.*does not exist" "$bin" mesh simplify ico4.off --vertices 100 --out nodir/x.off
+if ls x.* nodir >/dev/null 2>&1; then fail "a refused remesh or simplify wrote: $(ls x.* nodir 2>/dev/null)"; else ok "refused remesh and simplify wrote nothing"; fi
 fi
 
 if [ $sections_run -eq 0 ]; then fail "no section named '$section'"; fi
