@@ -44,24 +44,6 @@ Soup soup_of(const std::string& file) {
     return canonical_soup(kDir + file, o);
 }
 
-// ISO 20685-1: 9 mm for the large torso girths and the thigh, 4 mm for the other girths and the
-// heights, 5 mm for lengths along the skin.
-double tolerance(const Measurement& m) {
-    if (m.kind == MeasurementKind::length) {
-        return 5;
-    }
-    if (m.kind != MeasurementKind::girth) {
-        return 4;
-    }
-    for (const char* large : {"bust_girth", "underbust_girth", "high_bust_girth", "waist_girth",
-                              "high_hip_girth", "hip_girth", "thigh_girth", "mid_thigh_girth"}) {
-        if (m.name.rfind(large, 0) == 0) {
-            return 9;
-        }
-    }
-    return 4;
-}
-
 // The hole sets: where the faces are cut out, from the closed body.
 struct HoleSet {
     std::string name;
@@ -129,8 +111,8 @@ Figures compare(const Result& closed, const Result& holed, const HoleSet& set,
             continue;
         }
         const double d = v->value - m.value;
-        EXPECT_LE(std::abs(d),
-                  tolerance(m) + (m.kind == MeasurementKind::girth ? girth_slack : length_slack))
+        EXPECT_LE(std::abs(d), iso20685_tolerance(m) +
+                                   (m.kind == MeasurementKind::girth ? girth_slack : length_slack))
             << what << " " << m.name << ": " << m.value << " closed, " << v->value << " filled"
             << (v->crosses_filled_hole ? " (crosses a filled hole)" : "");
         double& worst = m.kind == MeasurementKind::girth ? f.girth : f.length;

@@ -49,6 +49,25 @@ Result to_result(BodyMeasurements&& m, double seconds) {
     return r;
 }
 
+/// ISO 20685-1's tolerance for a measurement taken twice on the same body: 9 mm for the large
+/// torso girths and the thigh, 4 mm for the other girths and for heights, 5 mm for lengths along
+/// the skin.
+inline double iso20685_tolerance(const Measurement& m) {
+    if (m.kind == MeasurementKind::length) {
+        return 5;
+    }
+    if (m.kind != MeasurementKind::girth) {
+        return 4;
+    }
+    for (const char* large : {"bust_girth", "underbust_girth", "high_bust_girth", "waist_girth",
+                              "high_hip_girth", "hip_girth", "thigh_girth", "mid_thigh_girth"}) {
+        if (m.name.rfind(large, 0) == 0) {
+            return 9;
+        }
+    }
+    return 4;
+}
+
 enum class MeshKind { surface_mesh, polyhedron };
 
 /// read_triangle_mesh<Surface_mesh<Epick>> then measure_body; `overrides` is a landmark file

@@ -271,6 +271,12 @@ private:
                                         ps.sections[static_cast<std::size_t>(sr)])
                          : Vec3{0.5 * (cl[0] + cr[0]), lo, -0.5 * (cl[1] + cr[1])};
             p[1] = lo;
+            // Front to back, the point is the middle of the two thighs' sections below the
+            // merge (where the inside leg seams meet), not where the thighs first touch: the
+            // contact is a ridge along which the first touching point slides with the triangles
+            // (10-45 mm between a body and its re-meshed copy), and the cross seam is split
+            // at this z.
+            p[2] = -0.5 * (cl[1] + cr[1]);
             crotch_y_ = set_found("crotch", p)[1];
             crotch_level_ = k + 1;
             levels_[k + 1].torso = l;
@@ -1158,34 +1164,42 @@ private:
             auto prof = limb_profile(axis, h, up);
             arm_profile[s] = prof;
             const double total = prof.empty() ? 0 : prof.back().t;
-            // Elbow: the first narrowing (local minimum over 1% of the height each way) past 30%
-            // of the way to the fingertip; wrist: the first narrowing after the forearm's
-            // widest section (the hand widens again, the fingers beyond are smaller still).
+            // Elbow narrowing: the first local minimum (over 1% of the height each way) past 30%
+            // of the way to the fingertip.
             std::size_t from = 0;
             while (from < prof.size() && prof[from].t < 0.3 * total) {
                 ++from;
             }
             const auto em = local_extremum(prof, from, false, 0.01);
-            const auto fm = em ? local_extremum(prof, *em, true, 0.01) : std::nullopt;
-            auto wm = fm ? local_extremum(prof, *fm, false, 0.01) : std::nullopt;
-            // The hand (wrist to fingertip) is 0.108 of the height (Drillis & Contini 1966, in
-            // Winter 2009, Fig. 4.1). A narrowing that leaves a hand far from that is a dip of
-            // the forearm's profile (one arm found mid-forearm while the other was right): the
-            // wrist is then the narrowest section where a hand of 0.07-0.15 of the height ends.
-            if (!wm || total - prof[*wm].t < 0.07 * height_ ||
-                total - prof[*wm].t > 0.15 * height_) {
-                std::optional<std::size_t> narrow;
-                for (std::size_t i = 0; i < prof.size(); ++i) {
-                    const double hand = total - prof[i].t;
-                    if (hand >= 0.07 * height_ && hand <= 0.15 * height_ &&
-                        std::isfinite(prof[i].perimeter) &&
-                        (!narrow || prof[i].perimeter < prof[*narrow].perimeter)) {
-                        narrow = i;
-                    }
+            // Wrist: the narrowest section where a hand of 0.07-0.15 of the height ends (the
+            // hand, wrist to fingertip, is 0.108 of the height: Drillis & Contini 1966, in Winter
+            // 2009, Fig. 4.1), before the palm's widest section (the thumb's root: the widest
+            // section 0.03-0.12 of the height from the fingertip). The first narrowing after the
+            // forearm's widest section, used before, lay in the palm on arms without a narrowing
+            // at the elbow (the first narrowing past 30% is then the wrist, the next one in the
+            // hand), and whether it did changed with the triangles: 50-75 mm between a body and
+            // its re-meshed copy. That rule remains the fallback when no section is in the band.
+            std::optional<std::size_t> palm;
+            for (std::size_t i = 0; i < prof.size(); ++i) {
+                const double hand = total - prof[i].t;
+                if (hand >= 0.03 * height_ && hand <= 0.12 * height_ &&
+                    std::isfinite(prof[i].perimeter) &&
+                    (!palm || prof[i].perimeter > prof[*palm].perimeter)) {
+                    palm = i;
                 }
-                if (narrow) {
-                    wm = narrow;
+            }
+            std::optional<std::size_t> wm;
+            for (std::size_t i = 0; i < prof.size() && (!palm || i < *palm); ++i) {
+                const double hand = total - prof[i].t;
+                if (hand >= 0.07 * height_ && hand <= 0.15 * height_ &&
+                    std::isfinite(prof[i].perimeter) &&
+                    (!wm || prof[i].perimeter < prof[*wm].perimeter)) {
+                    wm = i;
                 }
+            }
+            if (!wm && em) {
+                const auto fm = local_extremum(prof, *em, true, 0.01);
+                wm = fm ? local_extremum(prof, *fm, false, 0.01) : std::nullopt;
             }
             if (!wm || prof[*wm].t > 0.95 * total) {
                 set_missing(wrist, "no narrowing of the arm after the forearm");
