@@ -64,8 +64,8 @@ void collect_garbage(TriangleMesh&, long) {}
 /// edge comes out under the target (0.77 of it on a fine icosphere, 0.93 on the bodies). Border
 /// edges are split to the length and kept, so an open mesh keeps its holes where they were.
 ///
-/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point map
-///         (CGAL::Surface_mesh, CGAL::Polyhedron_3).
+/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex point map (the tool
+///         and the tests use CGAL::Surface_mesh; other graphs are not tested).
 /// \throws InvalidInput naming `name` when `edge_length` is not a positive finite number, when
 ///         `iterations` is 0, when the mesh has no faces or faces that are not triangles, or when
 ///         the result would have more than kMaxRemeshedFaces faces.
