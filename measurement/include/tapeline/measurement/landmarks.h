@@ -104,6 +104,9 @@ inline LandmarkOverrides read_landmark_overrides(const std::string& path) {
 struct LandmarkReport {
     std::size_t sections = 0;           ///< plane sections cut
     std::vector<std::string> warnings;  ///< landmarks not found, odd contacts
+    /// The chin's underside, mm above the floor, when the front midline shows it (the first
+    /// level above the armpits where it comes forward by more than 2 mm per mm of height).
+    std::optional<double> chin_underside;
 };
 
 /// Every landmark of landmark_names() on the body: found, overridden or not_found with a reason.
@@ -118,6 +121,7 @@ inline LandmarkSet find_landmarks(const Body& body, const MeasureOptions& option
     if (report) {
         report->sections = finder.cuts();
         report->warnings = finder.warnings();
+        report->chin_underside = finder.chin_underside();
     }
     return set;
 }

@@ -82,7 +82,7 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     out.measurements = measure_girths(body, out.landmarks, options, &cuts);
     mark_filled_crossings(body.mesh, out.measurements);
     apply_catalogue(out.measurements);
-    out.warnings = self_check(body, out.landmarks, out.measurements);
+    out.warnings = self_check(body, out.landmarks, out.measurements, lr.chin_underside);
     const auto t2 = Clock::now();
     out.report.landmark_seconds = std::chrono::duration<double>(t1 - t0).count();
     out.report.girth_seconds = std::chrono::duration<double>(t2 - t1).count();

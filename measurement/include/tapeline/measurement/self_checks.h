@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -113,9 +114,11 @@ inline bool loop_contains(const std::vector<Vec3>& pts, const Vec3& plane_point,
 
 }  // namespace internal
 
-/// Every self-check rule on a measured body (landmarks and girths in the canonical frame).
+/// Every self-check rule on a measured body (landmarks and girths in the canonical frame);
+/// `chin_underside` (mm above the floor, from find_landmarks' report) enables neck_below_chin.
 inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet& landmarks,
-                                            const MeasurementSet& set) {
+                                            const MeasurementSet& set,
+                                            std::optional<double> chin_underside = std::nullopt) {
     using internal::fmt_num;
     std::vector<CheckWarning> out;
     const double h = body.frame.height;
@@ -274,6 +277,23 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
                 out.push_back({m.name, "loop_around_part",
                                m.name + " loop goes around the body's midline, not the limb"});
                 break;
+            }
+        }
+    }
+    // The side neck points are at the base of the neck, below the chin: more than 1 % of the
+    // stature above the chin's underside (the scan's spacing and the chin's rounding stay well
+    // under that), the neck was taken at the jaw and the neck girth goes round it.
+    if (chin_underside) {
+        for (const char* name : {"side_neck_left", "side_neck_right"}) {
+            const Landmark* l = landmarks.find(name);
+            if (l && l->status == LandmarkStatus::found &&
+                l->point[1] > *chin_underside + 0.01 * h) {
+                out.push_back(
+                    {name, "neck_below_chin",
+                     std::string(name) + fmt_num(" at %.0f mm height", l->point[1]) +
+                         fmt_num(" is above the chin's underside (%.0f mm)", *chin_underside) +
+                         ": the neck was taken at the jaw (neck girth, neck base and the "
+                         "lengths from the side neck points are not to be trusted)"});
             }
         }
     }

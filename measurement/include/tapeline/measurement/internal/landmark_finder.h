@@ -117,6 +117,8 @@ public:
     }
 
     std::size_t cuts() const { return ws_.cuts; }
+    /// The chin's underside (mm above the floor), when the front profile shows it.
+    std::optional<double> chin_underside() const { return chin_y_; }
     const std::vector<std::string>& warnings() const { return warnings_; }
 
     // Profiles kept for diagnostics and tests.
@@ -140,7 +142,7 @@ private:
     LandmarkSet set_;
     std::vector<std::string> warnings_;
     std::size_t crotch_level_ = 0;
-    std::optional<double> crotch_y_, armpit_y_[2], waist_y_, hip_y_, neck_y_, snp_y_[2];
+    std::optional<double> crotch_y_, armpit_y_[2], waist_y_, hip_y_, neck_y_, snp_y_[2], chin_y_;
     std::optional<std::size_t> arm_merge_level_[2];
     int arm_section_[2] = {-1, -1};     // the arm's section at its merge level
     std::optional<Vec3> fingertip_[2];  // T-pose: the farthest point out on each side
@@ -619,6 +621,30 @@ private:
         const double a = crotch_y_ ? armpit_level() : y_of(0.73);
         const Vec3 top = set_.find("top_of_head")->point;
         const double lo = a + 0.04 * height_, hi = top[1] - 0.08 * height_;
+        // The chin's underside, for the self-checks: going up, the first level where the front
+        // midline comes forward by more than twice the levels' spacing (a nearly horizontal
+        // surface). A short, thick neck can be as narrow as the jaw, and then the smallest
+        // section below is the jaw's (neck_below_chin in self_checks.h).
+        {
+            std::optional<std::pair<double, double>> prev;  // (y, front z)
+            for (std::size_t k = 0; k < levels_.size(); ++k) {
+                if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
+                    continue;
+                }
+                const auto fb = front_back(
+                    levels_[k].ps,
+                    levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].torso)], x_mid_);
+                if (!fb) {
+                    continue;
+                }
+                if (prev && fb->first - prev->second > 2 * (levels_[k].y - prev->first) &&
+                    prev->first >= lo + 0.02 * height_) {
+                    chin_y_ = prev->first;
+                    break;
+                }
+                prev = std::make_pair(levels_[k].y, fb->first);
+            }
+        }
         double best = std::numeric_limits<double>::infinity();
         std::size_t best_k = 0;
         for (std::size_t k = 0; k < levels_.size(); ++k) {
