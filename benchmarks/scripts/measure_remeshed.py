@@ -122,13 +122,14 @@ def main():
 
 def write_table(rows, a):
     L = ["# Measurements of re-meshed bodies against the original mesh", "",
-         "`benchmarks/scripts/measure_remeshed.py build/apps/tapeline ../shared/data/bodies OUT.md "
+         "`benchmarks/scripts/measure_remeshed.py build/apps/tapeline %s OUT.md "
          "--bodies %s`. Each body is measured as it is and as re-meshed by `tapeline mesh remesh "
          "--edge 0.05` / `--edge 0.2` (CGAL isotropic remeshing to 5 / 20 mm edges, 3 rounds) "
          "and `tapeline mesh simplify --vertices 5000` (CGAL edge collapse, Garland-Heckbert); "
          "every measurement of the original (girths, heights, lengths along the skin; not the "
          "shoulder angles) is compared. ISO 20685-1: girths 4 mm (9 mm bust, underbust, high "
-         "bust, waist, high hip, hip, thigh, mid-thigh), heights 4 mm, lengths 5 mm." % a.bodies,
+         "bust, waist, high hip, hip, thigh, mid-thigh), heights 4 mm, lengths 5 mm." % (
+             a.data, a.bodies),
          ""]
     ok = [r for r in rows if "error" not in r]
     L += ["Bodies: %d (%d refused as they are). Original meshes: %s vertices." % (
