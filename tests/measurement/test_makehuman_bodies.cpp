@@ -248,7 +248,8 @@ TEST(MakeHumanBodies, TPoseArmpitsFoundAndArmFreeGirthsUnchanged) {
     for (const char* body : kBodies) {
         files.push_back(std::string(body) + ".obj");
     }
-    for (const char* body : {"mh_pop_004", "mh_pop_019", "mh_pop_031", "mh_pop_035", "mh_pop_038"}) {
+    for (const char* body :
+         {"mh_pop_004", "mh_pop_019", "mh_pop_031", "mh_pop_035", "mh_pop_038"}) {
         files.push_back("population/" + std::string(body) + ".ply");
     }
     for (const std::string& file : files) {
