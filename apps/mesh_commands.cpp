@@ -3,15 +3,14 @@
 #include "commands.h"
 #include "output.h"
 
-#include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/core/internal/text_scan.h>
 #include <tapeline/core/mesh_writers.h>
 #include <tapeline/core/remesh.h>
 #include <tapeline/surfaces/analytic_geodesics.h>
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <iostream>
 #include <memory>
 
@@ -77,36 +76,17 @@ struct RemeshArgs {
     std::size_t vertices = 0;
 };
 
-/// Refuses an output that write_mesh cannot write before the (long) re-meshing starts.
-void check_mesh_output(const std::string& path) {
-    const std::string ext = internal::lower_extension(path);
-    if (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") {
-        throw InvalidInput(path + ": unknown mesh format '" + ext +
-                           "' for writing (expected .off, .obj, .ply or .stl)");
-    }
-    check_output_path(path);
-}
-
-void report_remesh(const std::string& out, const RemeshReport& r) {
-    std::cout << "wrote " << out << ": " << r.vertices_after << " vertices, " << r.faces_after
+/// Reads `a.in`, applies `change` (re-meshing or decimation) and writes `a.out`, whose path is
+/// checked before any work.
+void rewrite_mesh(const RemeshArgs& a,
+                  const std::function<RemeshReport(Mesh&, const std::string&)>& change) {
+    check_mesh_output(a.out);
+    InputMesh input = load_input_mesh_file(a.in, false);
+    const RemeshReport r = change(input.loaded.mesh, a.in);
+    write_mesh(a.out, input.loaded.mesh);
+    std::cout << "wrote " << a.out << ": " << r.vertices_after << " vertices, " << r.faces_after
               << " faces (from " << r.vertices_before << " vertices, " << r.faces_before
               << " faces)\n";
-}
-
-void run_remesh(const RemeshArgs& a) {
-    check_mesh_output(a.out);
-    InputMesh input = load_input_mesh_file(a.in, false);
-    const RemeshReport r = remesh_isotropic(input.loaded.mesh, a.edge, a.iterations, a.in);
-    write_mesh(a.out, input.loaded.mesh);
-    report_remesh(a.out, r);
-}
-
-void run_simplify(const RemeshArgs& a) {
-    check_mesh_output(a.out);
-    InputMesh input = load_input_mesh_file(a.in, false);
-    const RemeshReport r = simplify_to_vertices(input.loaded.mesh, a.vertices, a.in);
-    write_mesh(a.out, input.loaded.mesh);
-    report_remesh(a.out, r);
 }
 
 }  // namespace
@@ -151,7 +131,11 @@ void register_mesh_commands(CLI::App& app) {
         ->required();
     remesh->add_option("--iterations", rem->iterations, "Remeshing rounds")->capture_default_str();
     remesh->add_option("--out,-o", rem->out, "Output mesh (.off, .obj, .ply, .stl)")->required();
-    remesh->callback([rem] { run_remesh(*rem); });
+    remesh->callback([rem] {
+        rewrite_mesh(*rem, [&](Mesh& m, const std::string& name) {
+            return remesh_isotropic(m, rem->edge, rem->iterations, name);
+        });
+    });
 
     auto sim = std::make_shared<RemeshArgs>();
     CLI::App* simplify = mesh->add_subcommand(
@@ -161,7 +145,11 @@ void register_mesh_commands(CLI::App& app) {
     simplify->add_option("mesh", sim->in, "Mesh file (OFF, OBJ, PLY, STL)")->required();
     simplify->add_option("--vertices", sim->vertices, "Target vertex count")->required();
     simplify->add_option("--out,-o", sim->out, "Output mesh (.off, .obj, .ply, .stl)")->required();
-    simplify->callback([sim] { run_simplify(*sim); });
+    simplify->callback([sim] {
+        rewrite_mesh(*sim, [&](Mesh& m, const std::string& name) {
+            return simplify_to_vertices(m, sim->vertices, name);
+        });
+    });
 }
 
 }  // namespace tapeline::app

@@ -6,8 +6,9 @@
 #include <tapeline_test/measured_body.h>
 #include <tapeline_test/measurement.h>
 
+#include "measurement_soup_mesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_slicer.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
@@ -28,23 +29,10 @@ meas::LandmarkOverrides overrides_from(const std::string& path) {
 }
 
 template <class Mesh>
-void build(const std::vector<Vec3>& points, const Triangles& triangles, Mesh& mesh) {
-    std::vector<Epick::Point_3> pts;
-    for (const auto& p : points) {
-        pts.emplace_back(p[0], p[1], p[2]);
-    }
-    std::vector<std::vector<std::size_t>> polys;
-    for (const auto& t : triangles) {
-        polys.push_back({t[0], t[1], t[2]});
-    }
-    CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(pts, polys, mesh);
-}
-
-template <class Mesh>
 Result measure_built(const std::vector<Vec3>& points, const Triangles& triangles,
                      const BodyOptions& options, const std::string& overrides) {
     Mesh mesh;
-    build(points, triangles, mesh);
+    mesh_from_soup(points, triangles, mesh);
     const auto o = overrides_from(overrides);
     const auto t0 = std::chrono::steady_clock::now();
     auto m = meas::measure_body(mesh, options, {}, o);
@@ -111,7 +99,7 @@ SliceComparison compare_with_cgal_slicer(const SyntheticBodyOptions& synthetic, 
     }
     // The slicer on the same canonical points.
     SurfaceMesh mesh;
-    build(b.mesh.points, b.mesh.triangles, mesh);
+    mesh_from_soup(b.mesh.points, b.mesh.triangles, mesh);
     CGAL::Polygon_mesh_slicer<SurfaceMesh, Epick> slicer(mesh);
     std::vector<std::vector<Epick::Point_3>> polylines;
     slicer(Epick::Plane_3(Epick::Point_3(point[0], point[1], point[2]),

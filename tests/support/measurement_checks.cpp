@@ -2,6 +2,8 @@
 #include <tapeline/core/mesh_io.h>
 #include <tapeline_test/measurement_checks.h>
 
+#include "measurement_soup_mesh.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -13,27 +15,7 @@ namespace tapeline_test::measurement {
 
 Soup read_body_soup(const std::string& path) {
     using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
-    const auto loaded = tapeline::read_triangle_mesh<Mesh>(path);
-    const Mesh& m = loaded.mesh;
-    Soup s;
-    std::vector<std::uint32_t> index(m.num_vertices());  // by Vertex_index::idx()
-    for (auto v : m.vertices()) {
-        index[v.idx()] = static_cast<std::uint32_t>(s.points.size());
-        const auto& p = m.point(v);
-        s.points.push_back({p.x(), p.y(), p.z()});
-    }
-    for (auto f : m.faces()) {
-        std::array<std::uint32_t, 3> t{};
-        std::size_t k = 0;
-        for (auto v : vertices_around_face(m.halfedge(f), m)) {
-            if (k < 3) {
-                t[k] = index[v.idx()];
-            }
-            ++k;
-        }
-        s.triangles.push_back(t);
-    }
-    return s;
+    return soup_from_mesh(tapeline::read_triangle_mesh<Mesh>(path).mesh);
 }
 
 Soup ellipsoid(const Vec3& centre, const Vec3& semi_axes, int rings, int segments) {

@@ -178,6 +178,27 @@ inline void write_stl_binary(const std::string& path,
 
 }  // namespace internal
 
+namespace internal {
+
+inline void check_mesh_extension(const std::string& path) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl") {
+        throw InvalidInput(path + ": unknown mesh format '" + ext +
+                           "' for writing (expected .off, .obj, .ply or .stl)");
+    }
+}
+
+}  // namespace internal
+
+/// Refuses, before any work, a mesh output write_mesh could not write: an extension other than
+/// .off, .obj, .ply or .stl, or a path check_output_path refuses.
+///
+/// \throws InvalidInput naming `path`.
+inline void check_mesh_output(const std::string& path) {
+    internal::check_mesh_extension(path);
+    check_output_path(path);
+}
+
 /// Writes `tm` as OFF, OBJ (17 significant digits, via CGAL), PLY (binary little endian, double
 /// coordinates) or STL (binary, float coordinates), chosen by the extension; atomically.
 /// An unknown extension is InvalidInput.
@@ -203,10 +224,7 @@ void write_mesh(const std::string& path, const TriangleMesh& tm) {
         });
         return;
     }
-    if (ext != ".ply" && ext != ".stl") {
-        throw InvalidInput(path + ": unknown mesh format '" + ext +
-                           "' for writing (expected .off, .obj, .ply or .stl)");
-    }
+    internal::check_mesh_extension(path);
     std::vector<std::array<double, 3>> points;
     std::vector<std::vector<std::size_t>> polygons;
     internal::mesh_arrays(tm, points, polygons);

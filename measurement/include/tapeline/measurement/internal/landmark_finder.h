@@ -626,23 +626,14 @@ private:
         // surface). A short, thick neck can be as narrow as the jaw, and then the smallest
         // section below is the jaw's (neck_below_chin in self_checks.h).
         {
-            std::optional<std::pair<double, double>> prev;  // (y, front z)
-            for (std::size_t k = 0; k < levels_.size(); ++k) {
-                if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
-                    continue;
-                }
-                const auto fb = front_back(
-                    levels_[k].ps,
-                    levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].torso)], x_mid_);
-                if (!fb) {
-                    continue;
-                }
-                if (prev && fb->first - prev->second > 2 * (levels_[k].y - prev->first) &&
-                    prev->first >= lo + 0.02 * height_) {
-                    chin_y_ = prev->first;
+            const auto profile = front_profile(lo, hi);
+            for (std::size_t i = 1; i < profile.size(); ++i) {
+                const auto &prev = profile[i - 1], &q = profile[i];
+                if (q.second - prev.second > 2 * (q.first - prev.first) &&
+                    prev.first >= lo + 0.02 * height_) {
+                    chin_y_ = prev.first;
                     break;
                 }
-                prev = std::make_pair(levels_[k].y, fb->first);
             }
         }
         double best = std::numeric_limits<double>::infinity();
@@ -813,23 +804,30 @@ private:
         find_front_neck(best_k);
     }
 
-    /// Front neck point: on the front midline between the neck and the bust level, the point
-    /// deepest behind the chord from the neck's front to the chest's front (the jugular notch).
-    void find_front_neck(std::size_t neck_k) {
-        const double a = crotch_y_ ? armpit_level() : y_of(0.73);
-        const double y1 = levels_[neck_k].y, y0 = a - 0.04 * height_;
-        std::vector<std::pair<double, double>> contour;  // (y, front z)
+    /// The front midline's z on the torso chain's scan sections with heights in [lo, hi],
+    /// going up: (y, front z).
+    std::vector<std::pair<double, double>> front_profile(double lo, double hi) const {
+        std::vector<std::pair<double, double>> out;
         for (std::size_t k = 0; k < levels_.size(); ++k) {
-            if (levels_[k].y < y0 || levels_[k].y > y1 || levels_[k].torso < 0) {
+            if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
                 continue;
             }
             const auto fb = front_back(
                 levels_[k].ps, levels_[k].ps.sections[static_cast<std::size_t>(levels_[k].torso)],
                 x_mid_);
             if (fb) {
-                contour.emplace_back(levels_[k].y, fb->first);
+                out.emplace_back(levels_[k].y, fb->first);
             }
         }
+        return out;
+    }
+
+    /// Front neck point: on the front midline between the neck and the bust level, the point
+    /// deepest behind the chord from the neck's front to the chest's front (the jugular notch).
+    void find_front_neck(std::size_t neck_k) {
+        const double a = crotch_y_ ? armpit_level() : y_of(0.73);
+        const double y1 = levels_[neck_k].y, y0 = a - 0.04 * height_;
+        const std::vector<std::pair<double, double>> contour = front_profile(y0, y1);
         if (contour.size() < 5) {
             set_missing("front_neck", "the front midline between bust and neck was not found");
             return;
