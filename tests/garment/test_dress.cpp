@@ -39,6 +39,60 @@ std::string bundled(const std::string& rel) {
 
 }  // namespace
 
+// A bent arm made of two round tubes (upper arm radius 40 mm, 300 mm long; forearm radius 30 mm
+// bent 50° away from it): the axis a short sleeve is wrapped round follows the upper arm (the
+// straight line from the shoulder to the wrist misses the elbow by centimetres), passes through
+// the shoulder joint and gives the upper arm's radius; a sleeve as long as the whole arm gets a
+// line between the two tubes' directions.
+TEST(GarmentPlacement, ArmAxisFollowsTheUpperArmOfABentArm) {
+    using tapeline::vec3::add;
+    using tapeline::vec3::cross;
+    using tapeline::vec3::dot;
+    using tapeline::vec3::norm;
+    using tapeline::vec3::normalized;
+    using tapeline::vec3::scale;
+    using tapeline::vec3::sub;
+    const tg::Vec3 shoulder{200, 1300, 0};
+    const tg::Vec3 u = normalized(tg::Vec3{1, -1.5, 0});
+    const tg::Vec3 w = normalized(tg::Vec3{0.2, -1, 0.9});
+    const double r_upper = 40, r_fore = 30, l_upper = 300, l_fore = 250;
+    const tg::Vec3 elbow = add(shoulder, scale(u, l_upper));
+    const tg::Vec3 wrist = add(elbow, scale(w, l_fore));
+    tg::BodyShape b;
+    const auto tube = [&](const tg::Vec3& from, const tg::Vec3& dir, double len, double r) {
+        tg::Vec3 n1 = normalized(cross(dir, tg::Vec3{0, 0, 1}));
+        if (norm(cross(dir, tg::Vec3{0, 0, 1})) < 0.1) {
+            n1 = normalized(cross(dir, tg::Vec3{1, 0, 0}));
+        }
+        const tg::Vec3 n2 = cross(dir, n1);
+        for (double t = 0; t <= len; t += 5) {
+            for (int k = 0; k < 36; ++k) {
+                const double a = 2 * M_PI * k / 36;
+                b.points.push_back(add(add(from, scale(dir, t)), add(scale(n1, r * std::cos(a)),
+                                                                     scale(n2, r * std::sin(a)))));
+            }
+        }
+    };
+    tube(shoulder, u, l_upper, r_upper);
+    tube(elbow, w, l_fore, r_fore);
+    b.is_arm.assign(b.points.size(), 1);
+    b.shoulder[0] = shoulder;
+    b.wrist[0] = wrist;
+    const double angle_naive = std::acos(dot(normalized(sub(wrist, shoulder)), u)) * 180 / M_PI;
+    ASSERT_GT(angle_naive, 15) << "the test needs an arm whose wrist is off the upper arm's line";
+    const tg::ArmAxis a = tg::fit_arm_axis(b, 0, 200);
+    EXPECT_LT(std::acos(std::min(1.0, dot(a.direction, u))) * 180 / M_PI, 2.0);
+    // The fitted line passes (nearly) through the shoulder joint, and `start` is on it.
+    const tg::Vec3 q = sub(shoulder, a.start);
+    EXPECT_LT(norm(sub(q, scale(a.direction, dot(q, a.direction)))), 3.0);
+    EXPECT_NEAR(a.radius, r_upper, 1.5);
+    EXPECT_GT(a.length, 0.9 * norm(sub(wrist, shoulder)));
+    // The whole arm: the direction lies between the upper arm's and the forearm's.
+    const tg::ArmAxis whole = tg::fit_arm_axis(b, 0, l_upper + l_fore);
+    EXPECT_GT(dot(whole.direction, u), dot(w, u));
+    EXPECT_GT(dot(whole.direction, w), dot(w, u));
+}
+
 // The whole chain on the bundled body in the bundled GarmentCode shirt: the placement leaves no
 // cloth inside the body, the run ends without a solver failure, every seam is closable and the
 // welded garment's openings are its neck, hem and two cuffs.
@@ -200,7 +254,41 @@ TEST(Dress, TShirtSleevesArePairedAndPlacedOnTheirArms) {
                       cap_z["armhole (back)" + m] / cap_n["armhole (back)" + m] + 20)
                 << "sleeve" << m;
         }
+        // Each sleeve is wrapped round its whole arm: the two sides of its underarm seam start
+        // close together under the arm (a tube wider than the arm by a bent-arm axis or a
+        // shoulder-wide radius leaves them a quarter of the way round the arm or more apart).
+        for (std::size_t k = 0; k < r.sewing.pairs.size(); ++k) {
+            const std::string& seam = rep.seams[r.sewing.seam_of_pair[k]].name;
+            if (seam == "sleeve" || seam == "sleeve (mirror)") {
+                const double apart = tapeline::vec3::norm(tapeline::vec3::sub(
+                    r.placed[r.sewing.pairs[k].a], r.placed[r.sewing.pairs[k].b]));
+                EXPECT_LT(apart, 60) << seam << " pair " << k;
+            }
+        }
     }
+}
+
+// The T-shirt (sleeves drafted once, paired with their mirror) dressed on the bundled body: the
+// garment is one mesh with its four openings, no cloth edge crosses the body, no vertex is inside
+// it, and the garment comes to rest (at most 1 % of the vertices moving more than 0.3 mm in the
+// last frame) — three of the gates, with the sleeves on.
+TEST(Dress, TShirtComesToRestOutsideTheBody) {
+    const std::filesystem::path file = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) /
+                                       "patterns" / "freesewing" / "teagan_cisFemaleAdult36.json";
+    if (!std::filesystem::exists(file)) {
+        GTEST_SKIP() << file << " is absent";
+    }
+    const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
+    tg::DressOptions o;
+    o.resolution_mm = 20;
+    o.drape.substeps = 40;
+    const tg::DressResult r =
+        tg::dress(b.body, b.landmarks, tp::read_pattern_file(file.string()), o);
+    const tg::DressReport& rep = r.report;
+    EXPECT_EQ(rep.boundary_loops, 4u) << "neck, hem and two sleeve openings";
+    EXPECT_EQ(rep.quality.edges_crossing_body, 0u);
+    EXPECT_EQ(rep.quality.vertices_inside_body, 0u);
+    EXPECT_LE(rep.quality.moving_fraction, 0.01);
 }
 
 TEST(Dress, Refusals) {

@@ -9,8 +9,9 @@
 //    the convex hull of the body's trunk there (arms removed), offset outwards by a gap, with the
 //    piece's centre line on the body's centre front (back) line and its width laid out in arc
 //    length along the section;
-//  - sleeves around a circular cylinder along the arm's axis (acromion to wrist), the sleeve cap
-//    as near the shoulder as it keeps clear of the body pieces.
+//  - sleeves around a circular cylinder along the arm's axis (fitted to the arm's cross-sections
+//    where the sleeve goes), the sleeve cap as near the shoulder as it keeps clear of the body
+//    pieces.
 // Heights come from the body's landmarks: the top of the upper-body pieces at the side-neck
 // height, skirts hang from the waist. Where front and back would overlap, the section is offset
 // further so that its perimeter holds both. The result is checked by the caller (dress.h): no
@@ -24,6 +25,8 @@
 #include <tapeline/pattern/io_garmentcode.h>
 #include <tapeline/pattern/meshing_types.h>
 #include <tapeline/pattern/pattern.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <array>
@@ -438,6 +441,97 @@ inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::Piec
     return out;
 }
 
+/// The axis a sleeve is wrapped round: a line fitted to the arm where the sleeve goes, and the
+/// arm's radius about it.
+struct ArmAxis {
+    Vec3 start{0, 0, 0};      ///< on the line, level with the shoulder joint
+    Vec3 direction{0, 0, 0};  ///< unit, from the shoulder towards the wrist
+    double length = 0;        ///< from `start` to the wrist along the line, mm
+    double radius = 0;        ///< 90th percentile of the arm's distance from the line, mm
+};
+
+/// Fits the axis of arm `side` (0 left, 1 right) over the first `sleeve_length` mm (at least a
+/// third of the arm) below the shoulder joint. The straight line from the shoulder joint to the
+/// wrist misses a bent elbow by several centimetres; here the line goes through the centroids of
+/// the arm's cross-sections (arm vertices binned by their position along the shoulder–wrist
+/// line; principal direction of the centroids). The radius is taken below the shoulder's junction
+/// with the trunk (the first tenth of the arm), where the arm is round.
+inline ArmAxis fit_arm_axis(const BodyShape& body, int side, double sleeve_length) {
+    using namespace internal;
+    const std::size_t s = std::size_t(side);
+    const Vec3 a = body.shoulder[s];
+    const double full = norm(sub(body.wrist[s], a));
+    ArmAxis out;
+    out.start = a;
+    out.direction = full > 0 ? scale(sub(body.wrist[s], a), 1.0 / full) : Vec3{0, -1, 0};
+    out.length = full;
+    if (!(full > 0)) {
+        return out;
+    }
+    const double reach = std::min(1.0, std::max(1.0 / 3, 1.15 * sleeve_length / full));
+    constexpr int bins = 20;
+    std::array<Vec3, bins> sum{};
+    std::array<int, bins> count{};
+    for (std::size_t v = 0; v < body.points.size(); ++v) {
+        if (!body.is_arm[v] || (body.points[v][0] >= 0) != (side == 0)) {
+            continue;
+        }
+        const double t = dot(sub(body.points[v], a), out.direction) / full;
+        if (t < 0.1 || t > reach) {
+            continue;
+        }
+        const int b = std::min(bins - 1, int(t * bins));
+        sum[std::size_t(b)] = add(sum[std::size_t(b)], body.points[v]);
+        ++count[std::size_t(b)];
+    }
+    std::vector<Vec3> centroids;
+    for (int b = 0; b < bins; ++b) {
+        if (count[std::size_t(b)] > 0) {
+            centroids.push_back(scale(sum[std::size_t(b)], 1.0 / count[std::size_t(b)]));
+        }
+    }
+    if (centroids.size() >= 2) {
+        Vec3 c{0, 0, 0};
+        for (const Vec3& p : centroids) {
+            c = add(c, scale(p, 1.0 / double(centroids.size())));
+        }
+        // Principal direction of the centroids: the eigenvector of their scatter matrix with the
+        // largest eigenvalue (Eigen sorts them ascending).
+        Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+        for (const Vec3& p : centroids) {
+            const Eigen::Vector3d q(p[0] - c[0], p[1] - c[1], p[2] - c[2]);
+            m += q * q.transpose();
+        }
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
+        const Eigen::Vector3d e = eig.eigenvectors().col(2);
+        Vec3 dir = normalized(Vec3{e[0], e[1], e[2]});
+        if (dot(dir, out.direction) < 0) {
+            dir = scale(dir, -1);
+        }
+        out.direction = dir;
+        // The line's point level with the shoulder joint (its projection on the line).
+        out.start = add(c, scale(dir, dot(sub(a, c), dir)));
+        out.length = std::max(0.0, dot(sub(body.wrist[s], out.start), dir));
+    }
+    std::vector<double> dist;
+    for (std::size_t v = 0; v < body.points.size(); ++v) {
+        if (!body.is_arm[v] || (body.points[v][0] >= 0) != (side == 0)) {
+            continue;
+        }
+        const Vec3 q = sub(body.points[v], out.start);
+        const double t = dot(q, out.direction);
+        if (t < 0.1 * full || t > reach * full) {
+            continue;
+        }
+        dist.push_back(norm(sub(q, scale(out.direction, t))));
+    }
+    if (!dist.empty()) {
+        std::sort(dist.begin(), dist.end());
+        out.radius = dist[std::size_t(0.9 * double(dist.size() - 1))];
+    }
+    return out;
+}
+
 /// Wraps every piece around its region (see the file comment). `layouts[i]` belongs to
 /// `mesh.pieces[i]`; writes the 3D positions (canonical mm) of every piece vertex to `xyz`.
 inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& layouts,
@@ -570,19 +664,18 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
     };
     for (int side = 0; side < 2; ++side) {
         const Region reg = side == 0 ? Region::sleeve_left : Region::sleeve_right;
-        const Vec3 a0 = body.shoulder[side];
-        const Vec3 d = normalized(sub(body.wrist[side], a0));
-        double r_arm = 0;
-        for (std::size_t v = 0; v < body.points.size(); ++v) {
-            if (!body.is_arm[v] || (body.points[v][0] >= 0) != (side == 0)) {
-                continue;
-            }
-            double t = 0;
-            const double dist = axis_distance(body.points[v], a0, body.wrist[side], &t);
-            if (t >= 0 && t <= 1) {
-                r_arm = std::max(r_arm, dist);
+        // The sleeve's length down the arm (its pieces' height range).
+        double sleeve_length = 0;
+        for (const PieceLayout& l : layouts) {
+            if (l.region == reg && !l.h.empty()) {
+                const auto [lo, hi] = std::minmax_element(l.h.begin(), l.h.end());
+                sleeve_length = std::max(sleeve_length, *hi - *lo);
             }
         }
+        const ArmAxis arm = fit_arm_axis(body, side, sleeve_length);
+        const Vec3 a0 = arm.start;
+        const Vec3 d = arm.direction;
+        const double r_arm = arm.radius;
         double smin = 1e300, smax = -1e300, hmin_s = 1e300;
         std::size_t count = 0;
         for (const PieceLayout& l : layouts) {
@@ -608,7 +701,9 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
             const auto [lo, hi] = std::minmax_element(l.s.begin(), l.s.end());
             span += *hi - *lo;
         }
-        const double radius = std::max(r_arm + o.gap_mm, 1.03 * span / (2 * M_PI));
+        // The tube is at least as wide as the sleeve (3 % of ease) and clears the arm by the gap.
+        const double radius_min = std::max(r_arm + o.gap_mm, 1.03 * span / (2 * M_PI));
+        double radius = radius_min;
         // Frame: n_up ⟂ d pointing up, n_front ⟂ both pointing to the front (+z).
         Vec3 n_up = sub(Vec3{0, 1, 0}, scale(d, d[1]));
         n_up = normalized(n_up);
@@ -643,22 +738,52 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
         }
         // The sleeve starts as near the shoulder as it keeps clear of the body pieces already
         // placed (twice the layer gap from every vertex of theirs: the armhole leaves room for the
-        // cap), so that sleeves and body pieces do not cross before they are sewn; failing that,
-        // where its cylinder has left the trunk's prism.
-        const double arm_length = norm(sub(body.wrist[side], a0));
-        double start = 0;
-        bool placed = !have_prism || torso_grid.empty();
-        for (; !placed && start < arm_length; start += 5) {
-            bool clear = true;
-            for (std::size_t k = 0; k < sleeves.size() && clear; ++k) {
-                const PieceLayout& l = layouts[sleeves[k]];
-                for (std::size_t v = 0; v < l.s.size() && clear; ++v) {
-                    clear = !near_torso(sleeve_point(l, front_halves[k], v, start));
+        // cap), so that sleeves and body pieces do not cross before they are sewn. A wide sleeve
+        // on an arm near the trunk may only clear them far down the arm, and the sewing would
+        // then drag it up the whole way and crumple it: when the sleeve's own tube starts below
+        // the first third of the arm, tubes up to 1.75 times wider are tried too, and the
+        // narrowest that starts within a tenth of the arm's length of the nearest start is kept
+        // (a wider tube leaves the underarm edges further apart).
+        // Failing all, the sleeve starts where its cylinder has left the trunk's prism.
+        const double arm_length = arm.length;
+        const auto first_clear_start = [&]() {
+            for (double start = 0; start < arm_length; start += 5) {
+                bool clear = true;
+                for (std::size_t k = 0; k < sleeves.size() && clear; ++k) {
+                    const PieceLayout& l = layouts[sleeves[k]];
+                    for (std::size_t v = 0; v < l.s.size() && clear; ++v) {
+                        clear = !near_torso(sleeve_point(l, front_halves[k], v, start));
+                    }
+                }
+                if (clear) {
+                    return start;
                 }
             }
-            placed = clear;
-            if (placed) {
-                break;
+            return -1.0;
+        };
+        double start = 0;
+        bool placed = !have_prism || torso_grid.empty();
+        if (!placed) {
+            std::array<double, 4> starts{-1, -1, -1, -1};
+            const std::array<double, 4> widen{1.0, 1.25, 1.5, 1.75};
+            for (std::size_t k = 0; k < widen.size(); ++k) {
+                if (k == 1 && placed && start <= arm_length / 3) {
+                    break;  // the sleeve's own tube starts high enough on the arm
+                }
+                radius = widen[k] * radius_min;
+                starts[k] = first_clear_start();
+                if (starts[k] >= 0 && (!placed || starts[k] < start)) {
+                    placed = true;
+                    start = starts[k];
+                }
+            }
+            radius = radius_min;
+            for (std::size_t k = 0; placed && k < widen.size(); ++k) {
+                if (starts[k] >= 0 && starts[k] <= start + 0.1 * arm_length) {
+                    radius = widen[k] * radius_min;
+                    start = starts[k];
+                    break;
+                }
             }
         }
         if (!placed) {
