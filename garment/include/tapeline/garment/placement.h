@@ -75,16 +75,6 @@ inline Vec3 landmark_point(const measurement::LandmarkSet& lm, const std::string
     return axis ? l->axis_point : l->point;
 }
 
-/// Distance from p to the segment a–b and the segment parameter of its projection (unclamped).
-inline double axis_distance(const Vec3& p, const Vec3& a, const Vec3& b, double* t_out) {
-    const Vec3 d = sub(b, a);
-    const double t = dot(sub(p, a), d) / dot(d, d);
-    if (t_out) {
-        *t_out = t;
-    }
-    return norm(sub(p, add(a, scale(d, std::clamp(t, 0.0, 1.0)))));
-}
-
 /// Convex hull (Andrew's monotone chain) of 2D points, counter-clockwise.
 inline std::vector<std::array<double, 2>> convex_hull(std::vector<std::array<double, 2>> p) {
     std::sort(p.begin(), p.end());
