@@ -459,19 +459,23 @@ inline ArmAxis fit_arm_axis(const BodyShape& body, int side, double sleeve_lengt
         return out;
     }
     const double reach = std::min(1.0, std::max(1.0 / 3, 1.15 * sleeve_length / full));
+    // The arm's vertices on this side.
+    std::vector<Vec3> pts;
+    for (std::size_t v = 0; v < body.points.size(); ++v) {
+        if (body.is_arm[v] && (body.points[v][0] >= 0) == (side == 0)) {
+            pts.push_back(body.points[v]);
+        }
+    }
     constexpr int bins = 20;
     std::array<Vec3, bins> sum{};
     std::array<int, bins> count{};
-    for (std::size_t v = 0; v < body.points.size(); ++v) {
-        if (!body.is_arm[v] || (body.points[v][0] >= 0) != (side == 0)) {
-            continue;
-        }
-        const double t = dot(sub(body.points[v], a), out.direction) / full;
+    for (const Vec3& p : pts) {
+        const double t = dot(sub(p, a), out.direction) / full;
         if (t < 0.1 || t > reach) {
             continue;
         }
         const int b = std::min(bins - 1, int(t * bins));
-        sum[std::size_t(b)] = add(sum[std::size_t(b)], body.points[v]);
+        sum[std::size_t(b)] = add(sum[std::size_t(b)], p);
         ++count[std::size_t(b)];
     }
     std::vector<Vec3> centroids;
@@ -504,16 +508,12 @@ inline ArmAxis fit_arm_axis(const BodyShape& body, int side, double sleeve_lengt
         out.length = std::max(0.0, dot(sub(body.wrist[s], out.start), dir));
     }
     std::vector<double> dist;
-    for (std::size_t v = 0; v < body.points.size(); ++v) {
-        if (!body.is_arm[v] || (body.points[v][0] >= 0) != (side == 0)) {
-            continue;
-        }
-        const Vec3 q = sub(body.points[v], out.start);
+    for (const Vec3& p : pts) {
+        const Vec3 q = sub(p, out.start);
         const double t = dot(q, out.direction);
-        if (t < 0.1 * full || t > reach * full) {
-            continue;
+        if (t >= 0.1 * full && t <= reach * full) {
+            dist.push_back(norm(sub(q, scale(out.direction, t))));
         }
-        dist.push_back(norm(sub(q, scale(out.direction, t))));
     }
     if (!dist.empty()) {
         std::sort(dist.begin(), dist.end());
@@ -754,24 +754,25 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
         double start = 0;
         bool placed = !have_prism || torso_grid.empty();
         if (!placed) {
-            std::array<double, 4> starts{-1, -1, -1, -1};
             const std::array<double, 4> widen{1.0, 1.25, 1.5, 1.75};
+            std::array<double, 4> starts{-1, -1, -1, -1};
+            double best = -1;
             for (std::size_t k = 0; k < widen.size(); ++k) {
-                if (k == 1 && placed && start <= arm_length / 3) {
-                    break;  // the sleeve's own tube starts high enough on the arm
-                }
                 radius = widen[k] * radius_min;
                 starts[k] = first_clear_start();
-                if (starts[k] >= 0 && (!placed || starts[k] < start)) {
-                    placed = true;
-                    start = starts[k];
+                if (starts[k] >= 0 && (best < 0 || starts[k] < best)) {
+                    best = starts[k];
+                }
+                if (k == 0 && best >= 0 && best <= arm_length / 3) {
+                    break;  // the sleeve's own tube starts high enough on the arm
                 }
             }
             radius = radius_min;
-            for (std::size_t k = 0; placed && k < widen.size(); ++k) {
-                if (starts[k] >= 0 && starts[k] <= start + 0.1 * arm_length) {
+            for (std::size_t k = 0; best >= 0 && k < widen.size(); ++k) {
+                if (starts[k] >= 0 && starts[k] <= best + 0.1 * arm_length) {
                     radius = widen[k] * radius_min;
                     start = starts[k];
+                    placed = true;
                     break;
                 }
             }
