@@ -51,7 +51,7 @@ struct DressArgs {
     double sew_seconds = tg::SewingOptions{}.sew_seconds;
     double settle_seconds = tg::SewingOptions{}.settle_seconds;
     double gap = tg::PlacementOptions{}.gap_mm;
-    int substeps = tg::DrapeOptions{}.substeps;
+    int substeps = tg::DressOptions{}.drape.substeps;
     bool no_self_collision = false;
     bool strict = false;
     bool to_body = false;
@@ -212,8 +212,9 @@ void run_dress(const DressArgs& a) {
               << " (stitch gap max " << std::fixed << std::setprecision(2) << q.stitch_gap_max_mm
               << " mm, " << q.edges_crossing_body << " edges crossing the body, "
               << q.self_intersections << " self-intersections, p95 stretch " << std::setprecision(3)
-              << q.stretch_p95 << ", " << r.report.frames << " frames, " << std::setprecision(1)
-              << r.report.total_seconds << " s)\n";
+              << q.stretch_p95 << ", top " << std::setprecision(0) << q.top_drop_mm
+              << " mm below its placement, " << r.report.frames << " frames, "
+              << std::setprecision(1) << r.report.total_seconds << " s)\n";
 }
 
 }  // namespace

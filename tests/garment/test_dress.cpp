@@ -10,11 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace tg = tapeline::garment;
 namespace tmeas = tapeline::measurement;
@@ -121,9 +123,44 @@ TEST(Dress, ShirtOnTheBundledBody) {
     }
     EXPECT_GE(together, rep.pairs_welded_before_drape);
     // The gates are measured, whatever their outcome, and every figure is finite.
-    ASSERT_EQ(rep.gates.size(), 6u);
+    ASSERT_EQ(rep.gates.size(), 7u);
     for (const tg::Gate& g : rep.gates) {
         EXPECT_TRUE(std::isfinite(g.value)) << g.name;
+    }
+    // The shirt hangs from the shoulders: its top came down from the placement (placed a gap
+    // above the skin), by less than the gate's limit, and the gate reads that figure.
+    EXPECT_GT(rep.quality.top_drop_mm, 0);
+    EXPECT_LT(rep.quality.top_drop_mm, tg::kMaxTopDropMm);
+    double placed_top = -1e300, draped_top = -1e300;
+    for (std::size_t v = 0; v < r.placed.size(); ++v) {
+        placed_top = std::max(placed_top, r.placed[v][1]);
+        draped_top = std::max(draped_top, r.draped[v][1]);
+    }
+    EXPECT_DOUBLE_EQ(rep.quality.top_drop_mm, placed_top - draped_top);
+    EXPECT_EQ(rep.gates.back().name, "top_drop_mm");
+    EXPECT_TRUE(rep.gates.back().passed);
+}
+
+// A garment that slid down or fell off the body fails the top-drop gate whatever the other
+// figures say (at 10 mm and 10 sub-steps the GarmentCode shirt once ended below the feet, its top
+// 1359 mm below the placement, and only this gate said it plainly).
+TEST(Dress, AGarmentThatFellOffFailsTheTopDropGate) {
+    tg::QualityFigures q;
+    q.top_drop_mm = 1359;
+    const std::vector<tg::Gate> gates = tg::quality_gates(q);
+    std::size_t failed = 0;
+    for (const tg::Gate& g : gates) {
+        failed += g.passed ? 0 : 1;
+        if (g.name == "top_drop_mm") {
+            EXPECT_FALSE(g.passed);
+            EXPECT_EQ(g.value, 1359);
+            EXPECT_EQ(g.limit, tg::kMaxTopDropMm);
+        }
+    }
+    EXPECT_EQ(failed, 1u) << "every other figure is at its ideal value";
+    q.top_drop_mm = tg::kMaxTopDropMm;
+    for (const tg::Gate& g : tg::quality_gates(q)) {
+        EXPECT_TRUE(g.passed) << g.name;
     }
 }
 
@@ -281,7 +318,6 @@ TEST(Dress, TShirtComesToRestOutsideTheBody) {
     const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
     tg::DressOptions o;
     o.resolution_mm = 20;
-    o.drape.substeps = 40;
     const tg::DressResult r =
         tg::dress(b.body, b.landmarks, tp::read_pattern_file(file.string()), o);
     const tg::DressReport& rep = r.report;

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -431,6 +432,14 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     // The cloth rests at the clearance from the skin: a triangle within twice that lies on it.
     rep.quality = garment_quality(body.points(), body.triangles(), g, last.moving_fraction, gap_max,
                                   2 * rep.body_clearance_mm);
+    {
+        double placed_top = -std::numeric_limits<double>::infinity(), draped_top = placed_top;
+        for (std::size_t v = 0; v < out.placed.size(); ++v) {
+            placed_top = std::max(placed_top, out.placed[v][1]);
+            draped_top = std::max(draped_top, out.draped[v][1]);
+        }
+        rep.quality.top_drop_mm = out.placed.empty() ? 0.0 : placed_top - draped_top;
+    }
     out.stretch = triangle_stretch(g.positions, g.triangles, g.uv);
     rep.gates = quality_gates(rep.quality);
     rep.passed =

@@ -113,7 +113,8 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"stretch_p95_on_body", q.stretch_p95_on_body},
                     {"stretch_p95_off_body", q.stretch_p95_off_body},
                     {"triangles_on_body_percent", q.triangles_on_body_percent},
-                    {"moving_fraction", q.moving_fraction}};
+                    {"moving_fraction", q.moving_fraction},
+                    {"top_drop_mm", q.top_drop_mm}};
     // Where the first crossings are, in the body's canonical frame (mm; x to the body's left, y
     // up from the floor, z to the front).
     nlohmann::ordered_json crossings = nlohmann::ordered_json::array();
