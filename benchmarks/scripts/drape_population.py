@@ -1,15 +1,16 @@
 #!/usr/bin/python3
 """Runs `tapeline dress` for every pattern on every body (FreeSewing drafts graded to the body
 first with --to-body, from the set they were drafted for) and writes a table: per drape the gates
-(stitch gap, cloth edges crossing the body, depth, self-intersections, p95 stretch, static), the
-success, the vertices and the times; then the success rate, the median time and every failure with
-its reason.
+(stitch gap, cloth edges crossing the body, depth, self-intersections, p95 stretch, static, the
+top's drop from its placement), the success, the vertices and the times; then the success rate, the
+median time and every failure with its reason. With --table-only the table is written again from
+an earlier run's --json file, without running anything.
 
 usage: drape_population.py TAPELINE DATA_DIR OUT.md [--bodies bundled|dev|holdout|all]
                            [--patterns NAME ...] [--resolution MM] [--threads N] [--substeps N]
-                           [--json OUT.jsonl] [--no-grading]
+                           [--json OUT.jsonl] [--no-grading] [--table-only RUN.jsonl]
   DATA_DIR: ../shared/data (bodies/, bodies/population/, patterns/)
-  bundled: the seven bundled MakeHuman bodies; dev: mh_pop_000 ... mh_pop_029;
+  bundled: the bundled MakeHuman bodies (nine); dev: mh_pop_000 ... mh_pop_029;
   holdout: mh_pop_030 ... mh_pop_039 (kept out of development).
 """
 import argparse
@@ -64,7 +65,14 @@ def main():
     ap.add_argument("--json")
     ap.add_argument("--no-grading", action="store_true",
                     help="dress the FreeSewing drafts as drafted (default: --to-body)")
+    ap.add_argument("--table-only", metavar="RUN_JSONL",
+                    help="write the table from this earlier --json output; run nothing")
     a = ap.parse_args()
+    if a.table_only:
+        with open(a.table_only) as f:
+            rows = [json.loads(line) for line in f if line.strip()]
+        write_table(rows, a)
+        return
     rows = []
     work = tempfile.mkdtemp(prefix="drape_")
     todo = [(b, p) for b in bodies(a.data, a.bodies) for p in a.patterns]
@@ -105,6 +113,10 @@ def main():
         with open(a.json, "w") as f:
             for r in rows:
                 f.write(json.dumps(r) + "\n")
+    write_table(rows, a)
+
+
+def write_table(rows, a):
     ok = [r for r in rows if r["passed"]]
     ran = [r for r in rows if "quality" in r]
     lines = ["# Drape benchmark", "",
@@ -117,24 +129,26 @@ def main():
              (len(ok), len(rows), 100.0 * len(ok) / max(len(rows), 1),
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",
              "| body | pattern | passed | gap max mm | edges x body | depth mm | self-x | "
-             "p95 stretch | on body / off | % on body | moving % | vertices | frames | "
-             "ms/step/10k | wall s | reason |",
-             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+             "p95 stretch | on body / off | % on body | moving % | top drop mm | vertices | "
+             "frames | ms/step/10k | wall s | reason |",
+             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     for r in rows:
         if "quality" in r:
             q = r["quality"]
             lines.append("| %s | %s | %s | %.2f | %d | %.2f | %d | %.3f | %.3f / %.3f | %.0f | "
-                         "%.1f | %d | %d | %.0f | %.1f | %s |" % (
+                         "%.1f | %s | %d | %d | %.0f | %.1f | %s |" % (
                              r["body"], r["pattern"], "yes" if r["passed"] else "**no**",
                              q["stitch_gap_max_mm"], q["edges_crossing_body"], q["max_depth_mm"],
                              q["self_intersections"], q["stretch_p95"],
                              q["stretch_p95_on_body"], q["stretch_p95_off_body"],
-                             q["triangles_on_body_percent"], 100 * q["moving_fraction"], r["mesh"]["cloth_vertices"],
+                             q["triangles_on_body_percent"], 100 * q["moving_fraction"],
+                             "%.0f" % q["top_drop_mm"] if "top_drop_mm" in q else "-",
+                             r["mesh"]["cloth_vertices"],
                              r["simulation"]["frames"],
                              r["simulation"]["ms_per_step_per_10k_vertices"], r["wall_seconds"],
                              r["reason"]))
         else:
-            lines.append("| %s | %s | **no** | | | | | | | | | | | | %.1f | %s |" %
+            lines.append("| %s | %s | **no** | | | | | | | | | | | | | %.1f | %s |" %
                          (r["body"], r["pattern"], r["wall_seconds"], r["reason"]))
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")
