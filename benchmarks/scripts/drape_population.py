@@ -37,6 +37,13 @@ PATTERNS = {
 }
 
 
+def to_body_args(data):
+    """`tapeline dress` arguments that grade a FreeSewing draft to the body first, from the set
+    the drafts of ../shared/data were made for."""
+    return ["--to-body", "--from", os.path.join(data, "patterns/freesewing/measurement_sets.json"),
+            "--from-set", "cisFemaleAdult36"]
+
+
 def bodies(data, which):
     out = []
     if which in ("bundled", "all"):
@@ -87,10 +94,7 @@ def main():
         for w in without:
             cmd += ["--without", w]
         if rel.startswith("patterns/freesewing/") and not a.no_grading:
-            # Graded to the body first, from the set the draft was made for.
-            cmd += ["--to-body", "--from",
-                    os.path.join(a.data, "patterns/freesewing/measurement_sets.json"),
-                    "--from-set", "cisFemaleAdult36"]
+            cmd += to_body_args(a.data)
         t0 = time.time()
         p = subprocess.run(cmd, capture_output=True, text=True)
         wall = time.time() - t0

@@ -26,6 +26,9 @@ import time
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from drape_population import to_body_args  # noqa: E402
+
 
 def read_obj(path):
     """Vertices and triangles of an OBJ (v and f lines; f corners as v, v/t or v/t/n)."""
@@ -81,9 +84,7 @@ def main():
         if a.substeps > 0:
             cmd += ["--substeps", str(a.substeps)]
         if "freesewing" in pattern and not a.no_grading:
-            cmd += ["--to-body", "--from",
-                    os.path.join(a.data, "patterns/freesewing/measurement_sets.json"),
-                    "--from-set", "cisFemaleAdult36"]
+            cmd += to_body_args(a.data)
         t0 = time.time()
         p = subprocess.run(cmd, capture_output=True, text=True)
         wall = time.time() - t0
