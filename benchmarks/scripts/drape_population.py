@@ -10,7 +10,7 @@ usage: drape_population.py TAPELINE DATA_DIR OUT.md [--bodies bundled|dev|holdou
                            [--patterns NAME ...] [--resolution MM] [--threads N] [--substeps N]
                            [--json OUT.jsonl] [--no-grading] [--table-only RUN.jsonl]
   DATA_DIR: ../shared/data (bodies/, bodies/population/, patterns/)
-  bundled: the bundled MakeHuman bodies (nine); dev: mh_pop_000 ... mh_pop_029;
+  --bodies: a body file, or bundled: the bundled MakeHuman bodies (nine); dev: mh_pop_000 ... mh_pop_029;
   holdout: mh_pop_030 ... mh_pop_039 (kept out of development).
 """
 import argparse
@@ -45,6 +45,8 @@ def to_body_args(data):
 
 
 def bodies(data, which):
+    if os.path.isfile(which):
+        return [which]  # one body file
     out = []
     if which in ("bundled", "all"):
         for f in sorted(os.listdir(os.path.join(data, "bodies"))):
