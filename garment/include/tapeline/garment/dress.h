@@ -336,7 +336,19 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         Progress progress("dress: sewing", n);
         for (std::size_t f = 0; f < n; ++f) {
             const double sigma = double(f + 1) / double(n);
-            sew.set_attachments(sewing_targets(plan, sigma, o.sewing.compliance));
+            std::vector<Attachment> targets = sewing_targets(plan, sigma, o.sewing.compliance);
+            // A vertex in several pairs is pulled to the mean of its targets, which lies inside
+            // the body when its strings run over different sides of a limb or the neck: a target
+            // closer to the skin than half the strings' offset is lifted back out to the offset
+            // (the exact distance: the grid's is a bound away from the skin).
+            for (Attachment& a : targets) {
+                Vec3 n;
+                const double d = sdf.exact_signed_distance(a.target, &n);
+                if (d < 0.5 * o.sewing.string_offset_mm) {
+                    a.target = vec3::add(a.target, vec3::scale(n, o.sewing.string_offset_mm - d));
+                }
+            }
+            sew.set_attachments(std::move(targets));
             last = sew.step();
             ++frames;
             progress.note("t " + std::to_string(last.simulated_seconds).substr(0, 5) +
