@@ -184,8 +184,8 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
 /// Garments that came to hang from the body dropped 10–78 mm (four tops on the nine bundled
 /// bodies at 20 mm, placed 15 mm off the skin: docs/garment.md); ones that slid off the
 /// shoulders 209 mm, and one that fell off the body 1359 mm. A shirt whose neckline slid only
-/// partly over the shoulders (93 mm) passes: this gate catches a garment that left its place, not
-/// one that sits badly.
+/// partly over the shoulders (by less than the limit) passes: this gate catches a garment that
+/// left its place, not one that sits badly.
 inline constexpr double kMaxTopDropMm = 100;
 
 /// The gates of a successful drape (issue figures): stitch gap ≤ 1 mm, no cloth edge crossing
