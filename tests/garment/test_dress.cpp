@@ -164,8 +164,8 @@ TEST(Dress, ShirtOnAHeavyMuscularBodySewsWithoutBlowingUp) {
 }
 
 // A garment that slid down or fell off the body fails the top-drop gate whatever the other
-// figures say (at 10 mm and 10 sub-steps the GarmentCode shirt once ended below the feet, its top
-// 1359 mm below the placement, and only this gate said it plainly).
+// figures say (at 10 mm and 10 sub-steps the GarmentCode shirt ends below the feet, its top
+// about 1360 mm below the placement, and only this gate says it plainly).
 TEST(Dress, AGarmentThatFellOffFailsTheTopDropGate) {
     tg::QualityFigures q;
     q.top_drop_mm = 1359;

@@ -70,8 +70,8 @@ struct DressOptions {
     /// Solver steps of both phases; a zero body_clearance_mm becomes the larger of the fabric's
     /// thickness and a sixth of resolution_mm. 40 sub-steps per frame by default: with the
     /// solver's own 10, garments at 20 mm and finer are so much softer than their fabric that
-    /// they slide off the shoulders (the GarmentCode shirt's top 209 mm below its placement at
-    /// 20 mm, 51 mm with 40; at 10 mm it fell off the body).
+    /// they slide off the shoulders (the GarmentCode shirt's top 208 mm below its placement at
+    /// 20 mm, 55 mm with 40; at 10 mm it falls off the body).
     DrapeOptions drape = [] {
         DrapeOptions d;
         d.substeps = 40;

@@ -183,7 +183,7 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
 /// Largest drop of the garment's highest point from its placement that a drape passes with, mm.
 /// Garments that came to hang from the body dropped 10–78 mm (four tops on the nine bundled
 /// bodies at 20 mm, placed 15 mm off the skin: docs/garment.md); ones that slid off the
-/// shoulders 209 mm, and one that fell off the body 1359 mm. A shirt whose neckline slid only
+/// shoulders 208 mm, and one that fell off the body 1362 mm. A shirt whose neckline slid only
 /// partly over the shoulders (by less than the limit) passes: this gate catches a garment that
 /// left its place, not one that sits badly.
 inline constexpr double kMaxTopDropMm = 100;
