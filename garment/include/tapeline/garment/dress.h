@@ -28,7 +28,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -336,19 +335,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         Progress progress("dress: sewing", n);
         for (std::size_t f = 0; f < n; ++f) {
             const double sigma = double(f + 1) / double(n);
-            std::vector<Attachment> targets = sewing_targets(plan, sigma, o.sewing.compliance);
-            // A vertex in several pairs is pulled to the mean of its targets, which lies inside
-            // the body when its strings run over different sides of a limb or the neck: a target
-            // closer to the skin than half the strings' offset is lifted back out to the offset
-            // (the exact distance: the grid's is a bound away from the skin).
-            for (Attachment& a : targets) {
-                Vec3 n;
-                const double d = sdf.exact_signed_distance(a.target, &n);
-                if (d < 0.5 * o.sewing.string_offset_mm) {
-                    a.target = vec3::add(a.target, vec3::scale(n, o.sewing.string_offset_mm - d));
-                }
-            }
-            sew.set_attachments(std::move(targets));
+            sew.set_attachments(
+                sewing_targets(plan, sigma, o.sewing.compliance, &sdf, o.sewing.string_offset_mm));
             last = sew.step();
             ++frames;
             progress.note("t " + std::to_string(last.simulated_seconds).substr(0, 5) +
@@ -444,14 +432,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     // The cloth rests at the clearance from the skin: a triangle within twice that lies on it.
     rep.quality = garment_quality(body.points(), body.triangles(), g, last.moving_fraction, gap_max,
                                   2 * rep.body_clearance_mm);
-    {
-        double placed_top = -std::numeric_limits<double>::infinity(), draped_top = placed_top;
-        for (std::size_t v = 0; v < out.placed.size(); ++v) {
-            placed_top = std::max(placed_top, out.placed[v][1]);
-            draped_top = std::max(draped_top, out.draped[v][1]);
-        }
-        rep.quality.top_drop_mm = out.placed.empty() ? 0.0 : placed_top - draped_top;
-    }
+    rep.quality.top_drop_mm = top_drop_mm(out.placed, out.draped);
     out.stretch = triangle_stretch(g.positions, g.triangles, g.uv);
     rep.gates = quality_gates(rep.quality);
     rep.passed =

@@ -180,6 +180,17 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
     return q;
 }
 
+/// How far the highest of the `draped` vertices lies below the highest of the `placed` ones
+/// (the same vertices, canonical frame, y up), mm; 0 when there are none.
+inline double top_drop_mm(const std::vector<Vec3>& placed, const std::vector<Vec3>& draped) {
+    if (placed.empty() || draped.empty()) {
+        return 0;
+    }
+    const auto higher = [](const Vec3& a, const Vec3& b) { return a[1] < b[1]; };
+    return (*std::max_element(placed.begin(), placed.end(), higher))[1] -
+           (*std::max_element(draped.begin(), draped.end(), higher))[1];
+}
+
 /// Largest drop of the garment's highest point from its placement that a drape passes with, mm.
 /// Garments that came to hang from the body dropped 10–78 mm (four tops on the nine bundled
 /// bodies at 20 mm, placed 15 mm off the skin: docs/garment.md); ones that slid off the

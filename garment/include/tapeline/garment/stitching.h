@@ -218,9 +218,15 @@ inline void compute_strings(SewingPlan& plan, const std::vector<Vec3>& positions
 
 /// The pull targets at sewing fraction `sigma` ∈ [0, 1]: a towards arc σ·L/2, b towards
 /// arc L − σ·L/2 of its string. A vertex in several pairs (a corner where seams meet) gets one
-/// attachment, to the mean of its targets: two hard pulls to different points would fight.
+/// attachment, to the mean of its targets: two hard pulls to different points would fight. That
+/// mean lies inside the body when the strings run over different sides of a limb or the neck;
+/// given the `body`, a target closer to its skin than half `offset_mm` (the strings' offset) is
+/// lifted back out to `offset_mm` (by the exact distance: the grid's is a bound away from the
+/// skin).
 inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sigma,
-                                              double compliance) {
+                                              double compliance,
+                                              const SignedDistanceGrid* body = nullptr,
+                                              double offset_mm = 0) {
     std::map<std::uint32_t, std::pair<Vec3, int>> sum;
     const auto add_target = [&](std::uint32_t v, const Vec3& p) {
         auto& e = sum[v];
@@ -236,7 +242,15 @@ inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sig
     std::vector<Attachment> out;
     out.reserve(sum.size());
     for (const auto& [v, e] : sum) {
-        out.push_back({v, vec3::scale(e.first, 1.0 / e.second), compliance});
+        Vec3 target = vec3::scale(e.first, 1.0 / e.second);
+        if (body) {
+            Vec3 n;
+            const double d = body->exact_signed_distance(target, &n);
+            if (d < 0.5 * offset_mm) {
+                target = vec3::add(target, vec3::scale(n, offset_mm - d));
+            }
+        }
+        out.push_back({v, target, compliance});
     }
     return out;
 }
