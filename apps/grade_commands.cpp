@@ -190,10 +190,11 @@ void run_grade(const GradeArgs& a) {
     if (!a.fit_table.empty()) {
         files.push_back({a.fit_table, tg::fit_table(g.report)});
     }
-    for (const auto& [path, text] : files) {
+    for (const auto& file : files) {
+        const std::string& text = file.second;
         outputs.write(
-            path, [&](std::ostream& s) { s.write(text.data(), std::streamsize(text.size())); },
-            true);
+            file.first,
+            [&](std::ostream& s) { s.write(text.data(), std::streamsize(text.size())); }, true);
     }
     outputs.commit();
     if (a.store) {

@@ -56,7 +56,9 @@ public:
         q.push({0.0, source});
         std::vector<std::uint32_t> around;
         while (!q.empty()) {
-            const auto [d, x] = q.top();
+            // Named copies, not a structured binding: lambdas may capture those only from C++20.
+            const double d = q.top().first;
+            const std::uint32_t x = q.top().second;
             q.pop();
             if (d > dist_[x])
                 continue;
