@@ -230,6 +230,10 @@ inline PieceMesh mesh_piece(const Pattern& pat, const Piece& piece,
                            "edge length)");
     }
     C::Mesher mesher(cdt, C::Criteria(o.aspect_bound, o.target_edge_mm));
+    // CGAL 5.5's constructor leaves the seeds' mark uninitialised and refine_mesh() reads it
+    // (UBSan: "load of value 135 ... type 'bool'"); with no seeds the value is not used, and
+    // clear_seeds() gives it one.
+    mesher.clear_seeds();
     mesher.refine_mesh();
 
     // The outline must come out as it went in: m constrained edges between consecutive points.
