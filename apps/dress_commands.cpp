@@ -6,12 +6,12 @@
 // the welded garment in the body's own coordinates and unit, with its quality report (garment
 // module).
 #include "commands.h"
-#include "measured_body.h"
 #include "output.h"
 
+#include <tapeline/bench/dress_run.h>
 #include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
-#include <tapeline/garment/dress.h>
+#include <tapeline/core/mesh_io.h>
 #include <tapeline/garment/fabric.h>
 #include <tapeline/garment/garment_io.h>
 #include <tapeline/garment/picture.h>
@@ -128,15 +128,16 @@ void run_dress(const DressArgs& a) {
         from = sizes::read_measurement_input(a.from, a.from_set);
     }
 
-    const MeasuredBody mb = measured_body(a.body, bo, a.to_body);
-    const tm::Body& body = mb.body;
-    const double measure_seconds = mb.seconds;
-    if (a.to_body) {
-        pat = grade_for_body(pat, *from, *mb.measurements, a.seed, std::size_t(a.threads));
+    const auto loaded = read_triangle_mesh<bench::Mesh>(a.body);
+    bench::DressRun r =
+        bench::dress_mesh(loaded.mesh, bo, std::move(pat), o, from ? &*from : nullptr, a.seed);
+    for (const std::string& w : r.warnings) {
+        std::cerr << "tapeline: warning: " << w << '\n';
     }
-
-    tg::DressResult r = tg::dress(body, mb.landmarks, std::move(pat), o);
-    r.report.measure_seconds = measure_seconds;
+    for (const std::string& note : r.grading_notes) {
+        std::cerr << "tapeline: grading: " << note << '\n';
+    }
+    // The whole command, the mesh's loading included.
     r.report.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
     for (const tg::SeamReport& s : r.report.seams) {
@@ -145,13 +146,7 @@ void run_dress(const DressArgs& a) {
                       << '\n';
         }
     }
-    std::string failed;
-    for (const tg::Gate& g : r.report.gates) {
-        if (!g.passed) {
-            failed += (failed.empty() ? "" : ", ") + g.name + " " + std::to_string(g.value) +
-                      " (limit " + std::to_string(g.limit) + ")";
-        }
-    }
+    const std::string failed = bench::failed_gates(r.report);
     if (!failed.empty()) {
         if (a.strict) {
             throw SolverFailure(a.body +
@@ -161,6 +156,7 @@ void run_dress(const DressArgs& a) {
         }
         std::cerr << "tapeline: warning: quality gates failed: " << failed << '\n';
     }
+    const tm::Body& body = r.body;
     const tm::BodyFrame frame = body.frame;
     const tg::PositionMap to_body = [frame](const tg::Vec3& p) { return frame.to_input(p); };
     outputs.write(a.out,
@@ -181,13 +177,8 @@ void run_dress(const DressArgs& a) {
     }
 #endif
     if (!a.picture.empty()) {
-        // Seams: the welded positions of each seam's pairs, in order.
-        std::vector<std::vector<tg::Vec3>> seams(r.report.seams.size());
-        for (std::size_t k = 0; k < r.sewing.pairs.size(); ++k) {
-            seams[r.sewing.seam_of_pair[k]].push_back(r.draped[r.sewing.pairs[k].a]);
-        }
         const draw::RgbaImage img =
-            tg::dressed_picture(body.points(), body.triangles(), r.garment, r.stretch, seams,
+            tg::dressed_picture(body.points(), body.triangles(), r.garment, r.stretch, r.seam_lines,
                                 std::filesystem::path(a.pattern).filename().string() + " on " +
                                     std::filesystem::path(a.body).filename().string() +
                                     (r.report.passed ? "" : " (quality gates failed)"));
@@ -195,14 +186,7 @@ void run_dress(const DressArgs& a) {
             a.picture, [&](std::ostream& out) { draw::write_png(out, img, 5); }, true);
     }
     if (!a.report.empty()) {
-        nlohmann::ordered_json j;
-        j["body"] = a.body;
-        j["pattern"] = a.pattern;
-        j["units"] = tm::to_string(frame.unit);
-        const nlohmann::ordered_json rep = tg::dress_report_json(r.report, o.fabric, o);
-        for (auto it = rep.begin(); it != rep.end(); ++it) {
-            j[it.key()] = it.value();
-        }
+        nlohmann::ordered_json j = bench::dress_report_json(r, a.body, a.pattern, o);
         outputs.write(a.report, [&](std::ostream& out) { out << j.dump(1) << '\n'; });
     }
     outputs.commit();

@@ -220,28 +220,6 @@ void run_grade(const GradeArgs& a) {
 }  // namespace
 #endif
 
-pattern::Pattern grade_for_body(const pattern::Pattern& base, const sizes::MeasurementSet& from,
-                                const sizes::MeasurementSet& to, std::uint32_t seed,
-                                std::size_t threads) {
-#ifdef TAPELINE_HAVE_GRADING
-    tg::GradingOptions o;
-    o.seed = seed;
-    o.threads = threads;
-    tg::GradeResult g = bench::grade_as_tool(base, from, to, o, true);
-    for (const std::string& note : g.report.notes) {
-        std::cerr << "tapeline: grading: " << note << '\n';
-    }
-    std::cerr << "tapeline: graded " << base.name << " from " << from.name << " to " << to.name
-              << '\n';
-    return std::move(g.pattern);
-#else
-    (void)base, (void)from, (void)to, (void)seed, (void)threads;
-    throw InvalidInput(
-        "--to-body: this tapeline was built without Ceres or pagmo, so it cannot grade "
-        "(install libceres-dev and libpagmo-dev)");
-#endif
-}
-
 void register_grade_commands(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand(
         "grade", "Resize a pattern to a target measurement set, keeping its style");

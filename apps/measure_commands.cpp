@@ -3,7 +3,6 @@
 // ISO 8559-1 and FreeSewing names, the tape loops and paths), optionally as a Seamly2D individual
 // measurement file and as a picture (front and side views with every tape, SVG or PNG).
 #include "commands.h"
-#include "measured_body.h"
 
 #include <tapeline/bench/measure_run.h>
 #include <tapeline/core/atomic_write.h>
@@ -193,26 +192,6 @@ void register_measure_commands(CLI::App& app) {
     cmd->add_flag("--strict", args->strict,
                   "Exit non-zero when a self-check warns (the JSON's \"warnings\")");
     cmd->callback([args] { run_measure(*args); });
-}
-
-MeasuredBody measured_body(const std::string& path, const measurement::BodyOptions& options,
-                           bool with_measurements) {
-    const auto loaded = read_triangle_mesh<MeasureMesh>(path);
-    const auto t0 = std::chrono::steady_clock::now();
-    bench::MeasureRun run = bench::measure_mesh(loaded.mesh, options, {}, with_measurements);
-    MeasuredBody b{std::move(run.body), {}, 0, std::nullopt};
-    tm::BodyMeasurements& m = run.result;
-    if (with_measurements) {
-        const Json j = tm::body_measurements_json(path, m.frame, m.measurements, m.landmarks,
-                                                  m.report, m.warnings);
-        b.measurements = sizes::parse_measurement_json(nlohmann::json::parse(j.dump()), path);
-    }
-    b.landmarks = std::move(m.landmarks);
-    b.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    for (const auto& w : m.report.warnings) {
-        std::cerr << "tapeline: warning: " << w << '\n';
-    }
-    return b;
 }
 
 }  // namespace tapeline::app

@@ -1,0 +1,52 @@
+// A body dressed as `tapeline dress` dresses it: measured (and, given the measurement set the
+// pattern was drafted for, the pattern graded to the body first), the pieces placed, sewn and
+// draped. Compiled once in the harness for the command-line tool and the Python module.
+#pragma once
+
+#include <tapeline/bench/methods.h>
+#include <tapeline/garment/garment_types.h>
+#include <tapeline/garment/quality.h>
+#include <tapeline/measurement/body.h>
+#include <tapeline/pattern/pattern.h>
+#include <tapeline/sizes/measurement_set.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tapeline::bench {
+
+/// The dressed body.
+struct DressRun {
+    measurement::Body body;        ///< the prepared body (canonical frame, mm)
+    garment::GarmentMesh garment;  ///< welded, canonical mm of the body
+    std::vector<double> stretch;   ///< per garment triangle: largest principal stretch
+    /// Per seam of the report, the welded positions of its stitch pairs in order (canonical mm).
+    std::vector<std::vector<garment::Vec3>> seam_lines;
+    garment::DressReport report;        ///< quality gates, seams, pieces, timings
+    std::vector<std::string> warnings;  ///< the measurement's warnings
+    /// When graded to the body: the grading's notes, and "graded P from A to B".
+    std::vector<std::string> grading_notes;
+};
+
+/// make_body(mesh, body_options) and measure_body (every measurement when `base` is given, and
+/// the pattern graded from `base` to them with bench::grade_as_tool and `seed`), then
+/// garment::dress. The report's measure time (body and measurements) and total time (the whole
+/// call) are filled in. Throws as those do;
+/// InvalidInput when `base` is given and this build has no grading.
+DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_options,
+                    pattern::Pattern pattern, const garment::DressOptions& options,
+                    const sizes::MeasurementSet* base = nullptr, std::uint32_t seed = 1);
+
+/// The report `tapeline dress --report` writes: body and pattern names, the body's unit, then
+/// garment::dress_report_json.
+nlohmann::ordered_json dress_report_json(const DressRun& run, const std::string& body,
+                                         const std::string& pattern,
+                                         const garment::DressOptions& options);
+
+/// The failed gates as "name value (limit L), ..." (empty when every gate passed).
+std::string failed_gates(const garment::DressReport& report);
+
+}  // namespace tapeline::bench

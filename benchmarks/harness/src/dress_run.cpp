@@ -1,0 +1,101 @@
+// The dressing pipeline on bench::Mesh (dress_run.h).
+#include <tapeline/bench/dress_run.h>
+
+#include <tapeline/bench/measure_run.h>
+#include <tapeline/core/errors.h>
+#include <tapeline/garment/dress.h>
+#include <tapeline/garment/garment_io.h>
+#include <tapeline/measurement/measurement_json.h>
+#include <tapeline/sizes/json_formats.h>
+#ifdef TAPELINE_HAVE_GRADING
+#include <tapeline/bench/grade_run.h>
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+namespace tapeline::bench {
+
+DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_options,
+                    pattern::Pattern pattern, const garment::DressOptions& options,
+                    const sizes::MeasurementSet* base, std::uint32_t seed) {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
+#ifndef TAPELINE_HAVE_GRADING
+    if (base) {
+        throw InvalidInput(
+            "grading to the body: this tapeline was built without Ceres or pagmo, so it cannot "
+            "grade (install libceres-dev and libpagmo-dev)");
+    }
+#endif
+    MeasureRun m = measure_mesh(mesh, body_options, {}, base != nullptr);
+    const double measure_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    DressRun run;
+    run.body = std::move(m.body);
+    for (const auto& w : m.result.report.warnings) {
+        run.warnings.push_back(w);
+    }
+#ifdef TAPELINE_HAVE_GRADING
+    if (base) {
+        const measurement::BodyMeasurements& r = m.result;
+        const sizes::MeasurementSet to = sizes::parse_measurement_json(
+            nlohmann::json::parse(measurement::body_measurements_json(body_options.name, r.frame,
+                                                                      r.measurements, r.landmarks,
+                                                                      r.report, r.warnings)
+                                      .dump()),
+            body_options.name);
+        grading::GradingOptions go;
+        go.seed = seed;
+        go.threads = std::size_t(std::max(0, options.drape.threads));
+        grading::GradeResult g = grade_as_tool(std::move(pattern), *base, to, go, true);
+        run.grading_notes = g.report.notes;
+        run.grading_notes.push_back("graded " + g.pattern.name + " from " + base->name + " to " +
+                                    to.name);
+        pattern = std::move(g.pattern);
+    }
+#else
+    (void)seed;
+#endif
+
+    garment::DressResult d =
+        garment::dress(run.body, m.result.landmarks, std::move(pattern), options);
+    run.seam_lines.resize(d.report.seams.size());
+    for (std::size_t k = 0; k < d.sewing.pairs.size(); ++k) {
+        run.seam_lines[d.sewing.seam_of_pair[k]].push_back(d.draped[d.sewing.pairs[k].a]);
+    }
+    run.garment = std::move(d.garment);
+    run.stretch = std::move(d.stretch);
+    run.report = std::move(d.report);
+    run.report.measure_seconds = measure_seconds;
+    run.report.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return run;
+}
+
+nlohmann::ordered_json dress_report_json(const DressRun& run, const std::string& body,
+                                         const std::string& pattern,
+                                         const garment::DressOptions& options) {
+    nlohmann::ordered_json j;
+    j["body"] = body;
+    j["pattern"] = pattern;
+    j["units"] = measurement::to_string(run.body.frame.unit);
+    const nlohmann::ordered_json rep =
+        garment::dress_report_json(run.report, options.fabric, options);
+    for (auto it = rep.begin(); it != rep.end(); ++it) {
+        j[it.key()] = it.value();
+    }
+    return j;
+}
+
+std::string failed_gates(const garment::DressReport& report) {
+    std::string failed;
+    for (const garment::Gate& g : report.gates) {
+        if (!g.passed) {
+            failed += (failed.empty() ? "" : ", ") + g.name + " " + std::to_string(g.value) +
+                      " (limit " + std::to_string(g.limit) + ")";
+        }
+    }
+    return failed;
+}
+
+}  // namespace tapeline::bench
