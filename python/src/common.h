@@ -5,6 +5,7 @@
 
 #include <tapeline/bench/methods.h>
 #include <tapeline/core/mesh_io.h>
+#include <tapeline/sizes/measurement_set.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -99,11 +100,12 @@ py::array_t<double> points_array(const PointRange& points) {
 [[noreturn]] void bad_option_value(const char* function, const std::string& key,
                                    const py::object& current, const py::handle& given);
 
-/// Sets the fields of an options object bound with def_readwrite from keyword arguments;
-/// TypeError naming the function and the keyword for one the options do not have.
+/// Sets the fields of an options object bound with def_readwrite (a copy of `start`) from keyword
+/// arguments; TypeError naming the function and the keyword for one the options do not have.
 template <class Options>
-Options options_from(const py::kwargs& kwargs, const char* function) {
-    py::object o = py::cast(Options{});
+Options options_from(const py::kwargs& kwargs, const char* function,
+                     const Options& start = Options{}) {
+    py::object o = py::cast(start);
     for (const auto& item : kwargs) {
         const std::string key = py::str(item.first);
         if (key.empty() || key[0] == '_' || !py::hasattr(o, key.c_str())) {
@@ -122,9 +124,15 @@ Options options_from(const py::kwargs& kwargs, const char* function) {
     return o.cast<Options>();
 }
 
+/// A measurement set given as a file path (any form `tapeline grade --from` reads), a measurement
+/// JSON dict (what tapeline.measure returns) or a flat dict {name: millimetres}; `what` names the
+/// argument in messages.
+sizes::MeasurementSet measurement_set_of(const py::handle& h, const char* what);
+
 void bind_geodesic(py::module_& m);
 void bind_measurement(py::module_& m);
 void bind_pattern(py::module_& m);
 void bind_grading(py::module_& m);
+void bind_garment(py::module_& m);
 
 }  // namespace tapeline::python

@@ -9,7 +9,6 @@
 #include <tapeline/grading/output.h>
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/validate.h>
-#include <tapeline/sizes/read_input.h>
 #endif
 
 #include <pybind11/stl.h>
@@ -22,19 +21,6 @@ namespace tapeline::python {
 namespace {
 
 namespace tg = tapeline::grading;
-
-/// A measurement set given as a file path (any form `tapeline grade --from` reads), a measurement
-/// JSON dict (what tapeline.measure returns) or a flat dict {name: millimetres}.
-sizes::MeasurementSet set_of(const py::handle& h, const char* what) {
-    if (py::isinstance<py::str>(h)) {
-        return sizes::read_measurement_input(h.cast<std::string>());
-    }
-    if (!py::isinstance<py::dict>(h)) {
-        throw py::value_error(std::string(what) +
-                              ": expected a measurement file path or a dict of measurements");
-    }
-    return sizes::measurement_set_from_json(json_of(h, what), what);
-}
 
 template <class T>
 py::array_t<T> column(const std::vector<tg::ParetoPoint>& front, T tg::ParetoPoint::*field) {
@@ -49,8 +35,8 @@ py::tuple grade(const py::dict& pattern, const py::object& base, const py::objec
                 bool freesewing_bindings, const tg::GradingOptions& options) {
     pattern::Pattern p = pattern::from_json(json_of(pattern, "pattern"), "pattern");
     pattern::require_valid(p);
-    const sizes::MeasurementSet from = set_of(base, "base");
-    const sizes::MeasurementSet to = set_of(target, "target");
+    const sizes::MeasurementSet from = measurement_set_of(base, "base");
+    const sizes::MeasurementSet to = measurement_set_of(target, "target");
     tg::GradeResult g;
     {
         InterruptGuard interrupt_guard;

@@ -4,6 +4,7 @@
 
 #include <tapeline/bench/measure_run.h>
 #include <tapeline/measurement/measurement_json.h>
+#include <tapeline/sizes/read_input.h>
 
 #include <pybind11/stl.h>
 
@@ -48,6 +49,17 @@ py::dict measure_arrays(const py::object& V, const py::object& F,
 }
 
 }  // namespace
+
+sizes::MeasurementSet measurement_set_of(const py::handle& h, const char* what) {
+    if (py::isinstance<py::str>(h)) {
+        return sizes::read_measurement_input(h.cast<std::string>());
+    }
+    if (!py::isinstance<py::dict>(h)) {
+        throw py::value_error(std::string(what) +
+                              ": expected a measurement file path or a dict of measurements");
+    }
+    return sizes::measurement_set_from_json(json_of(h, what), what);
+}
 
 void bind_measurement(py::module_& m) {
     const tm::BodyOptions defaults;

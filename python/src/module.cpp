@@ -477,4 +477,5 @@ PYBIND11_MODULE(_tapeline, m) {
     tp::bind_measurement(m);
     tp::bind_pattern(m);
     tp::bind_grading(m);
+    tp::bind_garment(m);
 }

@@ -3,8 +3,10 @@
 #include "common.h"
 
 #include <tapeline/pattern/database.h>
+#include <tapeline/pattern/dxf.h>
 #include <tapeline/pattern/io_detect.h>
 #include <tapeline/pattern/io_json.h>
+#include <tapeline/pattern/png.h>
 #include <tapeline/pattern/svg.h>
 
 #include <pybind11/stl.h>
@@ -114,6 +116,40 @@ void bind_pattern(py::module_& parent) {
         },
         py::arg("pattern"),
         "The pattern drawn at 1:1 in millimetres (SVG text, as `tapeline pattern export --svg`).");
+    m.def(
+        "dxf",
+        [](const py::dict& pattern) {
+            std::ostringstream out;
+            tp::write_dxf(pattern_of(pattern, "pattern"), out);
+            return out.str();
+        },
+        py::arg("pattern"),
+        "The pattern as a DXF-AAMA / ASTM D6673 file (text, as `tapeline pattern export --dxf`).");
+    m.def(
+        "png",
+        [](const py::dict& pattern, double pixels_per_mm) {
+            tp::PngOptions o;
+            o.pixels_per_mm = pixels_per_mm;
+            std::ostringstream out;
+            tp::write_png(pattern_of(pattern, "pattern"), out, o);
+            return py::bytes(out.str());
+        },
+        py::arg("pattern"), py::arg("pixels_per_mm") = tp::PngOptions{}.pixels_per_mm,
+        "The pattern drawn as PNG bytes (as `tapeline pattern export --png`).");
+    m.def(
+        "raster",
+        [](const py::dict& pattern, double pixels_per_mm) {
+            tp::PngOptions o;
+            o.pixels_per_mm = pixels_per_mm;
+            const tp::RgbaImage img = tp::rasterise_pattern(pattern_of(pattern, "pattern"), o);
+            py::array_t<std::uint8_t> out(
+                {py::ssize_t(img.height), py::ssize_t(img.width), py::ssize_t{4}});
+            std::copy(img.rgba.begin(), img.rgba.end(), out.mutable_data());
+            return out;
+        },
+        py::arg("pattern"), py::arg("pixels_per_mm") = tp::PngOptions{}.pixels_per_mm,
+        "The pattern drawn as an RGBA image, a uint8 array (height, width, 4), top row first (the "
+        "pixels of png()).");
     m.def(
         "check",
         [](const py::dict& pattern) { return pattern_dict(pattern_of(pattern, "pattern")); },

@@ -1,5 +1,5 @@
 """Tapeline from Python: geodesic distances and paths, point clouds, body measurement, sewing
-patterns and grading.
+patterns, grading and dressing a body in a pattern.
 
 Arrays in and out are numpy arrays: V float (n, 3), F integer (m, 3). Errors raise
 InvalidInput / TopologyError (ValueError subclasses) and SolverFailure (a RuntimeError) with the
@@ -13,7 +13,8 @@ from ._tapeline import (
     measure,
     read_mesh,
 )
-from . import geodesic, pattern
+from . import garment, geodesic, pattern
+from .garment import dress
 
 try:
     from ._tapeline import EaseMode, GradingOptions, grade
@@ -27,6 +28,8 @@ __all__ = [name for name in [
     "EaseMode",
     "GradingOptions",
     "check_mesh",
+    "dress",
+    "garment",
     "grade",
     "geodesic",
     "measure",

@@ -4,8 +4,10 @@ from typing import Any, Dict, Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
+from . import garment as garment
 from . import geodesic as geodesic
 from . import pattern as pattern
+from .garment import dress as dress
 
 class InvalidInput(ValueError):
     """Bad input: unreadable file, NaN coordinate, out-of-range index, unknown option value."""

@@ -1,5 +1,8 @@
 from typing import Any, Dict, List, Optional
 
+import numpy as np
+import numpy.typing as npt
+
 Pattern = Dict[str, Any]
 
 def read(path: str, format: str = "auto") -> Pattern:
@@ -10,6 +13,15 @@ def write_json(pattern: Pattern, path: str) -> None:
 
 def svg(pattern: Pattern) -> str:
     """The pattern drawn at 1:1 in millimetres, as `tapeline pattern export --svg`."""
+
+def dxf(pattern: Pattern) -> str:
+    """The pattern as a DXF-AAMA / ASTM D6673 file, as `tapeline pattern export --dxf`."""
+
+def png(pattern: Pattern, pixels_per_mm: float = 2.0) -> bytes:
+    """The pattern drawn as PNG bytes, as `tapeline pattern export --png`."""
+
+def raster(pattern: Pattern, pixels_per_mm: float = 2.0) -> npt.NDArray[np.uint8]:
+    """The pattern drawn as an RGBA array (height, width, 4), top row first."""
 
 def check(pattern: Pattern) -> Pattern:
     """The pattern dict as the library reads and writes it (InvalidInput naming a fault)."""

@@ -76,3 +76,69 @@ def test_bad_patterns_are_refused(tmp_path):
     with pytest.raises(tapeline.InvalidInput, match="read-only|read only"):
         pattern.Database(str(tmp_path / "ro.sqlite")).close()
         pattern.Database(str(tmp_path / "ro.sqlite"), read_only=True).store(p)
+
+
+def decode_png(data):
+    """RGBA rows of an 8-bit RGBA PNG (any row filter), decoded here with zlib alone."""
+    import struct
+    import zlib
+    import numpy as np
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, width, height = 8, b"", 0, 0
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
+            assert (depth, colour) == (8, 6), (depth, colour)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + n
+    raw = zlib.decompress(idat)
+    stride, bpp = 4 * width, 4
+    prev, rows = bytearray(stride), []
+    for y in range(height):
+        start = y * (stride + 1)
+        f, line = raw[start], raw[start + 1:start + 1 + stride]
+        row = bytearray(stride)
+        for x in range(stride):
+            a = row[x - bpp] if x >= bpp else 0
+            b = prev[x]
+            c = prev[x - bpp] if x >= bpp else 0
+            if f == 0:
+                pred = 0
+            elif f == 1:
+                pred = a
+            elif f == 2:
+                pred = b
+            elif f == 3:
+                pred = (a + b) // 2
+            else:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                pred = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            row[x] = (line[x] + pred) & 255
+        rows.append(bytes(row))
+        prev = row
+    return np.frombuffer(b"".join(rows), np.uint8).reshape(height, width, 4)
+
+
+def test_dxf_and_png_equal_the_command_line(cli, tmp_path):
+    p = pattern.read(AARON)
+    db = tmp_path / "p.sqlite"
+    with pattern.Database(str(db)) as d:
+        d.store(p)
+        stored = d.get(p["name"])
+    dxf, png = tmp_path / "a.dxf", tmp_path / "a.png"
+    cli("pattern", "export", p["name"], "--db", str(db), "--dxf", str(dxf), "--png", str(png),
+        "--pixels-per-mm", "0.25")
+    assert pattern.dxf(stored) == dxf.read_text()
+    data = pattern.png(stored, pixels_per_mm=0.25)
+    assert data == png.read_bytes()
+    # The raster is the PNG's pixels (decoded independently), ink on a white page.
+    image = pattern.raster(stored, pixels_per_mm=0.25)
+    assert image.dtype.name == "uint8" and image.shape[2] == 4
+    assert (image == decode_png(data)).all()
+    assert (image[..., :3] < 128).any() and (image[0, 0] == 255).all()
+    with pytest.raises(tapeline.InvalidInput, match="resolution|pixels"):
+        pattern.raster(stored, pixels_per_mm=0)

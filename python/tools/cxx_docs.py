@@ -10,6 +10,9 @@ import re
 import sys
 
 STRUCT = re.compile(r"^(?:struct|class)\s+(\w+)\s*(?::\s*(?:public\s+)?([\w:]+))?\s*\{")
+# A data member initialised by an immediately invoked lambda: `Type name = [] {` (the body
+# follows on the next lines).
+LAMBDA_FIELD = re.compile(r"^\s*[\w:<>]+\s+(\w+)\s*=\s*\[\]\s*\{\s*$")
 # A data member: type, one or more names (with initialisers), a semicolon; not a function.
 FIELD = re.compile(r"^\s*(?:[\w:]+(?:<[^;()]*>)?[\s*&]+)+(\w+)\s*(?:=[^,;]*|\{[^;]*\})?"
                    r"((?:\s*,\s*\w+\s*(?:=[^,;]*)?)*)\s*;\s*(?:///<\s*(.*))?$")
@@ -55,6 +58,14 @@ def parse(path, docs, bases):
                 continue
             if stripped.startswith("///"):
                 pending.append(stripped[3:])
+                continue
+            m = LAMBDA_FIELD.match(line)
+            if m:
+                text = clean(pending) or (group or "")
+                if text:
+                    docs[f"{struct}.{m.group(1)}"] = text
+                pending = []
+                depth += line.count("{") - line.count("}")
                 continue
             m = FIELD.match(line)
             if m and "(" not in line.split("///")[0].split("=")[0]:

@@ -1,0 +1,14 @@
+"""A body dressed in a pattern (placement, sewing along geodesic strings, the drape and its quality
+gates) and the fabric library."""
+from ._tapeline import garment as _g
+
+dress = _g.dress
+fabrics = _g.fabrics
+fabric = _g.fabric
+DressOptions = _g.DressOptions
+PlacementOptions = _g.PlacementOptions
+SewingOptions = _g.SewingOptions
+DrapeOptions = _g.DrapeOptions
+
+__all__ = ["dress", "fabrics", "fabric", "DressOptions", "PlacementOptions", "SewingOptions",
+           "DrapeOptions"]
