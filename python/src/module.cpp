@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <exception>
 #include <limits>
 #include <map>
@@ -85,15 +86,18 @@ std::vector<std::vector<std::size_t>> triangle_rows(const py::handle& F, const c
     }
     const auto f = py::array_t<std::int64_t, py::array::forcecast>(a);
     const auto r = f.unchecked<2>();
-    std::vector<std::vector<std::size_t>> rows(static_cast<std::size_t>(r.shape(0)));
+    std::vector<std::vector<std::size_t>> rows;
+    rows.reserve(static_cast<std::size_t>(r.shape(0)));
     for (py::ssize_t i = 0; i < r.shape(0); ++i) {
         for (py::ssize_t k = 0; k < 3; ++k) {
             if (r(i, k) < 0) {
                 throw py::value_error(std::string(what) + ": face " + std::to_string(i) +
                                       " has a negative vertex index " + std::to_string(r(i, k)));
             }
-            rows[static_cast<std::size_t>(i)].push_back(static_cast<std::size_t>(r(i, k)));
         }
+        // One allocation per face (the soup's face type).
+        rows.push_back({static_cast<std::size_t>(r(i, 0)), static_cast<std::size_t>(r(i, 1)),
+                        static_cast<std::size_t>(r(i, 2))});
     }
     return rows;
 }
@@ -263,11 +267,11 @@ std::vector<double> float_rows(const py::handle& array, const char* what, std::s
 std::shared_ptr<const ArrayMesh> mesh_from_arrays(const py::handle& V, const py::handle& F,
                                                   const std::string& name, bool strict) {
     std::size_t n = 0, dim = 0;
-    const std::vector<double> xyz = float_rows(V, "V", n, dim, 3);
+    std::vector<double> xyz = float_rows(V, "V", n, dim, 3);
     std::vector<std::array<double, 3>> points(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        points[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
-    }
+    static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double));
+    std::memcpy(points.data(), xyz.data(), 3 * n * sizeof(double));  // same layout, rows of 3
+    xyz = {};
     const auto rows = triangle_rows(F, "F");
     auto out = std::make_shared<ArrayMesh>();
     out->faces.reserve(rows.size());
