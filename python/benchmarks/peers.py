@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Tapeline's geodesics from Python next to potpourri3d's (geometry-central's Python bindings).
+"""Tapeline's geodesics from Python next to potpourri3d's (geometry-central's Python bindings)
+and libigl's exact geodesic.
 
 On each mesh, from 3 fixed source vertices (0, n/3, 2n/3), the script measures:
 
@@ -16,6 +17,10 @@ On each mesh, from 3 fixed source vertices (0, n/3, 2n/3), the script measures:
   mean and max |d - exact| / max(exact) over the vertices. On a mesh whose vertices all lie on
   the unit sphere, every method is also compared with the great-circle distance
   arccos(p_s . p_i), the smooth truth;
+- exact distances next to libigl's igl.exact_geodesic (Kirsanov's implementation of MMP, with
+  the signature of libigl's Python bindings exact_geodesic(v, f, vs, vt)) when a module `igl`
+  with that function is importable: time per source and the largest difference from Tapeline's
+  exact-mmp (both exact: they should agree to rounding);
 - shortest paths between 3 fixed vertex pairs: potpourri3d EdgeFlipGeodesicSolver
   find_geodesic_path (edge flips from a Dijkstra path) and tapeline CurvatureFlowPathSolver.path,
   their lengths relative to tapeline ExactMmpSolver.path (exact, timed once: construction and
@@ -24,8 +29,8 @@ On each mesh, from 3 fixed source vertices (0, n/3, 2n/3), the script measures:
 Times are wall-clock medians of --repeat runs around the Python calls. By default the process
 is pinned to one CPU before either library is loaded, so both run single-threaded; the
 cpu/wall column (process CPU time over wall time of the timed calls, maximum) shows whether a
-library used more than one thread. When potpourri3d cannot be imported the script says so and
-prints Tapeline's rows only. Nothing is downloaded.
+library used more than one thread. When potpourri3d or igl cannot be imported the script says
+so and prints Tapeline's rows only. Nothing is downloaded.
 
     PYTHONPATH=build/python:/path/to/potpourri3d /usr/bin/python3 python/benchmarks/peers.py \\
         [MESH ...] [--repeat 5] [--threads 1|all] [--peer-commits "potpourri3d abc1234, ..."]
@@ -78,6 +83,15 @@ except ImportError as e:  # the peer is optional: Tapeline's rows are printed wi
     pp3d = None
     PP3D_ERROR = str(e)
 
+try:
+    import igl  # noqa: E402
+    IGL_ERROR = None if hasattr(igl, "exact_geodesic") else "igl has no exact_geodesic"
+except ImportError as e:
+    igl = None
+    IGL_ERROR = str(e)
+if IGL_ERROR:
+    igl = None
+
 
 class Clock:
     """Wall and process-CPU time of timed calls; keeps the largest cpu/wall ratio seen."""
@@ -94,7 +108,7 @@ class Clock:
         return wall, out
 
 
-CLOCK = {"tapeline": Clock(), "potpourri3d": Clock()}
+CLOCK = {"tapeline": Clock(), "potpourri3d": Clock(), "libigl": Clock()}
 
 
 def rel_errors(d, ref):
@@ -184,12 +198,14 @@ def main():
             pp_version += f" ({a.peer_commits})"
     else:
         pp_version = f"potpourri3d not importable ({PP3D_ERROR}): Tapeline's rows only"
-    print(f"# Tapeline {tl_head} vs {pp_version}")
+    igl_version = ("libigl exact_geodesic from " + os.path.dirname(igl.__file__)
+                   if igl is not None else f"libigl not importable ({IGL_ERROR})")
+    print(f"# Tapeline {tl_head} vs {pp_version}; {igl_version}")
     print(f"medians of {a.repeat} runs; threads: "
           f"{'pinned to one CPU' if a.threads == '1' else 'unrestricted'}; "
           f"load average at start {os.getloadavg()[0]:.2f} on {os.cpu_count()} CPUs\n")
 
-    heat_rows, source_rows, path_rows = [], [], []
+    heat_rows, source_rows, path_rows, exact_rows = [], [], [], []
     for path in a.meshes:
         V, F, _ = tapeline.read_mesh(path)
         V = np.ascontiguousarray(V, dtype=np.float64)
@@ -210,6 +226,24 @@ def main():
             exact_t.append(t)
             if sphere:
                 truth[s] = great_circle(V, s)
+        if igl is not None:
+            print("  libigl exact_geodesic", file=sys.stderr)
+            everyone = np.arange(n, dtype=np.int32)
+            Fi = F.astype(np.int32)
+            igl_t, igl_err, igl_sph = [], [], []
+            for s in sources:
+                t, d = CLOCK["libigl"](lambda: igl.exact_geodesic(
+                    V, Fi, np.array([s], dtype=np.int32), everyone))
+                d = np.asarray(d, dtype=float)
+                igl_t.append(t)
+                igl_err.append(rel_errors(d, exact[s])[1])
+                if sphere:
+                    igl_sph.append(rel_errors(d, truth[s])[1])
+            exact_rows.append({"mesh": name, "n": n, "tl": statistics.median(exact_t),
+                               "igl": statistics.median(igl_t), "diff": max(igl_err),
+                               "tl_sph": max(rel_errors(exact[s], truth[s])[1] for s in sources)
+                               if sphere else None,
+                               "igl_sph": max(igl_sph) if sphere else None})
         ex_sphere = None
         if sphere:
             ex_sphere = [rel_errors(exact[s], truth[s]) for s in sources]
@@ -300,6 +334,18 @@ def main():
     print("\nexact-mmp: one run per source, the query column is the whole call "
           "(construction and propagation).")
 
+    if exact_rows:
+        print("\n## Exact distances: Tapeline exact-mmp and libigl exact_geodesic "
+              "(one source per call, all vertices as targets; median over the 3 sources)\n")
+        print("| mesh | V | tapeline s | libigl s | ratio T/L "
+              "| max abs difference / max distance | vs great circle max tapeline "
+              "| vs great circle max libigl |")
+        print("|---|---:|---:|---:|---:|---:|---:|---:|")
+        for r in exact_rows:
+            print(f"| {r['mesh']} | {r['n']} | {r['tl']:.4f} | {r['igl']:.4f} "
+                  f"| {fmt(ratio(r['tl'], r['igl']), '.2f')} | {r['diff']:.2e} "
+                  f"| {fmt(r['tl_sph'], '.2e')} | {fmt(r['igl_sph'], '.2e')} |")
+
     print("\n## Per source: max |d - exact| / max(exact)\n")
     print("| mesh | method | source | tapeline | pp3d |")
     print("|---|---|---:|---:|---:|")
@@ -326,7 +372,8 @@ def main():
 
     print("\nmax cpu/wall of the timed calls (about 1: one thread): "
           + ", ".join(f"{lib} {c.max_ratio:.2f}" for lib, c in CLOCK.items()
-                      if lib == "tapeline" or pp3d is not None))
+                      if lib == "tapeline" or (lib == "potpourri3d" and pp3d is not None)
+                      or (lib == "libigl" and igl is not None)))
     print(f"load average at end {os.getloadavg()[0]:.2f}")
 
 
