@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The Python module on the bundled data: exact, heat and curvature-flow geodesics on the spot
-cow, and the tape measurements of the bundled body.
+cow, the tape measurements of the bundled body, and the body dressed in the bundled shirt.
 
     PYTHONPATH=build/python /usr/bin/python3 python/examples/quickstart.py [data-dir]
 """
@@ -10,7 +10,7 @@ import sys
 import numpy as np
 
 import tapeline
-from tapeline import geodesic
+from tapeline import geodesic, pattern
 
 data = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "..",
                                                           "data")
@@ -34,3 +34,11 @@ for name in ["bust_girth", "waist_girth", "hip_girth", "neck_girth"]:
     if x:
         print(f"  {name:>12}: {x['value_mm']:7.1f} mm  ISO 8559-1 {x['iso_number']}, "
               f"FreeSewing '{x['freesewing_name']}'")
+
+shirt = pattern.read(os.path.join(data, "patterns", "shirt_mean_specification.json"))
+d = tapeline.dress(V, F, shirt, units="dm", resolution_mm=30)  # a coarse cloth: seconds
+r = d["report"]
+failed = [g["name"] for g in r["gates"] if not g["passed"]]
+print(f"shirt on it: {len(d['V'])} vertices, {len(d['F'])} triangles, p95 stretch "
+      f"{r['quality']['stretch_p95']:.3f}, quality gates "
+      + ("passed" if not failed else "failed: " + ", ".join(failed)))

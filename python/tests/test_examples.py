@@ -14,3 +14,4 @@ def test_quickstart_runs():
     assert done.returncode == 0, done.stderr
     assert "spot.obj: 2930 vertices, 5856 triangles" in done.stdout
     assert "waist_girth" in done.stdout and "ISO 8559-1" in done.stdout
+    assert "shirt on it: " in done.stdout and "quality gates" in done.stdout

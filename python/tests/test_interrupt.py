@@ -39,3 +39,34 @@ def test_ctrl_c_interrupts_exact_distances():
     waited = time.perf_counter() - sent
     assert out.startswith("interrupted"), (out, err)
     assert waited < 10, f"the call went on {waited:.1f} s after Ctrl-C"
+
+
+DRESS_CHILD = r"""
+import os, sys, time
+import tapeline
+from tapeline import pattern
+data = sys.argv[1]
+V, F, _ = tapeline.read_mesh(os.path.join(data, "bodies", "mh_female_average.obj"))
+shirt = pattern.read(os.path.join(data, "patterns", "shirt_mean_specification.json"))
+print("ready", flush=True)
+t0 = time.perf_counter()
+try:
+    tapeline.dress(V, F, shirt, units="dm")  # 10 mm cloth: about a minute of frames
+    print("finished %.2f" % (time.perf_counter() - t0), flush=True)
+except KeyboardInterrupt as e:
+    print("interrupted %.2f %s" % (time.perf_counter() - t0, e), flush=True)
+"""
+
+
+def test_ctrl_c_interrupts_a_drape():
+    from conftest import DATA
+    child = subprocess.Popen([sys.executable, "-c", DRESS_CHILD, DATA], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True, env=os.environ.copy())
+    assert child.stdout.readline().strip() == "ready"
+    time.sleep(5.0)  # past the body's distance grid, into the frames
+    sent = time.perf_counter()
+    child.send_signal(signal.SIGINT)
+    out, err = child.communicate(timeout=300)
+    waited = time.perf_counter() - sent
+    assert out.startswith("interrupted"), (out, err)
+    assert waited < 10, f"the drape went on {waited:.1f} s after Ctrl-C"
