@@ -22,6 +22,7 @@ void register_grade_commands(CLI::App& app);
 void register_measure_commands(CLI::App& app);
 void register_dress_commands(CLI::App& app);
 void register_fabric_commands(CLI::App& app);
+void register_batch_commands(CLI::App& app);
 
 /// --projection (mls or plane) of gcf-points into `options`, its default shown from `options`.
 void add_projection_option(CLI::App* cmd, geodesic::PointCloudDistanceOptions& options,

@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
     tapeline::app::register_measure_commands(app);
     tapeline::app::register_dress_commands(app);
     tapeline::app::register_fabric_commands(app);
+    tapeline::app::register_batch_commands(app);
     check_option_values(app);
     try {
         check_command_words(app, argc, argv);

@@ -970,6 +970,151 @@ PY
 then ok "dress --to-body grades the pattern to the body first"; else fail "dress --to-body: $(tail -c 300 tb_err.txt)"; fi
 fi
 
+# --- batch ---------------------------------------------------------------------------------------
+# A manifest of jobs run restartably: refusals name the file and line and write nothing; a run
+# records every job in its results database and the measure step writes what `tapeline measure`
+# writes; --resume skips done jobs and retries failed ones; a run killed mid-job (locally, or one
+# MPI rank) and resumed gives the outputs of an uninterrupted run, every job done once.
+if in_section batch; then
+body="$root/data/bodies/mh_female_average.obj"
+fsm="$root/data/patterns/aaron_cisFemaleAdult36_measurements.json"
+printf '{"body": "%s", "units": "dm", "steps": ["measure"]}\n{"body": x}\n' "$body" >bad1.jsonl
+expect_fail "batch: a line that is not JSON" "bad1.jsonl:2: not a JSON object" "$bin" batch bad1.jsonl --out res
+printf '{"body": "%s", "unit": "dm"}\n' "$body" >bad2.jsonl
+expect_fail "batch: an unknown key" "bad2.jsonl:1: unknown key 'unit'" "$bin" batch bad2.jsonl --out res
+printf '{"units": "dm", "steps": ["measure"]}\n' >bad3.jsonl
+expect_fail "batch: no body" "bad3.jsonl:1: missing 'body'" "$bin" batch bad3.jsonl --out res
+printf '{"body": "%s", "steps": ["measure", "wash"]}\n' "$body" >bad4.jsonl
+expect_fail "batch: an unknown step" "bad4.jsonl:1: unknown step \"wash\"" "$bin" batch bad4.jsonl --out res
+printf '{"body": "%s", "pattern": "%s"}\n' "$body" "$fs" >bad5.jsonl
+expect_fail "batch: grading without the base set" "bad5.jsonl:1: the grade step needs 'from'" "$bin" batch bad5.jsonl --out res
+printf '{"body": "%s", "pattern": "%s", "steps": ["dress"], "options": {"resolution": 30}}\n' "$body" "$fs" >bad6.jsonl
+expect_fail "batch: an unknown option" "bad6.jsonl:1: unknown option 'resolution'" "$bin" batch bad6.jsonl --out res
+printf '{"body": "%s", "pattern": "%s", "steps": ["dress"], "options": {"threads": -2}}\n' "$body" "$fs" >bad7.jsonl
+expect_fail "batch: an option of the wrong type" "bad7.jsonl:1: option 'threads' has the wrong type" "$bin" batch bad7.jsonl --out res
+printf '{"bodies": "%s/nothing_*.obj", "steps": ["measure"]}\n' "$root" >bad8.jsonl
+expect_fail "batch: a glob that matches nothing" "bad8.jsonl:1: 'bodies' .* matches no file" "$bin" batch bad8.jsonl --out res
+printf '{"body": "%s", "pattern": "%s", "steps": ["dress"], "fabric": "tweed"}\n' "$body" "$fs" >bad9.jsonl
+expect_fail "batch: an unknown fabric" "unknown fabric 'tweed'" "$bin" batch bad9.jsonl --out res
+expect_fail "batch: a missing manifest" "nope.jsonl: cannot open" "$bin" batch nope.jsonl --out res
+if [ -e res ]; then fail "batch: a refusal left the results folder"; else ok "batch: refusals write nothing"; fi
+
+# Two measure jobs, one measure-grade-dress job (placement only), one job on a missing body.
+cat >jobs.jsonl <<J
+# the bundled body measured twice, dressed once; a body that does not exist
+{"id": "m1", "body": "$body", "units": "dm", "steps": ["measure"]}
+{"id": "m2", "body": "$body", "units": "dm", "steps": ["measure"]}
+{"body": "$body", "units": "dm", "pattern": "$fs", "from": "$fsm", "options": {"resolution_mm": 30, "sew_seconds": 0, "settle_seconds": 0, "without": ["aaron.armBinding", "aaron.neckBinding"], "threads": 1, "population": 16, "generations": 4}}
+{"id": "lost", "body": "$root/data/bodies/nobody.obj", "units": "dm", "steps": ["measure"]}
+J
+"$bin" batch jobs.jsonl --out res >out.txt 2>err.txt; rc=$?
+if [ $rc -eq 1 ] && grep -q "3 of 4 jobs done, 1 failed (first: lost: .*nobody.obj" out.txt; then ok "batch: a failed job fails the run, others done"
+else fail "batch: run (exit $rc): $(head -c 300 out.txt) $(head -c 300 err.txt)"; fi
+expect_ok "measure the same body" "$bin" measure "$body" --units dm --out m.json
+if $py - "$root" <<'PY'
+import json, sqlite3, sys
+def strip(x):
+    if isinstance(x, dict):
+        return {k: strip(v) for k, v in x.items() if "seconds" not in k}
+    if isinstance(x, list):
+        return [strip(v) for v in x]
+    return x
+ref = strip(json.load(open("m.json")))
+for job in ["m1", "m2", "mh_female_average__aaron_cisFemaleAdult36"]:
+    assert strip(json.load(open(f"res/jobs/{job}/measure.json"))) == ref, job
+for f in ["graded.json", "grade.json", "dressed.obj", "dress.json"]:
+    assert open(f"res/jobs/mh_female_average__aaron_cisFemaleAdult36/{f}").read(1), f
+rows = sqlite3.connect("res/batch.sqlite").execute(
+    "select id, status, attempts, error from jobs order by idx").fetchall()
+assert [r[:3] for r in rows] == [("m1", "done", 1), ("m2", "done", 1),
+                                 ("mh_female_average__aaron_cisFemaleAdult36", "done", 1),
+                                 ("lost", "failed", 1)], rows
+assert "nobody.obj" in rows[3][3], rows[3]
+s = json.load(open("res/summary.json"))
+assert s["counts"] == {"done": 3, "failed": 1}, s["counts"]
+assert s["failures"][0]["jobs"] == ["lost"], s["failures"]
+m = s["jobs"][0]["outcome"]["measurements"]
+assert m["waist_girth"] == next(x["value_mm"] for x in ref["measurements"] if x["name"] == "waist_girth")
+assert "| lost | failed |" in open("res/summary.md").read()
+PY
+then ok "batch: measure.json as tapeline measure, statuses, summary"; else fail "batch: outputs"; fi
+expect_fail "batch: the results folder holds a batch" "holds a batch already" "$bin" batch jobs.jsonl --out res
+sed 's/"m2"/"m3"/' jobs.jsonl >changed.jsonl
+expect_fail "batch: --resume with another manifest" "differs from job 'm2'" "$bin" batch changed.jsonl --out res --resume
+stamp=$(stat -c %Y res/jobs/m1/measure.json)
+"$bin" batch jobs.jsonl --out res --resume --retries 0 >out.txt 2>err.txt; rc=$?
+"$bin" batch jobs.jsonl --out res --resume >out2.txt 2>err2.txt; rc2=$?
+if [ $rc -eq 1 ] && [ $rc2 -eq 1 ] && grep -q "0 jobs to run" err.txt && grep -q "1 jobs to run" err2.txt &&
+   grep -q "(3 by an earlier run)" out2.txt && [ "$(stat -c %Y res/jobs/m1/measure.json)" = "$stamp" ] &&
+   [ "$($py -c 'import sqlite3; print(sqlite3.connect("res/batch.sqlite").execute("select attempts from jobs where id=\"lost\"").fetchone()[0])')" = 2 ]
+then ok "batch: --resume skips done jobs, retries failed ones up to --retries"
+else fail "batch: resume (exit $rc $rc2): $(head -c 300 err.txt) $(head -c 300 err2.txt)"; fi
+
+# Six dressing jobs (placement only, one thread each): uninterrupted, killed and resumed, over MPI.
+: >six.jsonl
+for k in 1 2 3 4 5 6; do
+  printf '{"id": "d%s", "body": "%s", "units": "dm", "pattern": "%s", "steps": ["dress"], "options": {"resolution_mm": %s, "sew_seconds": 0.1, "settle_seconds": 0, "without": ["aaron.armBinding", "aaron.neckBinding"], "threads": 1}}\n' \
+    $k "$body" "$fs" $((26 + k)) >>six.jsonl
+done
+same_outputs() {  # same_outputs DIR: every job's files equal those of the uninterrupted run
+  $py - "$1" <<'PY'
+import json, sqlite3, sys
+def strip(x):
+    if isinstance(x, dict):
+        # wall times differ from run to run; everything else must not
+        return {k: strip(v) for k, v in x.items() if "seconds" not in k and not k.startswith("ms_per")}
+    if isinstance(x, list):
+        return [strip(v) for v in x]
+    return x
+d = sys.argv[1]
+for k in range(1, 7):
+    assert open(f"{d}/jobs/d{k}/dressed.obj").read() == open(f"full/jobs/d{k}/dressed.obj").read(), k
+    assert strip(json.load(open(f"{d}/jobs/d{k}/dress.json"))) == strip(json.load(open(f"full/jobs/d{k}/dress.json"))), k
+rows = sqlite3.connect(f"{d}/batch.sqlite").execute("select status from jobs").fetchall()
+assert rows == [("done",)] * 6, rows
+import os
+assert sorted(os.listdir(f"{d}/jobs")) == [f"d{k}" for k in range(1, 7)], os.listdir(f"{d}/jobs")
+PY
+}
+expect_ok "batch: six dressing jobs" "$bin" batch six.jsonl --out full
+# Killed with SIGKILL once two jobs are done (the third under way), then resumed.
+"$bin" batch six.jsonl --out killed >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 1 600); do
+  [ "$(ls killed/jobs 2>/dev/null | grep -c '^d')" -ge 2 ] && break; sleep 0.05
+done
+kill -9 $pid 2>/dev/null; wait $pid 2>/dev/null
+before=$(ls killed/jobs | grep -c '^d')
+if [ "$before" -lt 6 ] && "$bin" batch six.jsonl --out killed --resume >out.txt 2>err.txt && same_outputs killed
+then ok "batch: killed after $before jobs and resumed: the outputs of an uninterrupted run"
+else fail "batch: kill and resume ($before jobs before): $(head -c 300 err.txt)"; fi
+mpi=$(command -v mpirun || true)
+"$bin" batch bad3.jsonl --out x 2>err.txt
+if [ -n "$mpi" ] && ! grep -q "built without MPI" err.txt; then
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" batch six.jsonl --out mpi >out.txt 2>err.txt; rc=$?
+  if [ $rc -eq 0 ] && grep -q "6 jobs over 2 MPI ranks" err.txt && same_outputs mpi &&
+     [ "$($py -c 'import sqlite3; print(sorted({r[0] for r in sqlite3.connect("mpi/batch.sqlite").execute("select rank from jobs")}))')" = "[0, 1]" ]
+  then ok "batch: mpirun -np 2: jobs on both ranks, the outputs of the local run"
+  else fail "batch: mpirun (exit $rc): $(head -c 400 err.txt)"; fi
+  # A worker rank killed mid-run ends the MPI run; resuming (here, without MPI) finishes it.
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" batch six.jsonl --out mpikill >/dev/null 2>&1 &
+  mpid=$!
+  for _ in $(seq 1 600); do
+    [ "$(ls mpikill/jobs 2>/dev/null | grep -c '^d')" -ge 2 ] && break; sleep 0.05
+  done
+  worker=$(pgrep -f "batch six.jsonl --out mpikill" | while read -r p; do
+    [ "$(tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -c '^OMPI_COMM_WORLD_RANK=1$')" = 1 ] && echo "$p"; done | head -1)
+  [ -n "$worker" ] && kill -9 "$worker"
+  wait $mpid 2>/dev/null
+  before=$(ls mpikill/jobs | grep -c '^d')
+  if [ -n "$worker" ] && "$bin" batch six.jsonl --out mpikill --resume >out.txt 2>err.txt && same_outputs mpikill
+  then ok "batch: an MPI worker killed after $before jobs, resumed: the outputs of an uninterrupted run"
+  else fail "batch: MPI worker kill (worker '$worker', $before jobs): $(head -c 300 err.txt)"; fi
+else
+  ok "batch: MPI checks skipped (no mpirun, or built without MPI)"
+fi
+fi
+
 # --- fabric --------------------------------------------------------------------------------------
 # The library, KES/FAST conversion checked against the published formulas (computed here, not by
 # the tool), refusals that name the key and write nothing, a converted fabric used by dress, and

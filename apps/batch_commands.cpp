@@ -1,0 +1,397 @@
+// `tapeline batch JOBS --out RESULTS [--resume] [--retries N]`: every job of a manifest (measure →
+// grade → dress) run once, restartably, locally or over MPI ranks (`mpirun -np N tapeline batch
+// ...`): rank 0 keeps the results database and hands out jobs one at a time (jobs differ 100× in
+// cost), every rank runs jobs (rank 0 in a second thread), TBB inside each job.
+#include "batch_jobs.h"
+#include "commands.h"
+
+#include <tapeline/core/errors.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#ifdef TAPELINE_HAVE_MPI
+#include <mpi.h>
+#endif
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace tapeline::app {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using batch::JobRow;
+using batch::JobSpec;
+
+struct BatchArgs {
+    std::string jobs, out;
+    bool resume = false;
+    int retries = 2;
+};
+
+/// What a worker reports of a job.
+struct Result {
+    int index = -1;
+    bool done = false;
+    std::string error;
+    double seconds = 0;
+    std::string outcome;
+};
+
+/// Runs job `index` into RESULTS/jobs/<id>: the files are written into a private folder that is
+/// renamed into place when every step is done, so a job's outputs are all there or none.
+Result execute(const std::vector<JobSpec>& jobs, int index, const fs::path& out, int rank) {
+    const JobSpec& job = jobs[std::size_t(index)];
+    const auto t0 = std::chrono::steady_clock::now();
+    Result r;
+    r.index = index;
+    const fs::path final_dir = out / "jobs" / job.id;
+    const fs::path tmp =
+        out / "jobs" /
+        ("." + job.id + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(rank));
+    try {
+        fs::remove_all(tmp);
+        const Json outcome = batch::run_job(job, tmp.string());
+        fs::remove_all(final_dir);  // left by a run killed between the rename and the record
+        fs::rename(tmp, final_dir);
+        r.done = true;
+        r.outcome = outcome.dump();
+    } catch (const std::exception& e) {
+        std::error_code ec;
+        fs::remove_all(tmp, ec);
+        std::string line = e.what();
+        for (char& c : line) {
+            c = (c == '\n' || c == '\r') ? ' ' : c;
+        }
+        r.error = line;
+    }
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+}
+
+/// The coordinator's side: the database, the queue, the progress lines.
+class Coordinator {
+public:
+    Coordinator(const BatchArgs& a, const std::vector<JobSpec>& jobs)
+        : args_(a), jobs_(jobs), out_(a.out) {
+        fs::create_directories(out_ / "jobs");
+        const fs::path db_path = out_ / "batch.sqlite";
+        const bool existed = fs::exists(db_path);
+        if (existed && !a.resume) {
+            throw InvalidInput(a.out +
+                               " holds a batch already (batch.sqlite): add --resume to continue "
+                               "it, or give another --out");
+        }
+        db_ = std::make_unique<batch::ResultsDb>(db_path.string(), true);
+        std::vector<JobRow> rows = db_->rows();
+        if (!existed || rows.empty()) {
+            for (std::size_t i = 0; i < jobs.size(); ++i) {
+                JobRow r;
+                r.index = int(i);
+                r.id = jobs[i].id;
+                r.spec = jobs[i].spec();
+                r.status = "pending";
+                db_->insert(r);
+            }
+            rows = db_->rows();
+        }
+        if (rows.size() != jobs.size()) {
+            throw InvalidInput(a.jobs + ": " + std::to_string(jobs.size()) +
+                               " jobs, but the batch in " + a.out + " has " +
+                               std::to_string(rows.size()) +
+                               " (the manifest changed: give another --out)");
+        }
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            if (rows[i].id != jobs[i].id || rows[i].spec != jobs[i].spec()) {
+                throw InvalidInput(a.jobs + ": job '" + jobs[i].id + "' differs from job '" +
+                                   rows[i].id + "' of the batch in " + a.out +
+                                   " (the manifest changed: give another --out)");
+            }
+        }
+        // Stale private folders of killed runs.
+        for (const auto& e : fs::directory_iterator(out_ / "jobs")) {
+            const std::string name = e.path().filename().string();
+            if (name.size() > 1 && name[0] == '.' && name.find(".tmp.") != std::string::npos) {
+                fs::remove_all(e.path());
+            }
+        }
+        for (const JobRow& r : rows) {
+            if (r.status == "done") {
+                ++skipped_;
+                continue;
+            }
+            if (r.status == "running") {
+                db_->set_status(r.index, "pending");  // its run was killed: back to the queue
+            }
+            if (r.status == "failed" && r.attempts > args_.retries) {
+                ++given_up_;
+                continue;
+            }
+            queue_.push_back(r.index);
+        }
+        total_ = queue_.size();
+    }
+
+    bool next(int& index) {
+        if (queue_.empty()) {
+            return false;
+        }
+        index = queue_.front();
+        queue_.pop_front();
+        return true;
+    }
+    void started(int index, const std::string& host, int rank) { db_->start(index, host, rank); }
+    void finished(const Result& r, const std::string& host, int rank) {
+        db_->finish(r.index, r.done, r.error, r.seconds, r.outcome);
+        ++finished_;
+        failed_ += r.done ? 0 : 1;
+        std::cerr << "tapeline: batch: [" << finished_ << "/" << total_ << "] "
+                  << (r.done ? "done " : "FAILED ") << jobs_[std::size_t(r.index)].id << " ("
+                  << std::fixed;
+        std::cerr.precision(1);
+        std::cerr << r.seconds << " s, rank " << rank << " on " << host << ")"
+                  << (r.done ? "" : ": " + r.error) << '\n';
+    }
+    std::size_t queued() const { return total_; }
+    std::size_t skipped() const { return skipped_; }
+
+    /// Writes the summary; returns the exit status (0: every job done).
+    int close() {
+        const std::vector<JobRow> rows = db_->rows();
+        batch::write_summary(out_.string(), rows);
+        std::size_t done = 0, failed = 0;
+        std::string first;
+        for (const JobRow& r : rows) {
+            done += r.status == "done";
+            if (r.status == "failed") {
+                ++failed;
+                if (first.empty()) {
+                    first = r.id + ": " + r.error;
+                }
+            }
+        }
+        std::cout << args_.out << ": " << done << " of " << rows.size() << " jobs done";
+        if (skipped_) {
+            std::cout << " (" << skipped_ << " by an earlier run)";
+        }
+        if (failed) {
+            std::cout << ", " << failed << " failed (first: " << first << ")";
+        }
+        std::cout << "; summary in " << (out_ / "summary.md").string() << '\n';
+        return failed || done != rows.size() ? 1 : 0;
+    }
+
+private:
+    const BatchArgs& args_;
+    const std::vector<JobSpec>& jobs_;
+    fs::path out_;
+    std::unique_ptr<batch::ResultsDb> db_;
+    std::deque<int> queue_;
+    std::size_t total_ = 0, skipped_ = 0, given_up_ = 0, finished_ = 0, failed_ = 0;
+};
+
+int run_local(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
+    Coordinator c(a, jobs);
+    const std::string host = batch::host_name();
+    std::cerr << "tapeline: batch: " << c.queued() << " jobs to run here, one at a time"
+              << (c.skipped() ? " (" + std::to_string(c.skipped()) + " done before)" : "") << '\n';
+    int index = 0;
+    while (c.next(index)) {
+        c.started(index, host, 0);
+        c.finished(execute(jobs, index, a.out, 0), host, 0);
+    }
+    return c.close();
+}
+
+#ifdef TAPELINE_HAVE_MPI
+constexpr int kTagWork = 1;  // worker → coordinator: a request, with the previous job's result
+constexpr int kTagJob = 2;   // coordinator → worker: a job index, -1 to stop
+
+/// Whether an MPI launcher (mpirun, srun) started this process.
+bool launched_by_mpi() {
+    for (const char* v :
+         {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK", "SLURM_STEP_NUM_TASKS"}) {
+        if (std::getenv(v)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void send_json(const Json& j, int to, int tag) {
+    const std::string s = j.dump();
+    MPI_Send(s.data(), int(s.size()), MPI_CHAR, to, tag, MPI_COMM_WORLD);
+}
+
+Json receive_json(int from, int tag, int* source) {
+    MPI_Status st;
+    MPI_Probe(from, tag, MPI_COMM_WORLD, &st);
+    int n = 0;
+    MPI_Get_count(&st, MPI_CHAR, &n);
+    std::string s(std::size_t(n), '\0');
+    MPI_Recv(s.data(), n, MPI_CHAR, st.MPI_SOURCE, tag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (source) {
+        *source = st.MPI_SOURCE;
+    }
+    return Json::parse(s);
+}
+
+/// A worker: asks for a job, runs it, reports it with the next request, until told to stop.
+void worker(const std::vector<JobSpec>& jobs, const std::string& out, int rank) {
+    Json request = {{"host", batch::host_name()}};
+    for (;;) {
+        send_json(request, 0, kTagWork);
+        int index = -1;
+        MPI_Recv(&index, 1, MPI_INT, 0, kTagJob, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (index < 0) {
+            return;
+        }
+        const Result r = execute(jobs, index, out, rank);
+        request["result"] = {{"index", r.index},
+                             {"done", r.done},
+                             {"error", r.error},
+                             {"seconds", r.seconds},
+                             {"outcome", r.outcome}};
+    }
+}
+
+/// Rank 0's coordinator: answers every worker's request with the next job, records results.
+void coordinate(Coordinator& c, int ranks) {
+    int active = ranks;
+    while (active > 0) {
+        int source = 0;
+        const Json msg = receive_json(MPI_ANY_SOURCE, kTagWork, &source);
+        const std::string host = msg.value("host", std::string("unknown"));
+        if (msg.contains("result")) {
+            const Json& r = msg["result"];
+            Result res;
+            res.index = r["index"].get<int>();
+            res.done = r["done"].get<bool>();
+            res.error = r["error"].get<std::string>();
+            res.seconds = r["seconds"].get<double>();
+            res.outcome = r["outcome"].get<std::string>();
+            c.finished(res, host, source);
+        }
+        int index = -1;
+        if (c.next(index)) {
+            c.started(index, host, source);
+        } else {
+            --active;
+        }
+        MPI_Send(&index, 1, MPI_INT, source, kTagJob, MPI_COMM_WORLD);
+    }
+}
+
+int run_mpi(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
+    int provided = 0;
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_MULTIPLE, &provided);
+    struct Finalize {
+        ~Finalize() { MPI_Finalize(); }
+    } finalize;
+    int rank = 0, ranks = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks);
+    // Rank 0 opens the database and decides; every rank learns whether to go on.
+    std::unique_ptr<Coordinator> c;
+    int ok = 1;
+    std::string refusal;
+    if (rank == 0) {
+        try {
+            c = std::make_unique<Coordinator>(a, jobs);
+        } catch (const std::exception& e) {
+            ok = 0;
+            refusal = e.what();
+        }
+    }
+    MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (!ok) {
+        if (rank == 0) {
+            throw InvalidInput(refusal);
+        }
+        return 2;
+    }
+    if (rank != 0) {
+        worker(jobs, a.out, rank);
+        return 0;
+    }
+    const bool threaded = provided >= MPI_THREAD_MULTIPLE;
+    std::cerr << "tapeline: batch: " << c->queued() << " jobs over " << ranks << " MPI ranks"
+              << (threaded ? " (rank 0 coordinates and runs jobs)"
+                           : " (rank 0 only coordinates: MPI without thread support)")
+              << '\n';
+    if (threaded) {
+        std::thread local([&] { worker(jobs, a.out, 0); });
+        coordinate(*c, ranks);
+        local.join();
+    } else {
+        coordinate(*c, ranks - 1 > 0 ? ranks - 1 : 0);
+        if (ranks == 1) {
+            int index = 0;
+            const std::string host = batch::host_name();
+            while (c->next(index)) {
+                c->started(index, host, 0);
+                c->finished(execute(jobs, index, a.out, 0), host, 0);
+            }
+        }
+    }
+    return c->close();
+}
+#endif
+
+int run_batch(const BatchArgs& a) {
+    if (a.retries < 0) {
+        throw InvalidInput("--retries must be >= 0");
+    }
+    const std::vector<JobSpec> jobs = batch::read_manifest(a.jobs);
+#ifdef TAPELINE_HAVE_MPI
+    if (launched_by_mpi()) {
+        return run_mpi(a, jobs);
+    }
+    std::cerr << "tapeline: batch: not started by an MPI launcher (mpirun, srun): running here\n";
+#else
+    std::cerr << "tapeline: batch: built without MPI (Debian libopenmpi-dev): running here\n";
+#endif
+    return run_local(a, jobs);
+}
+
+}  // namespace
+
+void register_batch_commands(CLI::App& app) {
+    auto a = std::make_shared<BatchArgs>();
+    CLI::App* cmd = app.add_subcommand(
+        "batch",
+        "Run a manifest of jobs (measure, grade, dress per body and pattern), restartably, here "
+        "or over MPI ranks (mpirun -np N tapeline batch ...)");
+    cmd->add_option("JOBS", a->jobs,
+                    "Job manifest: JSON lines, one job per line (body, units, pattern, from, "
+                    "fabric, steps, options), or bodies (a glob) × patterns (a list)")
+        ->required();
+    cmd->add_option("--out", a->out, "Results folder (job outputs, batch.sqlite, summary)")
+        ->required();
+    cmd->add_flag("--resume", a->resume,
+                  "Continue the batch in --out: skip done jobs, retry failed ones");
+    cmd->add_option("--retries", a->retries,
+                    "With --resume: retry a failed job while it has failed at most this often")
+        ->capture_default_str();
+    cmd->callback([a] {
+        const int status = run_batch(*a);
+        if (status != 0) {
+            std::exit(status);
+        }
+    });
+}
+
+}  // namespace tapeline::app
