@@ -153,9 +153,15 @@ public:
         queue_.pop_front();
         return true;
     }
-    void started(int index, const std::string& host, int rank) { db_->start(index, host, rank); }
+    void started(int index, const std::string& host, int rank) {
+        const auto t0 = std::chrono::steady_clock::now();
+        db_->start(index, host, rank);
+        busy_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
     void finished(const Result& r, const std::string& host, int rank) {
+        const auto t0 = std::chrono::steady_clock::now();
         db_->finish(r.index, r.done, r.error, r.seconds, r.outcome);
+        busy_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ++finished_;
         failed_ += r.done ? 0 : 1;
         std::cerr << "tapeline: batch: [" << finished_ << "/" << total_ << "] "
@@ -168,10 +174,20 @@ public:
     std::size_t queued() const { return total_; }
     std::size_t skipped() const { return skipped_; }
 
+    /// Time the coordinator spends on a message besides the database (MPI receive and send).
+    void add_busy(double seconds) { busy_ += seconds; }
+
     /// Writes the summary; returns the exit status (0: every job done).
-    int close() {
+    int close(int ranks) {
         const std::vector<JobRow> rows = db_->rows();
-        batch::write_summary(out_.string(), rows);
+        const double wall =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double per_job = finished_ ? 1000 * busy_ / double(finished_) : 0.0;
+        batch::write_summary(out_.string(), rows,
+                             {{"ranks", ranks},
+                              {"jobs_run", finished_},
+                              {"wall_seconds", wall},
+                              {"coordinator_ms_per_job", per_job}});
         std::size_t done = 0, failed = 0;
         std::string first;
         for (const JobRow& r : rows) {
@@ -201,6 +217,8 @@ private:
     std::unique_ptr<batch::ResultsDb> db_;
     std::deque<int> queue_;
     std::size_t total_ = 0, skipped_ = 0, given_up_ = 0, finished_ = 0, failed_ = 0;
+    double busy_ = 0;  ///< the coordinator's own work: database updates, messages
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 int run_local(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
@@ -213,7 +231,7 @@ int run_local(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
         c.started(index, host, 0);
         c.finished(execute(jobs, index, a.out, 0), host, 0);
     }
-    return c.close();
+    return c.close(1);
 }
 
 #ifdef TAPELINE_HAVE_MPI
@@ -291,7 +309,9 @@ void coordinate(Coordinator& c, int ranks) {
         } else {
             --active;
         }
+        const auto t0 = std::chrono::steady_clock::now();
         MPI_Send(&index, 1, MPI_INT, source, kTagJob, MPI_COMM_WORLD);
+        c.add_busy(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
 }
 
@@ -347,7 +367,7 @@ int run_mpi(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
             }
         }
     }
-    return c->close();
+    return c->close(ranks);
 }
 #endif
 

@@ -10,6 +10,7 @@
 #include <tapeline/core/mesh_io.h>
 #include <tapeline/garment/fabric.h>
 #include <tapeline/garment/garment_io.h>
+#include <tapeline/garment/picture.h>
 #include <tapeline/measurement/measurement_json.h>
 #include <tapeline/pattern/io_json.h>
 #include <tapeline/pattern/validate.h>
@@ -21,6 +22,7 @@
 #endif
 
 #include <glob.h>
+#include <png.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -136,6 +138,25 @@ void write_text(const fs::path& path, const std::string& text) {
     if (!out) {
         throw InvalidInput(path.string() + ": cannot be written");
     }
+}
+
+/// An RGBA image from a PNG file (libpng's simplified reader).
+draw::RgbaImage read_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, path.c_str())) {
+        throw InvalidInput(path + ": not a readable PNG (" + image.message + ")");
+    }
+    image.format = PNG_FORMAT_RGBA;
+    draw::RgbaImage img;
+    img.width = image.width;
+    img.height = image.height;
+    img.rgba.resize(PNG_IMAGE_SIZE(image));
+    if (!png_image_finish_read(&image, nullptr, img.rgba.data(), 0, nullptr)) {
+        png_image_free(&image);
+        throw InvalidInput(path + ": not a readable PNG (" + image.message + ")");
+    }
+    return img;
 }
 
 }  // namespace
@@ -443,6 +464,11 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
         write_text(fs::path(dir) / "dressed.obj", obj.str());
         write_text(fs::path(dir) / "dress.json",
                    bench::dress_report_json(r, job.body, job.pattern, d).dump(1) + "\n");
+        // The thumbnail of the contact sheet: front, side and back, small.
+        const draw::RgbaImage thumb =
+            tg::dressed_picture(r.body.points(), r.body.triangles(), r.garment, r.stretch,
+                                r.seam_lines, job.id, 0.025, 4);
+        draw::write_png((fs::path(dir) / "thumb.png").string(), thumb, 4);
         Json failed = Json::array();
         for (const tg::Gate& g : r.report.gates) {
             if (!g.passed) {
@@ -618,7 +644,8 @@ std::string host_name() {
 
 // --- summary ----------------------------------------------------------------------------------
 
-void write_summary(const std::string& out_dir, const std::vector<JobRow>& rows) {
+void write_summary(const std::string& out_dir, const std::vector<JobRow>& rows,
+                   const nlohmann::json& run) {
     // The measurements shown per body: the main girths and lengths, in this order.
     const std::vector<std::string> shown = {
         "bust_girth",  "underbust_girth", "waist_girth",         "hip_girth",         "neck_girth",
@@ -698,7 +725,14 @@ void write_summary(const std::string& out_dir, const std::vector<JobRow>& rows) 
         counts_json[status] = n;
         md << " " << n << " " << status << ";";
     }
-    md << "\n\n## Measurements per body (mm)\n\n" << body_table.str();
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "This run: %d rank(s), %d job(s) in %.1f s; the coordinator's bookkeeping "
+                  "%.3f ms per job.",
+                  run.value("ranks", 1), run.value("jobs_run", 0), run.value("wall_seconds", 0.0),
+                  run.value("coordinator_ms_per_job", 0.0));
+    md << "\n\n" << line << "\n";
+    md << "\n## Measurements per body (mm)\n\n" << body_table.str();
     md << "\n## Jobs\n\n" << job_table.str();
     Json failures_json = Json::array();
     if (!failures.empty()) {
@@ -712,7 +746,32 @@ void write_summary(const std::string& out_dir, const std::vector<JobRow>& rows) 
             md << "| " << reason << " | " << list << " |\n";
         }
     }
-    Json summary = {{"counts", counts_json}, {"jobs", jobs}, {"failures", failures_json}};
+    // The contact sheet: every dressed job's thumbnail, in job order, four to a row.
+    std::vector<draw::RgbaImage> thumbs;
+    for (const JobRow& r : rows) {
+        const fs::path t = fs::path(out_dir) / "jobs" / r.id / "thumb.png";
+        if (r.status == "done" && fs::exists(t)) {
+            thumbs.push_back(read_png(t.string()));
+        }
+    }
+    if (!thumbs.empty()) {
+        std::size_t w = 0, h = 0;
+        for (const auto& t : thumbs) {
+            w = std::max(w, t.width);
+            h = std::max(h, t.height);
+        }
+        const std::size_t columns = std::min<std::size_t>(4, thumbs.size());
+        const std::size_t rows_n = (thumbs.size() + columns - 1) / columns;
+        draw::RgbaImage sheet = draw::RgbaImage::filled(columns * w, rows_n * h, 255);
+        draw::Canvas canvas(sheet, 4);
+        for (std::size_t i = 0; i < thumbs.size(); ++i) {
+            canvas.paste(thumbs[i], long((i % columns) * w), long((i / columns) * h));
+        }
+        draw::write_png((fs::path(out_dir) / "contact_sheet.png").string(), sheet, 4);
+        md << "\n![contact sheet](contact_sheet.png)\n";
+    }
+    Json summary = {
+        {"counts", counts_json}, {"run", run}, {"jobs", jobs}, {"failures", failures_json}};
     OutputFiles outputs({(fs::path(out_dir) / "summary.json").string(),
                          (fs::path(out_dir) / "summary.md").string()});
     outputs.write((fs::path(out_dir) / "summary.json").string(),

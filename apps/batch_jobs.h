@@ -75,7 +75,9 @@ double now_seconds();
 /// This machine's host name.
 std::string host_name();
 
-/// summary.json and summary.md of a batch from its database rows (written atomically).
-void write_summary(const std::string& out_dir, const std::vector<JobRow>& rows);
+/// summary.json, summary.md and contact_sheet.png of a batch from its database rows (written
+/// atomically); `run` (ranks, wall time, the coordinator's time per job) goes into the summary.
+void write_summary(const std::string& out_dir, const std::vector<JobRow>& rows,
+                   const nlohmann::json& run);
 
 }  // namespace tapeline::app::batch

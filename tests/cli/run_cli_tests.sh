@@ -1077,6 +1077,20 @@ assert sorted(os.listdir(f"{d}/jobs")) == [f"d{k}" for k in range(1, 7)], os.lis
 PY
 }
 expect_ok "batch: six dressing jobs" "$bin" batch six.jsonl --out full
+if $py - <<'PY'
+import json, struct
+s = json.load(open("full/summary.json"))
+assert s["run"]["jobs_run"] == 6 and s["run"]["ranks"] == 1, s["run"]
+assert all(j["outcome"]["dress"]["garment_vertices"] > 0 for j in s["jobs"]), s["jobs"]
+sheet = open("full/contact_sheet.png", "rb").read()
+assert sheet[:8] == bytes([0x89]) + b"PNG" + bytes([13, 10, 26, 10])
+w, h = struct.unpack(">II", sheet[16:24])
+sizes = [struct.unpack(">II", open(f"full/jobs/d{k}/thumb.png", "rb").read()[16:24])
+         for k in range(1, 7)]
+tw, th = max(x[0] for x in sizes), max(x[1] for x in sizes)
+assert (w, h) == (4 * tw, 2 * th), (w, h, sizes)  # six thumbnails, four to a row
+PY
+then ok "batch: summary of the run and its contact sheet"; else fail "batch: contact sheet"; fi
 # Killed with SIGKILL once two jobs are done (the third under way), then resumed.
 "$bin" batch six.jsonl --out killed >/dev/null 2>&1 &
 pid=$!
