@@ -255,8 +255,16 @@ void send_json(const Json& j, int to, int tag) {
 }
 
 Json receive_json(int from, int tag, int* source) {
+    // Polled with a short sleep: a blocking probe spins in Open MPI's progress loop and would
+    // take a core from the jobs (rank 0 also runs jobs); 2 ms of latency per job is nothing.
     MPI_Status st;
-    MPI_Probe(from, tag, MPI_COMM_WORLD, &st);
+    for (int flag = 0;;) {
+        MPI_Iprobe(from, tag, MPI_COMM_WORLD, &flag, &st);
+        if (flag) {
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
     int n = 0;
     MPI_Get_count(&st, MPI_CHAR, &n);
     std::string s(std::size_t(n), '\0');
