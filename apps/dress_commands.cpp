@@ -107,13 +107,8 @@ void run_dress(const DressArgs& a) {
     o.drape.self_collision = !a.no_self_collision;
     o.without_pieces = a.without;
 
-    tm::BodyOptions bo;
-    bo.name = a.body;
-    if (!a.units.empty()) {
-        bo.unit = tm::parse_length_unit(a.units, "--units");
-    }
-    bo.up = tm::Axis::parse(a.up, "--up");
-    bo.front = tm::Axis::parse(a.front, "--front");
+    const tm::BodyOptions bo = tm::parse_body_options(a.body, a.units, a.up, a.front,
+                                                      tm::to_string(tm::BodyOptions{}.pose), "--");
     if (a.to_body && a.from.empty()) {
         throw InvalidInput(
             "--to-body needs --from: the measurement set the pattern was drafted for");

@@ -81,14 +81,8 @@ void check_output(const std::string& path, const std::string& ext, const std::st
 void run_measure(const MeasureArgs& a) {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
-    tm::BodyOptions body;
-    body.name = a.body;
-    if (!a.units.empty()) {
-        body.unit = tm::parse_length_unit(a.units, "--units");
-    }
-    body.up = tm::Axis::parse(a.up, "--up");
-    body.front = tm::Axis::parse(a.front, "--front");
-    body.pose = tm::parse_pose(a.pose, "--pose");
+    const tm::BodyOptions body =
+        tm::parse_body_options(a.body, a.units, a.up, a.front, a.pose, "--");
     check_output(a.out, ".json", "--out");
     if (!a.vit.empty()) {
         check_output(a.vit, ".vit", "--vit");

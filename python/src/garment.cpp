@@ -49,13 +49,8 @@ py::dict dress_arrays(const py::object& V, const py::object& F, const py::dict& 
                       const std::string& front, const std::string& name, const py::object& fabric,
                       const py::object& base, std::uint32_t seed, bool strict,
                       tgm::DressOptions options) {
-    tm::BodyOptions body;
-    body.name = name;
-    if (units) {
-        body.unit = tm::parse_length_unit(*units, "units");
-    }
-    body.up = tm::Axis::parse(up, "up");
-    body.front = tm::Axis::parse(front, "front");
+    const tm::BodyOptions body = tm::parse_body_options(name, units.value_or(""), up, front,
+                                                        tm::to_string(tm::BodyOptions{}.pose));
     options.fabric = fabric_of(fabric).params;
     pattern::Pattern p = pattern::from_json(json_of(pattern, "pattern"), "pattern");
     pattern::require_valid(p);

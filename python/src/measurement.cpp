@@ -21,14 +21,8 @@ py::dict measure_arrays(const py::object& V, const py::object& F,
                         const std::optional<std::string>& units, const std::string& up,
                         const std::string& front, const std::string& pose,
                         const py::object& landmarks, const std::string& name) {
-    tm::BodyOptions options;
-    options.name = name;
-    if (units) {
-        options.unit = tm::parse_length_unit(*units, "units");
-    }
-    options.up = tm::Axis::parse(up, "up");
-    options.front = tm::Axis::parse(front, "front");
-    options.pose = tm::parse_pose(pose, "pose");
+    const tm::BodyOptions options =
+        tm::parse_body_options(name, units.value_or(""), up, front, pose);
     tm::LandmarkOverrides overrides;
     if (!landmarks.is_none()) {
         // A dict in the landmark-override format ({"frame": ..., "landmarks": {...}}).

@@ -101,6 +101,24 @@ struct BodyOptions {
     std::string name = "body";       ///< used in messages (the file name, usually)
 };
 
+/// BodyOptions from its settings as a user types them: `unit` "m", "dm", "cm" or "mm" (empty:
+/// inferred from the height), `up` and `front` axes ("+Y", "-z", ...), `pose` "A" or "T".
+/// InvalidInput naming `prefix` + the setting ("--units" for the tool, "units" for a keyword
+/// argument) on anything else, an empty axis or pose included.
+inline BodyOptions parse_body_options(const std::string& name, const std::string& unit,
+                                      const std::string& up, const std::string& front,
+                                      const std::string& pose, const std::string& prefix = "") {
+    BodyOptions o;
+    o.name = name;
+    if (!unit.empty()) {
+        o.unit = parse_length_unit(unit, prefix + "units");
+    }
+    o.up = Axis::parse(up, prefix + "up");
+    o.front = Axis::parse(front, prefix + "front");
+    o.pose = parse_pose(pose, prefix + "pose");
+    return o;
+}
+
 /// A hole of the input mesh (a loop of boundary edges) that make_body filled (holes.h).
 struct BodyHole {
     double size = 0;       ///< largest distance between two of its boundary vertices, mm
