@@ -98,6 +98,7 @@ public:
         db_ = std::make_unique<batch::ResultsDb>(db_path.string(), true);
         std::vector<JobRow> rows = db_->rows();
         if (!existed || rows.empty()) {
+            const batch::Transaction transaction(*db_);  // one commit for every job
             for (std::size_t i = 0; i < jobs.size(); ++i) {
                 JobRow r;
                 r.index = int(i);

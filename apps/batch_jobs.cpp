@@ -210,9 +210,12 @@ std::vector<JobSpec> read_manifest(const std::string& path) {
         }
         JobSpec t;
         t.units = string_key(j, "units", where);
-        t.up = string_key(j, "up", where);
-        t.front = string_key(j, "front", where);
-        t.pose = string_key(j, "pose", where);
+        // Axes and pose as given, else the defaults of `tapeline measure`.
+        const tm::BodyOptions defaults;
+        t.up = j.contains("up") ? string_key(j, "up", where) : defaults.up.to_string();
+        t.front = j.contains("front") ? string_key(j, "front", where) : defaults.front.to_string();
+        t.pose = j.contains("pose") ? string_key(j, "pose", where) : tm::to_string(defaults.pose);
+        (void)tm::parse_body_options("", t.units, t.up, t.front, t.pose, where + ": ");
         t.db = resolved(string_key(j, "db", where), base);
         t.from = resolved(string_key(j, "from", where), base);
         t.from_set = string_key(j, "from_set", where);
@@ -348,20 +351,8 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
         return std::count(job.steps.begin(), job.steps.end(), step) > 0;
     };
     const Json& o = job.options;
-    tm::BodyOptions bo;
-    bo.name = job.body;
-    if (!job.units.empty()) {
-        bo.unit = tm::parse_length_unit(job.units, "units");
-    }
-    if (!job.up.empty()) {
-        bo.up = tm::Axis::parse(job.up, "up");
-    }
-    if (!job.front.empty()) {
-        bo.front = tm::Axis::parse(job.front, "front");
-    }
-    if (!job.pose.empty()) {
-        bo.pose = tm::parse_pose(job.pose, "pose");
-    }
+    const tm::BodyOptions bo =
+        tm::parse_body_options(job.body, job.units, job.up, job.front, job.pose);
     Json outcome = Json::object();
     const auto t0 = Clock::now();
     const auto loaded = read_triangle_mesh<bench::Mesh>(job.body);

@@ -8,6 +8,7 @@
 
 #include <sqlite3.h>
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -63,11 +64,31 @@ public:
     void finish(int index, bool done, const std::string& error, double seconds,
                 const std::string& outcome);
     void set_status(int index, const std::string& status);
+    /// Runs one SQL statement without results (BEGIN, COMMIT, ...).
+    void exec(const std::string& sql);
 
 private:
-    void exec(const std::string& sql);
     sqlite3* db_ = nullptr;
     std::string path_;
+};
+
+/// A transaction on the results database: committed at the end of its scope, rolled back when
+/// the scope is left by an exception.
+class Transaction {
+public:
+    explicit Transaction(ResultsDb& db) : db_(db) { db_.exec("BEGIN"); }
+    ~Transaction() {
+        try {
+            db_.exec(std::uncaught_exceptions() > count_ ? "ROLLBACK" : "COMMIT");
+        } catch (...) {
+        }
+    }
+    Transaction(const Transaction&) = delete;
+    Transaction& operator=(const Transaction&) = delete;
+
+private:
+    ResultsDb& db_;
+    int count_ = std::uncaught_exceptions();
 };
 
 /// Seconds since the epoch (database times).

@@ -996,6 +996,8 @@ printf '{"bodies": "%s/nothing_*.obj", "steps": ["measure"]}\n' "$root" >bad8.js
 expect_fail "batch: a glob that matches nothing" "bad8.jsonl:1: 'bodies' .* matches no file" "$bin" batch bad8.jsonl --out res
 printf '{"body": "%s", "pattern": "%s", "steps": ["dress"], "fabric": "tweed"}\n' "$body" "$fs" >bad9.jsonl
 expect_fail "batch: an unknown fabric" "unknown fabric 'tweed'" "$bin" batch bad9.jsonl --out res
+printf '{"body": "%s", "units": "furlong", "steps": ["measure"]}\n' "$body" >bad10.jsonl
+expect_fail "batch: an unknown unit" "bad10.jsonl:1: units" "$bin" batch bad10.jsonl --out res
 expect_fail "batch: a missing manifest" "nope.jsonl: cannot open" "$bin" batch nope.jsonl --out res
 if [ -e res ]; then fail "batch: a refusal left the results folder"; else ok "batch: refusals write nothing"; fi
 
@@ -1049,6 +1051,11 @@ if [ $rc -eq 1 ] && [ $rc2 -eq 1 ] && grep -q "0 jobs to run" err.txt && grep -q
    [ "$($py -c 'import sqlite3; print(sqlite3.connect("res/batch.sqlite").execute("select attempts from jobs where id=\"lost\"").fetchone()[0])')" = 2 ]
 then ok "batch: --resume skips done jobs, retries failed ones up to --retries"
 else fail "batch: resume (exit $rc $rc2): $(head -c 300 err.txt) $(head -c 300 err2.txt)"; fi
+
+printf '{"id": "m", "body": "%s", "units": "dm", "steps": ["measure"]}\n' "$body" >one.jsonl
+expect_ok "batch: --resume on a folder without a batch" "$bin" batch one.jsonl --out fresh --resume
+if [ -s fresh/jobs/m/measure.json ]; then ok "batch: --resume on a new folder starts the batch"
+else fail "batch: --resume on a new folder"; fi
 
 # Six dressing jobs (placement only, one thread each): uninterrupted, killed and resumed, over MPI.
 : >six.jsonl
