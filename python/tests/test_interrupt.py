@@ -63,10 +63,12 @@ def test_ctrl_c_interrupts_a_drape():
     child = subprocess.Popen([sys.executable, "-c", DRESS_CHILD, DATA], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=os.environ.copy())
     assert child.stdout.readline().strip() == "ready"
-    time.sleep(5.0)  # past the body's distance grid, into the frames
+    time.sleep(5.0)
     sent = time.perf_counter()
     child.send_signal(signal.SIGINT)
     out, err = child.communicate(timeout=300)
     waited = time.perf_counter() - sent
     assert out.startswith("interrupted"), (out, err)
-    assert waited < 10, f"the drape went on {waited:.1f} s after Ctrl-C"
+    # The body's distance grid and the placement have no progress point: a machine busy with
+    # other tests may still be in them; the drape itself lasts a minute and more.
+    assert waited < 30, f"the drape went on {waited:.1f} s after Ctrl-C"
