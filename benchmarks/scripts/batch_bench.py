@@ -81,7 +81,7 @@ def main():
             "select id, status, seconds, rank from jobs").fetchall()
         summary = json.load(open(os.path.join(out, "summary.json")))
         results.append({"label": label, "ranks": ranks, "threads": threads, "wall": wall,
-                        "rows": rows, "run": summary["run"]})
+                        "rows": rows, "run": summary["run"], "out": out})
         print(f"  {wall:.1f} s", file=sys.stderr, flush=True)
 
     w1 = results[0]["wall"]
@@ -116,6 +116,24 @@ def main():
         lines.append(f"| {design} | {len(xs)} | {min(xs):.1f} | {percentile(xs, 0.1):.1f} | "
                      f"{statistics.median(xs):.1f} | {percentile(xs, 0.9):.1f} | {max(xs):.1f} | "
                      f"{max(xs) / min(xs):.1f} |")
+    # Determinism: every run's garments against the first run's, byte for byte.
+    compared = differ = 0
+    for r in results[1:]:
+        for jid, status, _, _ in r["rows"]:
+            mine = os.path.join(r["out"], "jobs", jid, "dressed.obj")
+            first = os.path.join(results[0]["out"], "jobs", jid, "dressed.obj")
+            if os.path.exists(mine) and os.path.exists(first):
+                compared += 1
+                differ += open(mine, "rb").read() != open(first, "rb").read()
+    lines += ["", f"The garments of the other runs against the first, byte for byte: {compared} "
+              f"compared, {differ} differ."]
+    failure_lines = []
+    for r in results:
+        db = sqlite3.connect(os.path.join(r["out"], "batch.sqlite"))
+        for jid, err in db.execute("select id, error from jobs where status = 'failed'"):
+            failure_lines.append(f"- {r['label']}: `{jid}`: {err}")
+    if failure_lines:
+        lines += ["", "Failed jobs (the job's error line, per run):", ""] + failure_lines
     everyone = [s for xs in per_design.values() for s in xs]
     mean = statistics.mean(everyone)
     coord = max(r["run"]["coordinator_ms_per_job"] for r in results) / 1000
