@@ -360,16 +360,10 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
     if (has("measure") || has("grade")) {
         const auto t1 = Clock::now();
         bench::MeasureRun run = bench::measure_mesh(loaded.mesh, bo);
-        const tm::BodyMeasurements& r = run.result;
         const auto t2 = Clock::now();
-        nlohmann::ordered_json j = tm::body_measurements_json(job.body, r.frame, r.measurements,
-                                                              r.landmarks, r.report, r.warnings);
-        j["timings_seconds"] = {{"load", std::chrono::duration<double>(t1 - t0).count()},
-                                {"frame", r.report.frame_seconds},
-                                {"landmarks", r.report.landmark_seconds},
-                                {"girths", r.report.girth_seconds},
-                                {"lengths", run.length_seconds},
-                                {"total", std::chrono::duration<double>(t2 - t0).count()}};
+        const nlohmann::ordered_json j =
+            bench::measure_json(run, job.body, std::chrono::duration<double>(t1 - t0).count(),
+                                std::chrono::duration<double>(t2 - t0).count());
         if (has("measure")) {
             write_text(fs::path(dir) / "measure.json", j.dump(1) + "\n");
         }

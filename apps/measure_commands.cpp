@@ -103,17 +103,10 @@ void run_measure(const MeasureArgs& a) {
     const auto t1 = Clock::now();
     bench::MeasureRun run = bench::measure_mesh(loaded.mesh, body, overrides);
     tm::BodyMeasurements& r = run.result;
-    const double length_seconds = run.length_seconds;
     const auto t2 = Clock::now();
 
-    Json j = tm::body_measurements_json(a.body, r.frame, r.measurements, r.landmarks, r.report,
-                                        r.warnings);
-    j["timings_seconds"] = {{"load", std::chrono::duration<double>(t1 - t0).count()},
-                            {"frame", r.report.frame_seconds},
-                            {"landmarks", r.report.landmark_seconds},
-                            {"girths", r.report.girth_seconds},
-                            {"lengths", length_seconds},
-                            {"total", std::chrono::duration<double>(t2 - t0).count()}};
+    const Json j = bench::measure_json(run, a.body, std::chrono::duration<double>(t1 - t0).count(),
+                                       std::chrono::duration<double>(t2 - t0).count());
 
     for (const auto& h : r.report.holes) {
         std::cerr << "tapeline: " << a.body << ": filled a hole "

@@ -2,6 +2,7 @@
 #include <tapeline/bench/measure_run.h>
 
 #include <tapeline/measurement/lengths.h>
+#include <tapeline/measurement/measurement_json.h>
 
 #include <chrono>
 
@@ -20,6 +21,20 @@ MeasureRun measure_mesh(const Mesh& mesh, const measurement::BodyOptions& option
                                                                run.result.measurements);
     }
     return run;
+}
+
+nlohmann::ordered_json measure_json(const MeasureRun& run, const std::string& body,
+                                    double load_seconds, double total_seconds) {
+    const measurement::BodyMeasurements& r = run.result;
+    nlohmann::ordered_json j = measurement::body_measurements_json(
+        body, r.frame, r.measurements, r.landmarks, r.report, r.warnings);
+    j["timings_seconds"] = {{"load", load_seconds},
+                            {"frame", r.report.frame_seconds},
+                            {"landmarks", r.report.landmark_seconds},
+                            {"girths", r.report.girth_seconds},
+                            {"lengths", run.length_seconds},
+                            {"total", total_seconds}};
+    return j;
 }
 
 }  // namespace tapeline::bench

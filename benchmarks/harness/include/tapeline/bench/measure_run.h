@@ -8,6 +8,10 @@
 #include <tapeline/measurement/landmarks.h>
 #include <tapeline/measurement/measure.h>
 
+#include <nlohmann/json.hpp>
+
+#include <string>
+
 namespace tapeline::bench {
 
 /// The prepared body and what was measured on it.
@@ -24,5 +28,11 @@ struct MeasureRun {
 MeasureRun measure_mesh(const Mesh& mesh, const measurement::BodyOptions& options,
                         const measurement::LandmarkOverrides& overrides = {},
                         bool skin_lengths = true);
+
+/// The measurement JSON `tapeline measure --out` writes: measurement::body_measurements_json of
+/// `run` for `body`, with the stage times under "timings_seconds" (`load_seconds`: reading the
+/// file; `total_seconds`: the whole measurement, the load included).
+nlohmann::ordered_json measure_json(const MeasureRun& run, const std::string& body,
+                                    double load_seconds, double total_seconds);
 
 }  // namespace tapeline::bench
