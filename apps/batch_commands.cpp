@@ -222,16 +222,21 @@ private:
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-int run_local(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
-    Coordinator c(a, jobs);
+/// Runs every queued job in this thread, one after the other (rank 0's own jobs).
+void run_queue_here(Coordinator& c, const std::vector<JobSpec>& jobs, const std::string& out) {
     const std::string host = batch::host_name();
-    std::cerr << "tapeline: batch: " << c.queued() << " jobs to run here, one at a time"
-              << (c.skipped() ? " (" + std::to_string(c.skipped()) + " done before)" : "") << '\n';
     int index = 0;
     while (c.next(index)) {
         c.started(index, host, 0);
-        c.finished(execute(jobs, index, a.out, 0), host, 0);
+        c.finished(execute(jobs, index, out, 0), host, 0);
     }
+}
+
+int run_local(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
+    Coordinator c(a, jobs);
+    std::cerr << "tapeline: batch: " << c.queued() << " jobs to run here, one at a time"
+              << (c.skipped() ? " (" + std::to_string(c.skipped()) + " done before)" : "") << '\n';
+    run_queue_here(c, jobs, a.out);
     return c.close(1);
 }
 
@@ -368,12 +373,7 @@ int run_mpi(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
     } else {
         coordinate(*c, ranks - 1 > 0 ? ranks - 1 : 0);
         if (ranks == 1) {
-            int index = 0;
-            const std::string host = batch::host_name();
-            while (c->next(index)) {
-                c->started(index, host, 0);
-                c->finished(execute(jobs, index, a.out, 0), host, 0);
-            }
+            run_queue_here(*c, jobs, a.out);
         }
     }
     return c->close(ranks);

@@ -28,15 +28,21 @@ except KeyboardInterrupt as e:
 """
 
 
-def test_ctrl_c_interrupts_exact_distances():
-    child = subprocess.Popen([sys.executable, "-c", CHILD, "700"], stdout=subprocess.PIPE,
+def interrupted_after(script, arg, sleep_s, timeout_s=300):
+    """Runs `script` in a child, sends it Ctrl-C `sleep_s` after it says "ready"; returns its
+    output and how long it went on after the signal."""
+    child = subprocess.Popen([sys.executable, "-c", script, arg], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True, env=os.environ.copy())
     assert child.stdout.readline().strip() == "ready"
-    time.sleep(2.0)
+    time.sleep(sleep_s)
     sent = time.perf_counter()
     child.send_signal(signal.SIGINT)
-    out, err = child.communicate(timeout=120)
-    waited = time.perf_counter() - sent
+    out, err = child.communicate(timeout=timeout_s)
+    return out, err, time.perf_counter() - sent
+
+
+def test_ctrl_c_interrupts_exact_distances():
+    out, err, waited = interrupted_after(CHILD, "700", 2.0, 120)
     assert out.startswith("interrupted"), (out, err)
     assert waited < 10, f"the call went on {waited:.1f} s after Ctrl-C"
 
@@ -60,14 +66,7 @@ except KeyboardInterrupt as e:
 
 def test_ctrl_c_interrupts_a_drape():
     from conftest import DATA
-    child = subprocess.Popen([sys.executable, "-c", DRESS_CHILD, DATA], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True, env=os.environ.copy())
-    assert child.stdout.readline().strip() == "ready"
-    time.sleep(5.0)
-    sent = time.perf_counter()
-    child.send_signal(signal.SIGINT)
-    out, err = child.communicate(timeout=300)
-    waited = time.perf_counter() - sent
+    out, err, waited = interrupted_after(DRESS_CHILD, DATA, 5.0)
     assert out.startswith("interrupted"), (out, err)
     # The body's distance grid and the placement have no progress point: a machine busy with
     # other tests may still be in them; the drape itself lasts a minute and more.
