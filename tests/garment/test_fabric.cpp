@@ -149,6 +149,16 @@ TEST(GarmentFabricLab, RefusalsNameTheKeys) {
               std::string::npos);
 }
 
+// FabricParams{} (the default of DressOptions, of the solver's users) carries the catalogue's
+// name "cotton_jersey": its values must be that fabric's, or a default-built garment would be
+// reported as a cloth it is not.
+TEST(GarmentFabricLab, DefaultParamsAreTheCataloguesCottonJersey) {
+    const tg::FabricParams d;
+    const tg::Fabric* c = tg::library_fabric(d.name);
+    ASSERT_NE(c, nullptr);
+    EXPECT_EQ(tg::fabric_json(tg::Fabric{d, c->source}), tg::fabric_json(*c));
+}
+
 TEST(GarmentFabricLab, LibraryAndFileRoundTrip) {
     std::size_t wang = 0;
     for (const tg::Fabric& f : tg::fabric_library()) {

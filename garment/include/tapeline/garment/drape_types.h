@@ -19,19 +19,20 @@ using Tri = std::array<std::uint32_t, 3>;
 using UV = std::array<double, 2>;
 
 /// Mechanical parameters of a fabric, as the solver uses them (SI units per metre of width; the
-/// fabric catalogue maps lab measurements to these).
+/// fabric catalogue maps lab measurements to these). The defaults are the catalogue's
+/// cotton_jersey (fabric_lab.h).
 struct FabricParams {
     std::string name = "cotton_jersey";  ///< catalogue name or file
     double density_g_m2 = 180;           ///< areal density, g/m²
     /// Tensile stiffness along the warp (grain) and the weft: force per unit width per unit
     /// strain, N/m.
     ///@{
-    double stretch_warp_n_m = 2000, stretch_weft_n_m = 1000;
+    double stretch_warp_n_m = 1500, stretch_weft_n_m = 800;
     ///@}
-    double shear_n_m = 300;  ///< in-plane shear stiffness, N/m per radian of shear angle
+    double shear_n_m = 200;  ///< in-plane shear stiffness, N/m per radian of shear angle
     /// Bending rigidity of a strip cut along the warp (curvature along the warp), µN·m
     /// (= 1e-6 N·m²/m); the rigidity of every direction when the two below are negative.
-    double bending_un_m = 10;
+    double bending_un_m = 2;
     double friction = 0.3;      ///< Coulomb friction coefficient against the body
     double thickness_mm = 1.0;  ///< collision thickness (cloth–body and cloth–cloth)
     /// Bending rigidity of a strip cut along the weft, µN·m; negative: bending_un_m.
