@@ -357,12 +357,15 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
     const auto t0 = Clock::now();
     const auto loaded = read_triangle_mesh<bench::Mesh>(job.body);
     std::optional<sizes::MeasurementSet> measured;
+    std::optional<bench::MeasureRun> run;  // its landmarks also place the pieces
+    double measure_seconds = 0;
     if (has("measure") || has("grade")) {
         const auto t1 = Clock::now();
-        bench::MeasureRun run = bench::measure_mesh(loaded.mesh, bo);
+        run = bench::measure_mesh(loaded.mesh, bo);
         const auto t2 = Clock::now();
+        measure_seconds = std::chrono::duration<double>(t2 - t1).count();
         const nlohmann::ordered_json j =
-            bench::measure_json(run, job.body, std::chrono::duration<double>(t1 - t0).count(),
+            bench::measure_json(*run, job.body, std::chrono::duration<double>(t1 - t0).count(),
                                 std::chrono::duration<double>(t2 - t0).count());
         if (has("measure")) {
             write_text(fs::path(dir) / "measure.json", j.dump(1) + "\n");
@@ -426,10 +429,7 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
             d.sewing.sew_seconds = o["sew_seconds"].get<double>();
         }
         if (o.contains("settle_seconds")) {
-            d.sewing.settle_seconds = o["settle_seconds"].get<double>();
-            if (d.sewing.settle_seconds == 0) {
-                d.sewing.max_extra_seconds = 0;  // as `tapeline dress --settle-seconds 0`
-            }
+            bench::set_settle_seconds(d.sewing, o["settle_seconds"].get<double>());
         }
         if (o.contains("substeps")) {
             d.drape.substeps = o["substeps"].get<int>();
@@ -441,7 +441,9 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
             d.without_pieces = o["without"].get<std::vector<std::string>>();
         }
         const std::string pattern_name = pat.name;
-        const bench::DressRun r = bench::dress_mesh(loaded.mesh, bo, std::move(pat), d);
+        const bench::DressRun r = run ? bench::dress_measured(std::move(*run), bo.name,
+                                                              std::move(pat), d, measure_seconds)
+                                      : bench::dress_mesh(loaded.mesh, bo, std::move(pat), d);
         const tm::BodyFrame frame = r.body.frame;
         std::ostringstream obj;
         tg::write_garment_obj(obj, r.garment,

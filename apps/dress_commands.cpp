@@ -98,10 +98,7 @@ void run_dress(const DressArgs& a) {
             "--substeps >= 1");
     }
     o.sewing.sew_seconds = a.sew_seconds;
-    o.sewing.settle_seconds = a.settle_seconds;
-    if (a.settle_seconds == 0) {
-        o.sewing.max_extra_seconds = 0;
-    }
+    bench::set_settle_seconds(o.sewing, a.settle_seconds);
     o.placement.gap_mm = a.gap;
     o.drape.substeps = a.substeps;
     o.drape.self_collision = !a.no_self_collision;
@@ -240,7 +237,8 @@ void register_dress_commands(CLI::App& app) {
                     "0: the placement only)")
         ->capture_default_str();
     cmd->add_option("--settle-seconds", a->settle_seconds,
-                    "Simulated time of the drape after sewing (more while the cloth moves)")
+                    "Simulated time of the drape after sewing (more while the cloth moves; 0: "
+                    "no settling at all)")
         ->capture_default_str();
     cmd->add_option("--gap", a->gap, "Clearance of the placed pieces from the body, mm")
         ->capture_default_str();

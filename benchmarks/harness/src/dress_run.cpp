@@ -22,6 +22,17 @@ DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_optio
                     const sizes::MeasurementSet* base, std::uint32_t seed) {
     using Clock = std::chrono::steady_clock;
     const auto t0 = Clock::now();
+    MeasureRun m = measure_mesh(mesh, body_options, {}, base != nullptr);
+    const double measure_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return dress_measured(std::move(m), body_options.name, std::move(pattern), options,
+                          measure_seconds, base, seed);
+}
+
+DressRun dress_measured(MeasureRun m, const std::string& body_name, pattern::Pattern pattern,
+                        const garment::DressOptions& options, double measure_seconds,
+                        const sizes::MeasurementSet* base, std::uint32_t seed) {
+    using Clock = std::chrono::steady_clock;
+    const auto t0 = Clock::now();
 #ifndef TAPELINE_HAVE_GRADING
     if (base) {
         throw InvalidInput(
@@ -29,8 +40,6 @@ DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_optio
             "grade (install libceres-dev and libpagmo-dev)");
     }
 #endif
-    MeasureRun m = measure_mesh(mesh, body_options, {}, base != nullptr);
-    const double measure_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     DressRun run;
     run.body = std::move(m.body);
     for (const auto& w : m.result.report.warnings) {
@@ -40,11 +49,11 @@ DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_optio
     if (base) {
         const measurement::BodyMeasurements& r = m.result;
         const sizes::MeasurementSet to = sizes::parse_measurement_json(
-            nlohmann::json::parse(measurement::body_measurements_json(body_options.name, r.frame,
+            nlohmann::json::parse(measurement::body_measurements_json(body_name, r.frame,
                                                                       r.measurements, r.landmarks,
                                                                       r.report, r.warnings)
                                       .dump()),
-            body_options.name);
+            body_name);
         grading::GradingOptions go;
         go.seed = seed;
         go.threads = std::size_t(std::max(0, options.drape.threads));
@@ -68,8 +77,16 @@ DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_optio
     run.stretch = std::move(d.stretch);
     run.report = std::move(d.report);
     run.report.measure_seconds = measure_seconds;
-    run.report.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    run.report.total_seconds =
+        measure_seconds + std::chrono::duration<double>(Clock::now() - t0).count();
     return run;
+}
+
+void set_settle_seconds(garment::SewingOptions& sewing, double seconds) {
+    sewing.settle_seconds = seconds;
+    if (seconds == 0) {
+        sewing.max_extra_seconds = 0;
+    }
 }
 
 nlohmann::ordered_json dress_report_json(const DressRun& run, const std::string& body,

@@ -3,6 +3,7 @@
 // draped. Compiled once in the harness for the command-line tool and the Python module.
 #pragma once
 
+#include <tapeline/bench/measure_run.h>
 #include <tapeline/bench/methods.h>
 #include <tapeline/garment/garment_types.h>
 #include <tapeline/garment/quality.h>
@@ -39,6 +40,17 @@ struct DressRun {
 DressRun dress_mesh(const Mesh& mesh, const measurement::BodyOptions& body_options,
                     pattern::Pattern pattern, const garment::DressOptions& options,
                     const sizes::MeasurementSet* base = nullptr, std::uint32_t seed = 1);
+
+/// dress_mesh on a body measured already (`measured`, from measure_mesh; its landmarks place the
+/// pieces). `measure_seconds` is reported as the measure time and counted in the total time.
+DressRun dress_measured(MeasureRun measured, const std::string& body_name, pattern::Pattern pattern,
+                        const garment::DressOptions& options, double measure_seconds,
+                        const sizes::MeasurementSet* base = nullptr, std::uint32_t seed = 1);
+
+/// Sets the settling time after the seams close; 0 also turns off the extra settling while the
+/// cloth still moves (`max_extra_seconds`): what `tapeline dress --settle-seconds` and the batch's
+/// `settle_seconds` mean.
+void set_settle_seconds(garment::SewingOptions& sewing, double seconds);
 
 /// The report `tapeline dress --report` writes: body and pattern names, the body's unit, then
 /// garment::dress_report_json.
