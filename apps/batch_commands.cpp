@@ -1,10 +1,12 @@
 // `tapeline batch JOBS --out RESULTS [--resume] [--retries N]`: every job of a manifest (measure →
 // grade → dress) run once, restartably, locally or over MPI ranks (`mpirun -np N tapeline batch
 // ...`): rank 0 keeps the results database and hands out jobs one at a time (jobs differ 100× in
-// cost), every rank runs jobs (rank 0 in a second thread), TBB inside each job.
+// cost), every rank runs jobs (rank 0 in a second thread), each job in a child process of its
+// own (a job killed by a signal goes back to the queue), TBB inside each job.
 #include "batch_jobs.h"
 #include "commands.h"
 
+#include <tapeline/bench/isolation.h>
 #include <tapeline/core/errors.h>
 
 #include <CLI/CLI.hpp>
@@ -40,43 +42,64 @@ struct BatchArgs {
     std::string jobs, out;
     bool resume = false;
     int retries = 2;
+    double job_timeout = 0;  ///< seconds, 0: none
+    double job_memory = 0;   ///< GB of address space per job, 0: no limit
 };
 
 /// What a worker reports of a job.
 struct Result {
     int index = -1;
     bool done = false;
+    bool lost = false;  ///< its process was killed by a signal: run it again
     std::string error;
     double seconds = 0;
     std::string outcome;
 };
 
-/// Runs job `index` into RESULTS/jobs/<id>: the files are written into a private folder that is
-/// renamed into place when every step is done, so a job's outputs are all there or none.
-Result execute(const std::vector<JobSpec>& jobs, int index, const fs::path& out, int rank) {
+/// Runs job `index` into RESULTS/jobs/<id> in a child process: the files are written into a
+/// private folder that is renamed into place when every step is done, so a job's outputs are all
+/// there or none. A child killed by a signal (a killed or crashed job, the out-of-memory killer)
+/// is `lost`; one past `a.job_timeout` or `a.job_memory`, or whose job threw, has failed.
+Result execute(const BatchArgs& a, const std::vector<JobSpec>& jobs, int index, int rank) {
     const JobSpec& job = jobs[std::size_t(index)];
     const auto t0 = std::chrono::steady_clock::now();
     Result r;
     r.index = index;
+    const fs::path out = a.out;
     const fs::path final_dir = out / "jobs" / job.id;
     const fs::path tmp =
         out / "jobs" /
         ("." + job.id + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(rank));
+    std::string error;
     try {
         fs::remove_all(tmp);
-        const Json outcome = batch::run_job(job, tmp.string());
-        fs::remove_all(final_dir);  // left by a run killed between the rename and the record
-        fs::rename(tmp, final_dir);
-        r.done = true;
-        r.outcome = outcome.dump();
+        const bench::ChildOutcome c = bench::run_isolated(
+            [&](Json& fields, std::vector<double>&) {
+                const Json outcome = batch::run_job(job, tmp.string());
+                fs::remove_all(final_dir);  // left by a run killed between rename and record
+                fs::rename(tmp, final_dir);
+                fields["outcome"] = outcome.dump();
+            },
+            a.job_timeout, a.job_memory);
+        if (c.status == "ok") {
+            r.done = true;
+            r.outcome = c.fields.value("outcome", std::string());
+        } else if (c.status == "timeout") {
+            error = "timed out: " + c.message + " (--job-timeout)";
+        } else {
+            r.lost = c.status == "crash" && c.message.rfind("killed by signal", 0) == 0;
+            error = r.lost ? "its process was " + c.message : c.message;
+        }
     } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (!r.done) {
         std::error_code ec;
         fs::remove_all(tmp, ec);
-        std::string line = e.what();
-        for (char& c : line) {
+        for (char& c : error) {
             c = (c == '\n' || c == '\r') ? ' ' : c;
         }
-        r.error = line;
+        r.error = error;
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return r;
@@ -144,6 +167,9 @@ public:
             queue_.push_back(r.index);
         }
         total_ = queue_.size();
+        for (const JobRow& r : rows) {
+            attempts_.push_back(r.attempts);
+        }
     }
 
     bool next(int& index) {
@@ -157,17 +183,28 @@ public:
     void started(int index, const std::string& host, int rank) {
         const auto t0 = std::chrono::steady_clock::now();
         db_->start(index, host, rank);
+        ++attempts_[std::size_t(index)];
         busy_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     void finished(const Result& r, const std::string& host, int rank) {
         const auto t0 = std::chrono::steady_clock::now();
         db_->finish(r.index, r.done, r.error, r.seconds, r.outcome);
+        const std::string& id = jobs_[std::size_t(r.index)].id;
+        const int attempts = attempts_[std::size_t(r.index)];
+        if (r.lost && attempts <= args_.retries) {
+            // Killed, not failed: back to the queue in this run (the attempt is counted).
+            db_->set_status(r.index, "pending");
+            queue_.push_back(r.index);
+            busy_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            std::cerr << "tapeline: batch: LOST " << id << " (attempt " << attempts << ", rank "
+                      << rank << " on " << host << "): " << r.error << "; back in the queue\n";
+            return;
+        }
         busy_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ++finished_;
         failed_ += r.done ? 0 : 1;
         std::cerr << "tapeline: batch: [" << finished_ << "/" << total_ << "] "
-                  << (r.done ? "done " : "FAILED ") << jobs_[std::size_t(r.index)].id << " ("
-                  << std::fixed;
+                  << (r.done ? "done " : "FAILED ") << id << " (" << std::fixed;
         std::cerr.precision(1);
         std::cerr << r.seconds << " s, rank " << rank << " on " << host << ")"
                   << (r.done ? "" : ": " + r.error) << '\n';
@@ -217,18 +254,19 @@ private:
     fs::path out_;
     std::unique_ptr<batch::ResultsDb> db_;
     std::deque<int> queue_;
+    std::vector<int> attempts_;  ///< per job, this run's included
     std::size_t total_ = 0, skipped_ = 0, given_up_ = 0, finished_ = 0, failed_ = 0;
     double busy_ = 0;  ///< the coordinator's own work: database updates, messages
     std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 /// Runs every queued job in this thread, one after the other (rank 0's own jobs).
-void run_queue_here(Coordinator& c, const std::vector<JobSpec>& jobs, const std::string& out) {
+void run_queue_here(Coordinator& c, const BatchArgs& a, const std::vector<JobSpec>& jobs) {
     const std::string host = batch::host_name();
     int index = 0;
     while (c.next(index)) {
         c.started(index, host, 0);
-        c.finished(execute(jobs, index, out, 0), host, 0);
+        c.finished(execute(a, jobs, index, 0), host, 0);
     }
 }
 
@@ -236,7 +274,7 @@ int run_local(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
     Coordinator c(a, jobs);
     std::cerr << "tapeline: batch: " << c.queued() << " jobs to run here, one at a time"
               << (c.skipped() ? " (" + std::to_string(c.skipped()) + " done before)" : "") << '\n';
-    run_queue_here(c, jobs, a.out);
+    run_queue_here(c, a, jobs);
     return c.close(1);
 }
 
@@ -282,7 +320,7 @@ Json receive_json(int from, int tag, int* source) {
 }
 
 /// A worker: asks for a job, runs it, reports it with the next request, until told to stop.
-void worker(const std::vector<JobSpec>& jobs, const std::string& out, int rank) {
+void worker(const BatchArgs& a, const std::vector<JobSpec>& jobs, int rank) {
     Json request = {{"host", batch::host_name()}};
     for (;;) {
         send_json(request, 0, kTagWork);
@@ -291,12 +329,9 @@ void worker(const std::vector<JobSpec>& jobs, const std::string& out, int rank) 
         if (index < 0) {
             return;
         }
-        const Result r = execute(jobs, index, out, rank);
-        request["result"] = {{"index", r.index},
-                             {"done", r.done},
-                             {"error", r.error},
-                             {"seconds", r.seconds},
-                             {"outcome", r.outcome}};
+        const Result r = execute(a, jobs, index, rank);
+        request["result"] = {{"index", r.index}, {"done", r.done},       {"lost", r.lost},
+                             {"error", r.error}, {"seconds", r.seconds}, {"outcome", r.outcome}};
     }
 }
 
@@ -312,6 +347,7 @@ void coordinate(Coordinator& c, int ranks) {
             Result res;
             res.index = r["index"].get<int>();
             res.done = r["done"].get<bool>();
+            res.lost = r["lost"].get<bool>();
             res.error = r["error"].get<std::string>();
             res.seconds = r["seconds"].get<double>();
             res.outcome = r["outcome"].get<std::string>();
@@ -358,7 +394,7 @@ int run_mpi(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
         return 2;
     }
     if (rank != 0) {
-        worker(jobs, a.out, rank);
+        worker(a, jobs, rank);
         return 0;
     }
     const bool threaded = provided >= MPI_THREAD_MULTIPLE;
@@ -367,13 +403,13 @@ int run_mpi(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
                            : " (rank 0 only coordinates: MPI without thread support)")
               << '\n';
     if (threaded) {
-        std::thread local([&] { worker(jobs, a.out, 0); });
+        std::thread local([&] { worker(a, jobs, 0); });
         coordinate(*c, ranks);
         local.join();
     } else {
         coordinate(*c, ranks - 1 > 0 ? ranks - 1 : 0);
         if (ranks == 1) {
-            run_queue_here(*c, jobs, a.out);
+            run_queue_here(*c, a, jobs);
         }
     }
     return c->close(ranks);
@@ -383,6 +419,9 @@ int run_mpi(const BatchArgs& a, const std::vector<JobSpec>& jobs) {
 int run_batch(const BatchArgs& a) {
     if (a.retries < 0) {
         throw InvalidInput("--retries must be >= 0");
+    }
+    if (!(a.job_timeout >= 0) || !(a.job_memory >= 0)) {
+        throw InvalidInput("--job-timeout and --job-memory must be >= 0 (0: no limit)");
     }
     const std::vector<JobSpec> jobs = batch::read_manifest(a.jobs);
 #ifdef TAPELINE_HAVE_MPI
@@ -413,7 +452,14 @@ void register_batch_commands(CLI::App& app) {
     cmd->add_flag("--resume", a->resume,
                   "Continue the batch in --out: skip done jobs, retry failed ones");
     cmd->add_option("--retries", a->retries,
-                    "With --resume: retry a failed job while it has failed at most this often")
+                    "Run a job again while it has failed at most this often: a job whose "
+                    "process was killed at once, a failed one with --resume")
+        ->capture_default_str();
+    cmd->add_option("--job-timeout", a->job_timeout,
+                    "Seconds after which a job is stopped and has failed (0: no limit)")
+        ->capture_default_str();
+    cmd->add_option("--job-memory", a->job_memory,
+                    "GB of memory per job; beyond it the job has failed (0: no limit)")
         ->capture_default_str();
     cmd->callback([a] {
         const int status = run_batch(*a);

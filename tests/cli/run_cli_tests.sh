@@ -973,8 +973,9 @@ fi
 # --- batch ---------------------------------------------------------------------------------------
 # A manifest of jobs run restartably: refusals name the file and line and write nothing; a run
 # records every job in its results database and the measure step writes what `tapeline measure`
-# writes; --resume skips done jobs and retries failed ones; a run killed mid-job (locally, or one
-# MPI rank) and resumed gives the outputs of an uninterrupted run, every job done once.
+# writes; --resume skips done jobs and retries failed ones; a job whose process is killed goes back
+# to the queue of the same run; a run killed mid-job (locally, or one MPI rank) and resumed gives
+# the outputs of an uninterrupted run, every job done once.
 if in_section batch; then
 body="$root/data/bodies/mh_female_average.obj"
 fsm="$root/data/patterns/aaron_cisFemaleAdult36_measurements.json"
@@ -999,6 +1000,7 @@ expect_fail "batch: an unknown fabric" "unknown fabric 'tweed'" "$bin" batch bad
 printf '{"body": "%s", "units": "furlong", "steps": ["measure"]}\n' "$body" >bad10.jsonl
 expect_fail "batch: an unknown unit" "bad10.jsonl:1: units" "$bin" batch bad10.jsonl --out res
 expect_fail "batch: a missing manifest" "nope.jsonl: cannot open" "$bin" batch nope.jsonl --out res
+expect_fail "batch: a negative job time-out" "--job-timeout and --job-memory must be >= 0" "$bin" batch bad3.jsonl --out res --job-timeout -1
 if [ -e res ]; then fail "batch: a refusal left the results folder"; else ok "batch: refusals write nothing"; fi
 
 # Two measure jobs, one measure-grade-dress job (placement only), one job on a missing body.
@@ -1109,6 +1111,38 @@ before=$(ls killed/jobs | grep -c '^d')
 if [ "$before" -lt 6 ] && "$bin" batch six.jsonl --out killed --resume >out.txt 2>err.txt && same_outputs killed
 then ok "batch: killed after $before jobs and resumed: the outputs of an uninterrupted run"
 else fail "batch: kill and resume ($before jobs before): $(head -c 300 err.txt)"; fi
+# The process of the third job killed: the job goes back to the queue and is run again in the same
+# run (two attempts); with --retries 0 it has failed, and --resume runs it.
+job_child() {  # job_child PID: the child process running a job of batch process PID
+  for _ in $(seq 1 600); do
+    c=$(pgrep -P "$1" | head -1); [ -n "$c" ] && { echo "$c"; return; }; sleep 0.05
+  done
+}
+lost_run() {  # lost_run DIR [OPTIONS]: kill the third job's process, wait for the run's end
+  "$bin" batch six.jsonl --out "$@" >out.txt 2>err.txt &
+  pid=$!
+  for _ in $(seq 1 600); do
+    [ "$(ls "$1/jobs" 2>/dev/null | grep -c '^d')" -ge 2 ] && break; sleep 0.05
+  done
+  c=$(job_child $pid); [ -n "$c" ] && kill -9 "$c"
+  wait $pid; rc=$?
+}
+lost_run lost
+if [ $rc -eq 0 ] && [ -n "$c" ] && grep -q "LOST d3 (attempt 1.*killed by signal" err.txt && same_outputs lost &&
+   [ "$($py -c 'import sqlite3; print(sqlite3.connect("lost/batch.sqlite").execute("select group_concat(attempts) from jobs").fetchone()[0])')" = "1,1,2,1,1,1" ]
+then ok "batch: a job whose process was killed runs again in the same run: the outputs of an uninterrupted run"
+else fail "batch: killed job process (exit $rc, child '$c'): $(head -c 400 err.txt)"; fi
+lost_run lost0 --retries 0
+"$bin" batch six.jsonl --out lost0 --resume >out2.txt 2>err2.txt; rc2=$?
+if [ $rc -eq 1 ] && grep -q "5 of 6 jobs done, 1 failed (first: d3: its process was killed by signal" out.txt &&
+   [ $rc2 -eq 0 ] && grep -q "1 jobs to run" err2.txt && same_outputs lost0
+then ok "batch: with --retries 0 a killed job has failed; --resume runs it"
+else fail "batch: killed job, --retries 0 (exit $rc $rc2): $(head -c 300 out.txt) $(head -c 300 err2.txt)"; fi
+"$bin" batch six.jsonl --out slow --job-timeout 0.2 >out.txt 2>err.txt; rc=$?
+if [ $rc -eq 1 ] && grep -q "0 of 6 jobs done, 6 failed (first: d1: timed out: killed after 0.2" out.txt &&
+   [ -z "$(ls -A slow/jobs)" ]
+then ok "batch: --job-timeout stops a job, which has failed, nothing of it left"
+else fail "batch: --job-timeout (exit $rc): $(head -c 300 out.txt)"; fi
 mpi=$(command -v mpirun || true)
 "$bin" batch bad3.jsonl --out x 2>err.txt
 if [ -n "$mpi" ] && ! grep -q "built without MPI" err.txt; then
@@ -1123,14 +1157,35 @@ if [ -n "$mpi" ] && ! grep -q "built without MPI" err.txt; then
   for _ in $(seq 1 600); do
     [ "$(ls mpikill/jobs 2>/dev/null | grep -c '^d')" -ge 2 ] && break; sleep 0.05
   done
-  worker=$(pgrep -f "batch six.jsonl --out mpikill" | while read -r p; do
-    [ "$(tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -c '^OMPI_COMM_WORLD_RANK=1$')" = 1 ] && echo "$p"; done | head -1)
+  rank1() {  # rank1 OUT: the processes of MPI rank 1 of the batch into OUT (the rank, its job)
+    pgrep -f "batch six.jsonl --out $1" | while read -r p; do
+      [ "$(tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -c '^OMPI_COMM_WORLD_RANK=1$')" = 1 ] && echo "$p"; done
+  }
+  worker=$(rank1 mpikill | while read -r p; do
+    rank1 mpikill | grep -qx "$(ps -o ppid= -p "$p" | tr -d ' ')" || echo "$p"; done | head -1)
   [ -n "$worker" ] && kill -9 "$worker"
   wait $mpid 2>/dev/null
   before=$(ls mpikill/jobs | grep -c '^d')
   if [ -n "$worker" ] && "$bin" batch six.jsonl --out mpikill --resume >out.txt 2>err.txt && same_outputs mpikill
   then ok "batch: an MPI worker killed after $before jobs, resumed: the outputs of an uninterrupted run"
   else fail "batch: MPI worker kill (worker '$worker', $before jobs): $(head -c 300 err.txt)"; fi
+  # The job process of rank 1 killed: the job goes back to the queue of the same MPI run.
+  mpirun --allow-run-as-root --oversubscribe -np 2 "$bin" batch six.jsonl --out mpilost >out.txt 2>err.txt &
+  mpid=$!
+  for _ in $(seq 1 600); do
+    [ "$(ls mpilost/jobs 2>/dev/null | grep -c '^d')" -ge 1 ] && break; sleep 0.05
+  done
+  job=""
+  for _ in $(seq 1 600); do
+    job=$(rank1 mpilost | while read -r p; do
+      rank1 mpilost | grep -qx "$(ps -o ppid= -p "$p" | tr -d ' ')" && echo "$p"; done | head -1)
+    [ -n "$job" ] && break; sleep 0.05
+  done
+  [ -n "$job" ] && kill -9 "$job"
+  wait $mpid; rc=$?
+  if [ $rc -eq 0 ] && [ -n "$job" ] && grep -q "LOST d.*rank 1 .*killed by signal" err.txt && same_outputs mpilost
+  then ok "batch: an MPI rank's job process killed: run again in the same run, the outputs of the local run"
+  else fail "batch: MPI job process kill (exit $rc, job '$job'): $(head -c 400 err.txt)"; fi
 else
   ok "batch: MPI checks skipped (no mpirun, or built without MPI)"
 fi
