@@ -11,8 +11,12 @@
 
 #ifdef TAPELINE_HAVE_GRADING
 #include <tapeline/bench/grade_run.h>
+#include <tapeline/bench/measure_run.h>
 #include <tapeline/core/atomic_write.h>
+#include <tapeline/core/mesh_io.h>
+#include <tapeline/garment/bindings.h>
 #include <tapeline/grading/compare.h>
+#include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
 #include <tapeline/grading/output.h>
 #include <tapeline/pattern/database.h>
@@ -36,6 +40,7 @@
 #endif
 
 #include <string>
+#include <utility>
 
 namespace tapeline::app {
 
@@ -48,6 +53,7 @@ namespace tg = tapeline::grading;
 struct GradeArgs {
     std::string pattern, format = "auto", db, from, to, from_set, to_set;
     std::string out, svg, dxf, pareto, rules, rul, report, fit_table, compare;
+    std::string base_body, base_units, base_up = "+Y", base_front = "+Z", bindings, bindings_out;
     // Defaults read from the library's options.
     std::string ease = tg::to_string(tg::GradingOptions{}.ease);
     bool store = false, replace = false, no_polish = !tg::GradingOptions{}.ceres_polish;
@@ -97,12 +103,41 @@ void run_grade(const GradeArgs& a) {
     if (a.ease != "proportional" && a.ease != "keep_mm") {
         throw InvalidInput("--ease: unknown mode '" + a.ease + "' (proportional or keep_mm)");
     }
-    OutputFiles outputs({a.out, a.svg, a.dxf, a.pareto, a.rules, a.rul, a.report, a.fit_table});
+    if (a.base_body.empty() == a.from.empty()) {
+        throw InvalidInput(
+            "give the pattern's base measurements either as a set (--from) or as a body to lay "
+            "the pattern on (--base-body), not both");
+    }
+    if (!a.bindings_out.empty() && extension(a.bindings_out) != ".json") {
+        throw InvalidInput("--bindings-out " + a.bindings_out + ": expected a .json file");
+    }
+    OutputFiles outputs(
+        {a.out, a.svg, a.dxf, a.pareto, a.rules, a.rul, a.report, a.fit_table, a.bindings_out});
     tp::Pattern base = load(a);
     tp::require_valid(base);
-    const sizes::MeasurementSet from = sizes::read_measurement_input(a.from, a.from_set);
+    sizes::MeasurementSet from;
+    std::vector<std::string> inferred;  // how each inferred binding was found
+    if (!a.base_body.empty()) {
+        // The base measurements are the body's; the girth bindings are found by laying the
+        // pattern on it (garment/bindings.h).
+        const measurement::BodyOptions bo = measurement::parse_body_options(
+            a.base_body, a.base_units, a.base_up, a.base_front, "A", "--base-");
+        const auto loaded = read_triangle_mesh<bench::Mesh>(a.base_body);
+        const bench::MeasureRun m = bench::measure_mesh(loaded.mesh, bo);
+        from = bench::measured_set(m, a.base_body);
+        garment::BindingInference inf =
+            garment::infer_girth_bindings(m.body, m.result.landmarks, m.result.measurements, base);
+        base = std::move(inf.pattern);
+        inferred = std::move(inf.notes);
+    } else {
+        from = sizes::read_measurement_input(a.from, a.from_set);
+    }
+    if (!a.bindings.empty()) {
+        tp::apply_bindings_file(base, a.bindings);
+        inferred.push_back("bindings of " + a.bindings + " given");
+    }
     const sizes::MeasurementSet to = sizes::read_measurement_input(a.to, a.to_set);
-    for (const sizes::MeasurementSet* set : {&from, &to}) {
+    for (const sizes::MeasurementSet* set : {&std::as_const(from), &to}) {
         for (const auto& [name, why] : set->left_out) {
             std::cerr << "tapeline: warning: " << why << "; '" << name << "' left out\n";
         }
@@ -116,6 +151,9 @@ void run_grade(const GradeArgs& a) {
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
     tg::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
+    for (const std::string& line : inferred) {
+        g.report.notes.push_back("binding: " + line);
+    }
 
     // Render every output in memory, then write each atomically.
     std::vector<std::pair<std::string, std::string>> files;
@@ -190,6 +228,15 @@ void run_grade(const GradeArgs& a) {
     if (!a.fit_table.empty()) {
         files.push_back({a.fit_table, tg::fit_table(g.report)});
     }
+    if (!a.bindings_out.empty()) {
+        // The bindings graded with (inferred, given, or the pattern's own and FreeSewing's
+        // table), on the base pattern's points.
+        tp::Pattern bound = base;
+        if (!a.no_fs_bindings && bound.designer == "FreeSewing") {
+            tg::add_freesewing_bindings(bound);
+        }
+        files.push_back({a.bindings_out, tp::bindings_file_json(bound).dump(1) + "\n"});
+    }
     for (const auto& file : files) {
         const std::string& text = file.second;
         outputs.write(
@@ -201,6 +248,9 @@ void run_grade(const GradeArgs& a) {
         const std::string path = a.db.empty() ? tp::default_pattern_database_path() : a.db;
         tp::PatternDatabase database(path, {});
         database.store(g.pattern, {a.replace});
+    }
+    for (const std::string& line : inferred) {
+        std::cout << "binding: " << line << '\n';
     }
     std::cout << "graded " << base.name << " from " << from.name << " to " << to.name << ": "
               << g.report.fit.size() << " bindings, " << g.report.seams.size() << " seams, "
@@ -229,8 +279,21 @@ void register_grade_commands(CLI::App& app) {
                     "Pattern file (FreeSewing, GarmentCode, tapeline JSON) "
                     "or a name in the database")
         ->required();
-    cmd->add_option("--from", a->from, "Base measurement set (.json flat/FreeSewing/measure, .vit)")
-        ->required();
+    cmd->add_option("--from", a->from,
+                    "Base measurement set (.json flat/FreeSewing/measure, .vit); or --base-body");
+    cmd->add_option("--base-body", a->base_body,
+                    "Body the pattern was made for (.obj, .ply, .off, .stl): measured for the "
+                    "base set, and the pattern laid on it to find its girth bindings");
+    cmd->add_option("--base-units", a->base_units,
+                    "Unit of --base-body: m, dm, cm or mm (default: inferred from its height)");
+    cmd->add_option("--base-up", a->base_up, "Up axis of --base-body")->capture_default_str();
+    cmd->add_option("--base-front", a->base_front, "Front axis of --base-body")
+        ->capture_default_str();
+    cmd->add_option("--bindings", a->bindings,
+                    "Bindings file (tapeline-bindings JSON, e.g. from --bindings-out, edited): "
+                    "its bindings replace those of the same measurement");
+    cmd->add_option("--bindings-out", a->bindings_out,
+                    "Write the bindings graded with, and the points they use (JSON)");
     cmd->add_option("--to", a->to, "Target measurement set (same formats)")->required();
     cmd->add_option("--from-set", a->from_set, "Set name inside a FreeSewing sets file");
     cmd->add_option("--to-set", a->to_set, "Set name inside a FreeSewing sets file");

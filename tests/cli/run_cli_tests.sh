@@ -716,6 +716,65 @@ fi
 fi
 
 # --- grade options: each against a known answer ----------------------------------------------
+# Grading a pattern without bindings (GarmentCode): its girths found by laying it on the body it
+# is graded from (--base-body); each graded girth, recomputed here from the graded pattern's points
+# and the bindings file, is the target plus the base ease scaled (proportional ease); a bindings
+# file given back replaces the found ones.
+if in_section grade_infer; then
+gcs="$root/data/patterns/shirt_mean_specification.json"
+bodyf="$root/data/bodies/mh_female_average.obj"
+expect_ok "measure the base body" "$bin" measure "$bodyf" --units dm --out base_m.json
+$py - <<'PY'
+import json
+m = json.load(open("base_m.json"))
+for e in m["measurements"]:
+    if e["kind"] == "girth" and e["value_mm"]:
+        e["value_mm"] *= 1.08
+json.dump(m, open("target_m.json", "w"))
+PY
+expect_fail "grade: --from and --base-body" "either as a set \\(--from\\) or as a body" \
+  "$bin" grade "$gcs" --from base_m.json --base-body "$bodyf" --to target_m.json --out x.json
+expect_fail "grade: no base at all" "either as a set \\(--from\\) or as a body" \
+  "$bin" grade "$gcs" --to target_m.json --out x.json
+expect_ok "grade the GarmentCode shirt from its body" "$bin" grade "$gcs" --base-body "$bodyf" \
+  --base-units dm --to target_m.json --out gi.json --bindings-out bi.json --generations 0
+check_girths() {  # check_girths GRADED BINDINGS: every bound girth = target + scaled ease
+  $py - "$1" "$2" <<'PY'
+import json, math, sys
+g, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+base = {e["name"]: e["value_mm"] for e in json.load(open("base_m.json"))["measurements"]}
+target = {e["name"]: e["value_mm"] for e in json.load(open("target_m.json"))["measurements"]}
+pieces = {p["name"]: p for p in g["pieces"]}
+names = [x["measurement"] for x in b["bindings"]]
+assert names == ["bust_girth", "underbust_girth", "waist_girth", "high_hip_girth"], names
+for x in b["bindings"]:
+    got = 0
+    for f in x["features"]:
+        pts = pieces[f["piece"]]["points"]
+        (ax, ay), (bx, by) = pts[f["from_point"]], pts[f["to_point"]]
+        got += f["count"] * math.hypot(bx - ax, by - ay)
+    m = x["measurement"]
+    want = target[m] + x["ease"] * target[m] / base[m]
+    assert abs(got - want) <= 2, (m, got, want)
+PY
+}
+if check_girths gi.json bi.json; then ok "grade: the found girths graded to target + ease within 2 mm"
+else fail "grade: found girths after grading"; fi
+$py -c "
+import json; b = json.load(open('bi.json'))
+w = next(x for x in b['bindings'] if x['measurement'] == 'waist_girth'); w['ease'] += 50
+json.dump(b, open('bi2.json', 'w'))"
+expect_ok "grade with an edited bindings file" "$bin" grade "$gcs" --base-body "$bodyf" \
+  --base-units dm --to target_m.json --out gi2.json --bindings bi2.json --generations 0
+if check_girths gi2.json bi2.json && grep -q "bindings of bi2.json given" out.txt
+then ok "grade: a given bindings file replaces the found bindings"
+else fail "grade: --bindings"; fi
+printf '{"format": "tapeline-bindings", "units": "mm", "points": {"collar": {"a": [0, 0]}}, "bindings": []}\n' >bad_b.json
+expect_fail "grade: a bindings file naming a missing piece" "bad_b.json: .*has no piece 'collar'" \
+  "$bin" grade "$gcs" --base-body "$bodyf" --base-units dm --to target_m.json --out x.json --bindings bad_b.json
+if [ -e x.json ]; then fail "grade: a refusal wrote x.json"; else ok "grade: refusals write nothing"; fi
+fi
+
 if in_section grade_options; then
 echo "$base36" > base36.json
 echo "$base36" | sed 's/"chest": 979/"chest": 1143/; s/"hips": 953/"hips": 1112/;

@@ -44,8 +44,10 @@ Result measure_built(const std::vector<Vec3>& points, const Triangles& triangles
 
 MeasuredBody load_measured_body(const std::string& path, const BodyOptions& options) {
     const auto loaded = tapeline::read_triangle_mesh<SurfaceMesh>(path);
-    MeasuredBody b{meas::make_body(loaded.mesh, options), {}};
-    b.landmarks = meas::measure_body(b.body).landmarks;
+    MeasuredBody b{meas::make_body(loaded.mesh, options), {}, {}};
+    meas::BodyMeasurements m = meas::measure_body(b.body);
+    b.landmarks = std::move(m.landmarks);
+    b.measurements = std::move(m.measurements);
     return b;
 }
 

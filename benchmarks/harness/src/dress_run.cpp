@@ -47,13 +47,7 @@ DressRun dress_measured(MeasureRun m, const std::string& body_name, pattern::Pat
     }
 #ifdef TAPELINE_HAVE_GRADING
     if (base) {
-        const measurement::BodyMeasurements& r = m.result;
-        const sizes::MeasurementSet to = sizes::parse_measurement_json(
-            nlohmann::json::parse(measurement::body_measurements_json(body_name, r.frame,
-                                                                      r.measurements, r.landmarks,
-                                                                      r.report, r.warnings)
-                                      .dump()),
-            body_name);
+        const sizes::MeasurementSet to = measured_set(m, body_name);
         grading::GradingOptions go;
         go.seed = seed;
         go.threads = std::size_t(std::max(0, options.drape.threads));

@@ -1,5 +1,6 @@
 // The measurement pipeline on bench::Mesh (measure_run.h).
 #include <tapeline/bench/measure_run.h>
+#include <tapeline/sizes/json_formats.h>
 
 #include <tapeline/measurement/lengths.h>
 #include <tapeline/measurement/measurement_json.h>
@@ -35,6 +36,15 @@ nlohmann::ordered_json measure_json(const MeasureRun& run, const std::string& bo
                             {"lengths", run.length_seconds},
                             {"total", total_seconds}};
     return j;
+}
+
+sizes::MeasurementSet measured_set(const MeasureRun& run, const std::string& name) {
+    const measurement::BodyMeasurements& r = run.result;
+    return sizes::parse_measurement_json(
+        nlohmann::json::parse(measurement::body_measurements_json(name, r.frame, r.measurements,
+                                                                  r.landmarks, r.report, r.warnings)
+                                  .dump()),
+        name);
 }
 
 }  // namespace tapeline::bench

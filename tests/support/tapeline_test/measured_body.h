@@ -14,6 +14,7 @@ namespace tapeline_test::measurement {
 struct MeasuredBody {
     tapeline::measurement::Body body;
     tapeline::measurement::LandmarkSet landmarks;
+    tapeline::measurement::MeasurementSet measurements;  ///< the girths and lengths taken
 };
 
 /// read_triangle_mesh<Surface_mesh<Epick>>, make_body, then measure_body's landmarks.

@@ -190,30 +190,15 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     mo.target_edge_mm = o.resolution_mm;
     const pattern::PatternMesh pm = pattern::mesh_pattern(pattern, mo);
     const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
-    double gc_top = -1e300, gc_skirt_top = -1e300;
-    for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
-        const auto& p = pattern.pieces[i];
-        if (!p.placement) {
-            continue;
-        }
-        for (const auto& q : pm.pieces[i].uv) {
-            const double y = pattern::placed_point(*p.placement, q)[1];
-            if (regions[i] == Region::torso_front || regions[i] == Region::torso_back) {
-                gc_top = std::max(gc_top, y);
-            } else if (regions[i] == Region::skirt_front || regions[i] == Region::skirt_back) {
-                gc_skirt_top = std::max(gc_skirt_top, y);
-            }
-        }
+    std::vector<std::vector<pattern::Point2>> uv;
+    for (const auto& piece_mesh : pm.pieces) {
+        uv.push_back(piece_mesh.uv);
     }
-    const double top_y = shape.neck_y + o.placement.gap_mm;
-    const double gc_shift = gc_top > -1e300 ? top_y - gc_top
-                            : gc_skirt_top > -1e300
-                                ? shape.waist_y + o.placement.gap_mm - gc_skirt_top
-                                : 0.0;
+    const LayoutHeights heights = layout_heights(pattern, regions, uv, shape, o.placement.gap_mm);
     std::vector<PieceLayout> layouts;
     for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
-        layouts.push_back(piece_layout(pattern.pieces[i], pm.pieces[i], regions[i], top_y,
-                                       shape.waist_y + o.placement.gap_mm, gc_shift,
+        layouts.push_back(piece_layout(pattern.pieces[i], pm.pieces[i], regions[i], heights.top_y,
+                                       heights.waist_y, heights.gc_shift,
                                        sleeve_front_sign(pattern, i, regions)));
     }
     std::vector<std::vector<Vec3>> xyz;

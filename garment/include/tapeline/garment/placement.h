@@ -431,6 +431,43 @@ inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::Piec
     return out;
 }
 
+/// The heights pieces are laid out from (canonical mm): the top of the upper-body pieces, the
+/// waist skirts hang from (both a gap above the body's), and the vertical shift from GarmentCode's
+/// placement to the body, which keeps GarmentCode pieces at their relative heights (their
+/// highest torso point, else their highest skirt point, goes to the top). `uv[i]` holds points of
+/// piece i (its mesh vertices or its outline): their highest placed point is the piece's.
+struct LayoutHeights {
+    double top_y = 0, waist_y = 0, gc_shift = 0;
+};
+
+inline LayoutHeights layout_heights(const pattern::Pattern& pattern,
+                                    const std::vector<Region>& regions,
+                                    const std::vector<std::vector<pattern::Point2>>& uv,
+                                    const BodyShape& body, double gap_mm) {
+    double gc_top = -1e300, gc_skirt_top = -1e300;
+    for (std::size_t i = 0; i < pattern.pieces.size(); ++i) {
+        const auto& p = pattern.pieces[i];
+        if (!p.placement) {
+            continue;
+        }
+        for (const auto& q : uv[i]) {
+            const double y = pattern::placed_point(*p.placement, q)[1];
+            if (regions[i] == Region::torso_front || regions[i] == Region::torso_back) {
+                gc_top = std::max(gc_top, y);
+            } else if (regions[i] == Region::skirt_front || regions[i] == Region::skirt_back) {
+                gc_skirt_top = std::max(gc_skirt_top, y);
+            }
+        }
+    }
+    LayoutHeights h;
+    h.top_y = body.neck_y + gap_mm;
+    h.waist_y = body.waist_y + gap_mm;
+    h.gc_shift = gc_top > -1e300         ? h.top_y - gc_top
+                 : gc_skirt_top > -1e300 ? h.waist_y - gc_skirt_top
+                                         : 0.0;
+    return h;
+}
+
 /// The axis a sleeve is wrapped round: a line fitted to the arm where the sleeve goes, and the
 /// arm's radius about it.
 struct ArmAxis {

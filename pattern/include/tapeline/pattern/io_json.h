@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <ostream>
 #include <string>
 
@@ -27,6 +28,22 @@ namespace tapeline::pattern {
 inline constexpr int pattern_json_format_version = 1;
 
 namespace internal {
+
+inline Json bindings_json(const std::vector<MeasurementBinding>& bindings) {
+    Json out = Json::array();
+    for (const MeasurementBinding& b : bindings) {
+        Json jb{{"measurement", b.measurement}, {"ease", b.ease_mm}, {"features", Json::array()}};
+        for (const BoundFeature& f : b.features) {
+            jb["features"].push_back({{"piece", f.piece},
+                                      {"edges", f.edges},
+                                      {"from_point", f.from_point},
+                                      {"to_point", f.to_point},
+                                      {"count", f.count}});
+        }
+        out.push_back(std::move(jb));
+    }
+    return out;
+}
 
 inline Json point_json(const Point2& p) {
     return Json::array({p.x, p.y});
@@ -118,6 +135,40 @@ inline std::string opt_string(const Json& j, const char* key, const Where& w) {
 }
 
 /// Millimetres per unit (tapeline/core/units.h), or 0 for a unit we do not know.
+/// The bindings of a "bindings" array `j` (lengths scaled by `s` to mm), `w` naming it.
+inline std::vector<MeasurementBinding> bindings_from(const Json& j, double s, const Where& w) {
+    require_array(j, w);
+    std::vector<MeasurementBinding> out;
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        const Where wb = w.index(i);
+        const Json& jb = j[i];
+        MeasurementBinding b;
+        b.measurement = string(field(jb, "measurement", wb), wb.key("measurement"));
+        b.ease_mm = s * number(field(jb, "ease", wb), wb.key("ease"));
+        const Json& fs = field(jb, "features", wb);
+        require_array(fs, wb.key("features"));
+        for (std::size_t k = 0; k < fs.size(); ++k) {
+            const Where wf = wb.key("features").index(k);
+            BoundFeature f;
+            f.piece = string(field(fs[k], "piece", wf), wf.key("piece"));
+            if (const Json* es = optional_field(fs[k], "edges")) {
+                require_array(*es, wf.key("edges"));
+                for (std::size_t e = 0; e < es->size(); ++e) {
+                    f.edges.push_back(index_value((*es)[e], wf.key("edges").index(e)));
+                }
+            }
+            f.from_point = opt_string(fs[k], "from_point", wf);
+            f.to_point = opt_string(fs[k], "to_point", wf);
+            if (const Json* c = optional_field(fs[k], "count")) {
+                f.count = number(*c, wf.key("count"));
+            }
+            b.features.push_back(std::move(f));
+        }
+        out.push_back(std::move(b));
+    }
+    return out;
+}
+
 inline double unit_scale(const std::string& u) {
     const auto unit = length_unit(u);
     return unit ? millimetres_per(*unit) : 0;
@@ -196,18 +247,7 @@ inline nlohmann::json to_json(const Pattern& p) {
              {"b", range_json(s.b)},
              {"direction", s.direction == SeamDirection::same ? "same" : "opposite"}});
     }
-    j["bindings"] = Json::array();
-    for (const MeasurementBinding& b : p.bindings) {
-        Json jb{{"measurement", b.measurement}, {"ease", b.ease_mm}, {"features", Json::array()}};
-        for (const BoundFeature& f : b.features) {
-            jb["features"].push_back({{"piece", f.piece},
-                                      {"edges", f.edges},
-                                      {"from_point", f.from_point},
-                                      {"to_point", f.to_point},
-                                      {"count", f.count}});
-        }
-        j["bindings"].push_back(std::move(jb));
-    }
+    j["bindings"] = internal::bindings_json(p.bindings);
     return j;
 }
 
@@ -367,34 +407,7 @@ inline Pattern from_json(const nlohmann::json& j, const std::string& source) {
         }
     }
     if (const Json* bs = optional_field(j, "bindings")) {
-        require_array(*bs, top.key("bindings"));
-        for (std::size_t i = 0; i < bs->size(); ++i) {
-            const Where w = top.key("bindings").index(i);
-            const Json& jb = (*bs)[i];
-            MeasurementBinding b;
-            b.measurement = string(field(jb, "measurement", w), w.key("measurement"));
-            b.ease_mm = s * number(field(jb, "ease", w), w.key("ease"));
-            const Json& fs = field(jb, "features", w);
-            require_array(fs, w.key("features"));
-            for (std::size_t k = 0; k < fs.size(); ++k) {
-                const Where wf = w.key("features").index(k);
-                BoundFeature f;
-                f.piece = string(field(fs[k], "piece", wf), wf.key("piece"));
-                if (const Json* es = optional_field(fs[k], "edges")) {
-                    require_array(*es, wf.key("edges"));
-                    for (std::size_t e = 0; e < es->size(); ++e) {
-                        f.edges.push_back(index_value((*es)[e], wf.key("edges").index(e)));
-                    }
-                }
-                f.from_point = opt_string(fs[k], "from_point", wf);
-                f.to_point = opt_string(fs[k], "to_point", wf);
-                if (const Json* c = optional_field(fs[k], "count")) {
-                    f.count = number(*c, wf.key("count"));
-                }
-                b.features.push_back(std::move(f));
-            }
-            p.bindings.push_back(std::move(b));
-        }
+        p.bindings = bindings_from(*bs, s, top.key("bindings"));
     }
     return p;
 }
@@ -417,6 +430,98 @@ inline void write_pattern_json(const Pattern& p, const std::string& path, int in
 /// \throws InvalidInput also as from_json.
 inline Pattern read_pattern_json(const std::string& path) {
     return from_json(internal::parse_json_file(path), path);
+}
+
+/// A bindings file ("format": "tapeline-bindings", mm): the pattern's name, its measurement
+/// bindings (as in the pattern JSON) and, per piece, the named points those bindings use, so that
+/// bindings found on a body can be read, edited and given back (apply_bindings_file).
+inline nlohmann::json bindings_file_json(const Pattern& p) {
+    using internal::Json;
+    Json points = Json::object();
+    for (const MeasurementBinding& b : p.bindings) {
+        for (const BoundFeature& f : b.features) {
+            const Piece* piece = find_piece(p, f.piece);
+            for (const std::string* name : {&f.from_point, &f.to_point}) {
+                if (piece && !name->empty() && piece->points.count(*name)) {
+                    points[f.piece][*name] = internal::point_json(piece->points.at(*name));
+                }
+            }
+        }
+    }
+    return Json{{"format", "tapeline-bindings"},
+                {"pattern", p.name},
+                {"units", "mm"},
+                {"points", points},
+                {"bindings", internal::bindings_json(p.bindings)}};
+}
+
+/// Gives `p` the bindings of a bindings file `j` read from `source`: its points are added to
+/// their pieces (replacing points of the same name), and each of its bindings replaces the
+/// pattern's binding of the same measurement or is added.
+///
+/// \throws InvalidInput naming `source` and the key: not a tapeline-bindings document, an
+///         unknown unit, a point on a piece the pattern lacks, a malformed binding; or a
+///         binding that names a piece the pattern lacks.
+inline void apply_bindings_file(Pattern& p, const nlohmann::json& j, const std::string& source) {
+    using namespace internal;
+    const Where top{source, ""};
+    require_object(j, top);
+    const std::string format = string(field(j, "format", top), top.key("format"));
+    if (format != "tapeline-bindings") {
+        throw InvalidInput(top.key("format").str() + ": '" + format +
+                           "' is not a tapeline-bindings document");
+    }
+    const std::string units = string(field(j, "units", top), top.key("units"));
+    const double s = unit_scale(units);
+    if (s == 0) {
+        throw InvalidInput(top.key("units").str() + ": unknown unit '" + units +
+                           "' (expected mm, cm, dm, m or in)");
+    }
+    const ModelReader rd{s};
+    std::vector<std::pair<Piece*, std::pair<std::string, Point2>>> points;
+    if (const Json* pts = optional_field(j, "points")) {
+        require_object(*pts, top.key("points"));
+        for (const auto& [piece_name, named] : pts->items()) {
+            Piece* piece = find_piece(p, piece_name);
+            if (!piece) {
+                throw InvalidInput(top.key("points." + piece_name).str() + ": pattern '" + p.name +
+                                   "' has no piece '" + piece_name + "'");
+            }
+            require_object(named, top.key("points." + piece_name));
+            for (const auto& [k, v] : named.items()) {
+                points.push_back({piece, {k, rd.pt(v, top.key("points." + piece_name + "." + k))}});
+            }
+        }
+    }
+    const std::vector<MeasurementBinding> bindings =
+        bindings_from(field(j, "bindings", top), s, top.key("bindings"));
+    for (const MeasurementBinding& b : bindings) {
+        for (const BoundFeature& f : b.features) {
+            if (!find_piece(p, f.piece)) {
+                throw InvalidInput(top.key("bindings").str() + ": binding '" + b.measurement +
+                                   "' names piece '" + f.piece + "', which pattern '" + p.name +
+                                   "' lacks");
+            }
+        }
+    }
+    for (auto& [piece, named] : points) {
+        piece->points[named.first] = named.second;
+    }
+    for (const MeasurementBinding& b : bindings) {
+        auto it = std::find_if(
+            p.bindings.begin(), p.bindings.end(),
+            [&](const MeasurementBinding& x) { return x.measurement == b.measurement; });
+        if (it != p.bindings.end()) {
+            *it = b;
+        } else {
+            p.bindings.push_back(b);
+        }
+    }
+}
+
+/// apply_bindings_file with the bindings file at `path`.
+inline void apply_bindings_file(Pattern& p, const std::string& path) {
+    apply_bindings_file(p, internal::parse_json_file(path), path);
 }
 
 }  // namespace tapeline::pattern

@@ -8,6 +8,8 @@
 #include <tapeline/measurement/landmarks.h>
 #include <tapeline/measurement/measure.h>
 
+#include <tapeline/sizes/measurement_set.h>
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -34,5 +36,9 @@ MeasureRun measure_mesh(const Mesh& mesh, const measurement::BodyOptions& option
 /// file; `total_seconds`: the whole measurement, the load included).
 nlohmann::ordered_json measure_json(const MeasureRun& run, const std::string& body,
                                     double load_seconds, double total_seconds);
+
+/// The measurements of `run` as a measurement set named `name` (each under our name and its
+/// FreeSewing name, as sizes::parse_measurement_json reads `tapeline measure`'s JSON).
+sizes::MeasurementSet measured_set(const MeasureRun& run, const std::string& name);
 
 }  // namespace tapeline::bench
