@@ -368,8 +368,10 @@ def part_a(ctx, d):
         verdict = "does not hold"
     else:
         verdict = "undecided"
-    figure = "; ".join("%s k = %.2f [%s, %s]" % (fam, k, fmt(lo, "%.2f"), fmt(hi, "%.2f"))
-                       for fam, k, lo, hi in verdicts) or "no fit"
+    timing_figure = "; ".join("%s k = %.2f [%s, %s]" % (fam, k, fmt(lo, "%.2f"),
+                                                        fmt(hi, "%.2f"))
+                              for fam, k, lo, hi in verdicts) or "no fit"
+    figure = "time exponent of gcf-window:8 with its 95 % CI: " + timing_figure
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for (fam, method), (pts, f) in sorted(fits.items()):
@@ -395,7 +397,8 @@ def part_a(ctx, d):
                  s["a_repeat"], SEED, ", ".join(str(x) for x in s["a_ico"]),
                  ", ".join("×%d" % 4 ** k for k in s["a_spot"]),
                  "" if not bad else " Runs not ok: %d (see table.md)." % len(bad)))
-    return dict(table=table, plot="claim.png", verdict=verdict, figure=figure, notes=notes,
+    return dict(table=table, plot="claim.png", verdict=verdict, figure="–",
+                timing_figure=figure, notes=notes,
                 links=[("all runs", "table.md"), ("time plot", "query_time_vs_vertices.png"),
                        ("JSON lines", "linear_time.jsonl")])
 
@@ -667,7 +670,7 @@ def part_mmp(ctx, d):
     for r in recs:
         if r["status"] == "ok":
             by.setdefault((r["mesh"], r["vertices"]), {}).setdefault(r["method"], []).append(r)
-    rows, worst = [], 0.0
+    rows, worst, ratios = [], 0.0, []
     for (mesh, nv), per in sorted(by.items(), key=lambda x: (x[0][0].split(":")[0], x[0][1])):
         a, b = per.get("exact-mmp", []), per.get("exact-cgal", [])
         if not a or not b:
@@ -676,6 +679,7 @@ def part_mmp(ctx, d):
         mem = lambda rs: statistics.median(r["peak_rss_bytes"] for r in rs) / 1e6
         dis = max(r["max_rel_error"] for r in a)
         worst = max(worst, dis)
+        ratios.append(t(a) / t(b))
         rows.append([mesh, nv, "%d" % len(a), "%.2e" % dis, "%.3g" % (t(a) / t(b)),
                      "%.3g" % mem(a), "%.3g" % mem(b)])
     if not rows:
@@ -688,7 +692,8 @@ def part_mmp(ctx, d):
     notes = ("Both methods from the same sources in one run; agreement is the largest relative "
              "difference at any vertex. Peak RSS includes the process baseline.")
     return dict(table=table, plot="query_time_vs_vertices.png", verdict=verdict, figure=figure,
-                notes=notes, links=[("all runs", "table.md"), ("memory", "memory_vs_vertices.png"),
+                timing_figure="time ratio exact-mmp / exact-cgal %.2f to %.2f" % (
+                    min(ratios), max(ratios)), notes=notes, links=[("all runs", "table.md"), ("memory", "memory_vs_vertices.png"),
                                     ("JSON lines", "exact_mmp.jsonl")])
 
 
@@ -1033,11 +1038,13 @@ def render_results(ctx, results, wall):
     rows = []
     for key, folder, title, _ in PARTS:
         r = results[key]
-        rows.append([title, r["verdict"], r["figure"]])
-    L += [md_table(["claim", "verdict", "figure"], rows), "", ctx.provenance_line(), ""]
+        rows.append([title, r["verdict"], r["figure"], r.get("timing_figure") or "–"])
+    L += [md_table(["claim", "verdict", "figure", "timing figure"], rows), "",
+          ctx.provenance_line(), ""]
     for key, folder, title, _ in PARTS:
         r = results[key]
-        L += ["## %s" % title, "", "**Verdict: %s** — %s" % (r["verdict"], r["figure"]), ""]
+        fig = "; ".join(x for x in (r["figure"], r.get("timing_figure")) if x and x != "–")
+        L += ["## %s" % title, "", "**Verdict: %s** — %s" % (r["verdict"], fig), ""]
         if r.get("error"):
             L += ["**Part failed:** %s" % r["error"].replace("\n", " "), ""]
         if r.get("table"):
