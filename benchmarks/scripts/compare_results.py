@@ -50,11 +50,13 @@ def split_row(line):
 
 def tables(path):
     """Every table of a Markdown file: (line number, header, rows)."""
-    out, lines = [], open(path, encoding="utf-8").read().split("\n")
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    out = []
     i = 0
     while i < len(lines):
         if (lines[i].lstrip().startswith("|") and i + 1 < len(lines)
-                and re.match(r"^\s*\|?\s*:?-{3,}", lines[i + 1])):
+                and re.match(r"^\s*\|?\s*:?-+:?\s*(\||$)", lines[i + 1])):
             header = split_row(lines[i])
             rows, j = [], i + 2
             while j < len(lines) and lines[j].lstrip().startswith("|"):
@@ -111,7 +113,8 @@ def walk(a, b, where, diffs):
 
 
 def load_json(path):
-    text = open(path, encoding="utf-8").read()
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
     if path.endswith(".jsonl"):
         return [json.loads(line) for line in text.split("\n") if line.strip()]
     return json.loads(text)
