@@ -6,7 +6,7 @@ usage: compare_results.py A B [--show N]
 
 Compared: the set of files; every Markdown table of every .md file, cell by cell, except the
 columns whose heading names a timing or memory quantity (time, seconds, s, wall, RSS, MB, KB,
-ms/...); every .json and .jsonl file, value by value, except keys naming timings, memory or dates
+ms/..., and the exponents fitted to times: k query, R² query, k pre+query); every .json and .jsonl file, value by value, except keys naming timings, memory or dates
 (*seconds*, timings*, wall*, *rss*, timestamp, ms_per*, date). Text outside tables (provenance,
 dates, wall time) and the pixels of the plots are not compared; a PNG must exist in both.
 Prints every difference (the first N, default 20) and exits 0 when there is none, 1 when there
@@ -19,8 +19,9 @@ import re
 import sys
 
 PROG = "compare_results.py"
-VOLATILE_COLUMN = re.compile(r"time|seconds|\bs\b|wall|rss|\bmb\b|\bkb\b|ms/|date|timestamp",
-                             re.IGNORECASE)
+# bench_report.py's scaling table: "k query", "R² query", "k pre+query" are fitted to timings.
+VOLATILE_COLUMN = re.compile(r"time|seconds|\bs\b|wall|rss|\bmb\b|\bkb\b|ms/|date|timestamp|"
+                             r"^k query|^k pre|^r² query", re.IGNORECASE)
 VOLATILE_KEY = re.compile(r"seconds|^timings|^wall|rss|timestamp|^ms_per|^date$|^time$",
                           re.IGNORECASE)
 
