@@ -204,6 +204,9 @@ std::size_t run_geodesic_bench(const GeodesicBenchConfig& args) {
                             fields["pre_seconds"] = r.report.prepare_seconds;
                             fields["query_seconds"] = r.report.query_seconds;
                             fields["unreachable"] = r.report.unreachable;
+                            for (const auto& [key, value] : r.extra.items()) {
+                                fields[key] = value;
+                            }
                             if (!reference.empty()) {
                                 const ErrorStats e =
                                     relative_errors(r.distances, reference, excluded);
@@ -244,6 +247,11 @@ std::size_t run_geodesic_bench(const GeodesicBenchConfig& args) {
                           "mean_rel_error_truth", "max_rel_error_truth", "unreachable"}) {
                         line[key] = outcome.fields.contains(key) ? outcome.fields[key]
                                                                  : nlohmann::json(nullptr);
+                    }
+                    for (const char* key : {"epsilon", "max_faces", "error_bound"}) {
+                        if (outcome.fields.contains(key)) {  // the method's own (MethodResult)
+                            line[key] = outcome.fields[key];
+                        }
                     }
                     line["peak_rss_bytes"] = outcome.peak_rss_bytes;
                     line["base_rss_bytes"] = base_rss;

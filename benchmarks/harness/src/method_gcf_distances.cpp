@@ -28,8 +28,11 @@ MethodResult run_gcf(const Mesh& mesh, const Sources& sources,
     }
     MethodResult result;
     result.distances.assign(num_vertices(mesh), 0.0);
-    result.report = geodesic::gcf_distances(mesh, sources.vertices.front(),
-                                            CGAL::make_property_map(result.distances), options);
+    const geodesic::CurvatureFlowDistanceReport r = geodesic::gcf_distances(
+        mesh, sources.vertices.front(), CGAL::make_property_map(result.distances), options);
+    result.report = r;
+    result.extra = {
+        {"epsilon", r.epsilon}, {"max_faces", r.max_faces}, {"error_bound", r.error_bound}};
     return result;
 }
 

@@ -52,6 +52,10 @@ std::vector<std::array<double, 3>> mesh_points(const Mesh& mesh);
 struct MethodResult {
     std::vector<double> distances;
     geodesic::DistanceReport report;
+    /// Figures of the method's own report that the benchmark line carries (gcf-exact and
+    /// gcf-window: epsilon, max_faces and error_bound, the terms of the thesis' O(epsilon m)
+    /// bound); an empty object for the others.
+    nlohmann::json extra = nlohmann::json::object();
 };
 
 /// The window of gcf-window and gcf-points when the method name carries none: the library's
