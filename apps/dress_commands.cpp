@@ -56,6 +56,7 @@ struct DressArgs {
     bool strict = false;
     bool to_body = false;
     std::string from, from_set;
+    std::string base_body, base_units;  ///< the body the pattern was made for (with --to-body)
     std::uint32_t seed = 1;
 };
 
@@ -106,17 +107,27 @@ void run_dress(const DressArgs& a) {
 
     const tm::BodyOptions bo = tm::parse_body_options(a.body, a.units, a.up, a.front,
                                                       tm::to_string(tm::BodyOptions{}.pose), "--");
-    if (a.to_body && a.from.empty()) {
+    if (a.to_body && a.from.empty() == a.base_body.empty()) {
         throw InvalidInput(
-            "--to-body needs --from: the measurement set the pattern was drafted for");
+            "--to-body needs what the pattern was made for: its measurement set (--from) or the "
+            "body it was made for (--base-body), one of them");
     }
-    if (!a.to_body && (!a.from.empty() || !a.from_set.empty())) {
-        throw InvalidInput("--from and --from-set are for --to-body");
+    if (!a.to_body && (!a.from.empty() || !a.from_set.empty() || !a.base_body.empty())) {
+        throw InvalidInput("--from, --from-set and --base-body are for --to-body");
     }
     pattern::Pattern pat = load_pattern(a.pattern, a.db, a.format);
     pattern::require_valid(pat);
     std::optional<sizes::MeasurementSet> from;
-    if (a.to_body) {
+    if (a.to_body && !a.base_body.empty()) {
+        bench::BodyBase b = bench::base_from_body(
+            std::move(pat), a.base_body,
+            tm::parse_body_options(a.base_body, a.base_units, "+Y", "+Z", "A", "--base-"));
+        pat = std::move(b.pattern);
+        from = std::move(b.measurements);
+        for (const std::string& note : b.notes) {
+            std::cerr << "tapeline: binding: " << note << '\n';
+        }
+    } else if (a.to_body) {
         from = sizes::read_measurement_input(a.from, a.from_set);
     }
 
@@ -248,11 +259,16 @@ void register_dress_commands(CLI::App& app) {
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "
-                  "one command; needs --from)");
+                  "one command; needs --from or --base-body)");
     cmd->add_option("--from", a->from,
                     "With --to-body: the measurement set the pattern was drafted for (.json, "
                     ".vit, a FreeSewing sets file with --from-set)");
     cmd->add_option("--from-set", a->from_set, "Set name inside a FreeSewing sets file");
+    cmd->add_option("--base-body", a->base_body,
+                    "With --to-body: the body the pattern was made for, measured and the "
+                    "pattern laid on it to find its girth bindings (for patterns without them)");
+    cmd->add_option("--base-units", a->base_units,
+                    "Unit of --base-body: m, dm, cm or mm (default: inferred from its height)");
     cmd->add_option("--seed", a->seed, "Random seed of the grading (with --to-body)")
         ->capture_default_str();
     cmd->add_flag("--strict", a->strict,

@@ -10,11 +10,9 @@
 #include <CLI/CLI.hpp>
 
 #ifdef TAPELINE_HAVE_GRADING
+#include <tapeline/bench/dress_run.h>
 #include <tapeline/bench/grade_run.h>
-#include <tapeline/bench/measure_run.h>
 #include <tapeline/core/atomic_write.h>
-#include <tapeline/core/mesh_io.h>
-#include <tapeline/garment/bindings.h>
 #include <tapeline/grading/compare.h>
 #include <tapeline/grading/freesewing_bindings.h>
 #include <tapeline/grading/grade.h>
@@ -120,15 +118,13 @@ void run_grade(const GradeArgs& a) {
     if (!a.base_body.empty()) {
         // The base measurements are the body's; the girth bindings are found by laying the
         // pattern on it (garment/bindings.h).
-        const measurement::BodyOptions bo = measurement::parse_body_options(
-            a.base_body, a.base_units, a.base_up, a.base_front, "A", "--base-");
-        const auto loaded = read_triangle_mesh<bench::Mesh>(a.base_body);
-        const bench::MeasureRun m = bench::measure_mesh(loaded.mesh, bo);
-        from = bench::measured_set(m, a.base_body);
-        garment::BindingInference inf =
-            garment::infer_girth_bindings(m.body, m.result.landmarks, m.result.measurements, base);
-        base = std::move(inf.pattern);
-        inferred = std::move(inf.notes);
+        bench::BodyBase b = bench::base_from_body(
+            std::move(base), a.base_body,
+            measurement::parse_body_options(a.base_body, a.base_units, a.base_up, a.base_front, "A",
+                                            "--base-"));
+        base = std::move(b.pattern);
+        from = std::move(b.measurements);
+        inferred = std::move(b.notes);
     } else {
         from = sizes::read_measurement_input(a.from, a.from_set);
     }

@@ -1008,13 +1008,33 @@ then ok "dress: placement report agrees with the files"; else fail "dress: place
 # --to-body: measure, grade, dress in one command. The bundled body's bust (845 mm) is far below
 # the base set's chest (979 mm), so the graded tank top is placed narrower than the base one.
 fsm="$root/data/patterns/aaron_cisFemaleAdult36_measurements.json"
-expect_fail "dress: --to-body without --from" "needs --from" "$bin" dress "$body" --units dm "$fs" \
+expect_fail "dress: --to-body without --from" "needs what the pattern was made for" "$bin" dress "$body" --units dm "$fs" \
   --out x.obj --to-body
+expect_fail "dress: --to-body with --from and --base-body" "one of them" "$bin" dress "$body" --units dm "$fs" \
+  --out x.obj --to-body --from "$fsm" --base-body "$body"
 expect_fail "dress: --from without --to-body" "are for --to-body" "$bin" dress "$body" --units dm "$fs" \
   --out x.obj --from "$fsm"
 expect_fail "dress: --to-body with a missing base set" "nope.json" "$bin" dress "$body" --units dm "$fs" \
   --out x.obj --to-body --from nope.json
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a --to-body refusal left a file"; else ok "dress: --to-body refusals write nothing"; fi
+# A pattern without bindings (GarmentCode) dressed on a body 8 % wider than the one it was made for:
+# its girths found on the base body, graded to the wider one, placed.
+$py - "$body" <<'PY'
+import sys
+with open("wide.obj", "w") as out:
+    for line in open(sys.argv[1]):
+        w = line.split()
+        if w and w[0] == "v":
+            line = "v %.6f %s %.6f\n" % (1.08 * float(w[1]), w[2], 1.08 * float(w[3]))
+        out.write(line)
+PY
+gcs="$root/data/patterns/shirt_mean_specification.json"
+"$bin" dress wide.obj --units dm "$gcs" --to-body --base-body "$body" --base-units dm \
+  --resolution 30 --sew-seconds 0 --settle-seconds 0 --out wide_shirt.obj >out.txt 2>err.txt; rc=$?
+if [ $rc -eq 0 ] && [ -s wide_shirt.obj ] && grep -q "binding: bust_girth: .*ease" err.txt &&
+   grep -q "grading: graded shirt_mean.* from mh_female_average to wide" err.txt
+then ok "dress: --to-body --base-body grades a pattern without bindings to the body"
+else fail "dress: --base-body (exit $rc): $(head -c 400 err.txt)"; fi
 place_fs() {
   "$bin" dress "$body" --units dm "$fs" --without aaron.armBinding --without aaron.neckBinding \
     --resolution 30 --sew-seconds 0 --settle-seconds 0 "$@" 2>tb_err.txt

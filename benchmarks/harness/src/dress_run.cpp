@@ -1,5 +1,7 @@
 // The dressing pipeline on bench::Mesh (dress_run.h).
 #include <tapeline/bench/dress_run.h>
+#include <tapeline/core/mesh_io.h>
+#include <tapeline/garment/bindings.h>
 
 #include <tapeline/bench/measure_run.h>
 #include <tapeline/core/errors.h>
@@ -74,6 +76,19 @@ DressRun dress_measured(MeasureRun m, const std::string& body_name, pattern::Pat
     run.report.total_seconds =
         measure_seconds + std::chrono::duration<double>(Clock::now() - t0).count();
     return run;
+}
+
+BodyBase base_from_body(pattern::Pattern pattern, const std::string& path,
+                        const measurement::BodyOptions& body_options) {
+    const auto loaded = read_triangle_mesh<Mesh>(path);
+    const MeasureRun m = measure_mesh(loaded.mesh, body_options);
+    BodyBase b;
+    b.measurements = measured_set(m, body_options.name);
+    garment::BindingInference inf = garment::infer_girth_bindings(
+        m.body, m.result.landmarks, m.result.measurements, std::move(pattern));
+    b.pattern = std::move(inf.pattern);
+    b.notes = std::move(inf.notes);
+    return b;
 }
 
 void set_settle_seconds(garment::SewingOptions& sewing, double seconds) {

@@ -52,6 +52,20 @@ DressRun dress_measured(MeasureRun measured, const std::string& body_name, patte
 /// `settle_seconds` mean.
 void set_settle_seconds(garment::SewingOptions& sewing, double seconds);
 
+/// A pattern's base taken from the body it was made for: the body measured (its measurements are
+/// the grading's base set) and the pattern laid on it to find its girth bindings
+/// (garment::infer_girth_bindings).
+struct BodyBase {
+    pattern::Pattern pattern;            ///< with the bindings found on the body
+    sizes::MeasurementSet measurements;  ///< the body's, named `body_options.name`
+    std::vector<std::string> notes;      ///< per girth: bound (where, ease) or why not
+};
+
+/// Reads the body at `path` (any mesh format the tool reads), measures it and finds the girth
+/// bindings of `pattern` on it. Throws as reading, measuring and garment::infer_girth_bindings.
+BodyBase base_from_body(pattern::Pattern pattern, const std::string& path,
+                        const measurement::BodyOptions& body_options);
+
 /// The report `tapeline dress --report` writes: body and pattern names, the body's unit, then
 /// garment::dress_report_json.
 nlohmann::ordered_json dress_report_json(const DressRun& run, const std::string& body,
