@@ -28,6 +28,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 import bench_report as br  # noqa: E402  (the JSON-line reader, exponent fit, tables and plots)
+from subdivide_obj import read_obj  # noqa: E402
 
 PROG = "reproduce.sh"
 SEED = 1
@@ -405,19 +406,9 @@ def part_a(ctx, d):
 
 def obj_mesh_stats(path):
     """|V| and the mean edge length of a triangle OBJ."""
-    pts, edges = [], set()
-    with open(path) as f:
-        for line in f:
-            w = line.split()
-            if not w:
-                continue
-            if w[0] == "v":
-                pts.append(tuple(float(x) for x in w[1:4]))
-            elif w[0] == "f":
-                ids = [int(x.split("/")[0]) - 1 for x in w[1:]]
-                for i in range(len(ids)):
-                    a, b = ids[i], ids[(i + 1) % len(ids)]
-                    edges.add((min(a, b), max(a, b)))
+    pts, tris = read_obj(path)
+    edges = {(min(a, b), max(a, b)) for t in tris for a, b in ((t[0], t[1]), (t[1], t[2]),
+                                                                  (t[2], t[0]))}
     total = sum(math.dist(pts[a], pts[b]) for a, b in edges)
     return len(pts), total / len(edges)
 

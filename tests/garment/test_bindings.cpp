@@ -21,18 +21,9 @@ namespace tp = tapeline::pattern;
 
 namespace {
 
+using tapeline_test::measurement::bundled_path;
+using tapeline_test::measurement::load_dm_body;
 using tapeline_test::measurement::MeasuredBody;
-
-MeasuredBody load_body(const std::string& path) {
-    tmeas::BodyOptions o;
-    o.name = path;
-    o.unit = tmeas::LengthUnit::dm;
-    return tapeline_test::measurement::load_measured_body(path, o);
-}
-
-std::string bundled(const std::string& rel) {
-    return std::string(TAPELINE_DATA_DIR) + "/" + rel;
-}
 
 /// Length of the section of triangles `tris` of positions `x` by the plane y = `y`.
 double section_length(const std::vector<tg::Vec3>& x, const std::vector<tg::Tri>& tris, double y) {
@@ -62,10 +53,10 @@ double segment_distance(const tp::Point2& a, const tp::Point2& b, const tp::Poin
 }
 
 const tg::BindingInference& shirt_on_bundled_body(const MeasuredBody*& body) {
-    static const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
+    static const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     static const tg::BindingInference inf = tg::infer_girth_bindings(
         b.body, b.landmarks, b.measurements,
-        tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json")));
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json")));
     body = &b;
     return inf;
 }
@@ -79,7 +70,8 @@ const tg::BindingInference& shirt_on_bundled_body(const MeasuredBody*& body) {
 TEST(GarmentBindings, ShirtGirthsAreTheSectionsOfThePlacedGarment) {
     const MeasuredBody* b = nullptr;
     const tg::BindingInference& inf = shirt_on_bundled_body(b);
-    tp::Pattern shirt = tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+    tp::Pattern shirt =
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     tg::DressOptions o;
     o.resolution_mm = 10;
     o.sewing.sew_seconds = 0;  // placement only
@@ -131,7 +123,7 @@ TEST(GarmentBindings, TankTopHalvesCountTwiceAndAnOpenLevelIsNoGirth) {
     shirt_on_bundled_body(b);
     const tg::BindingInference inf = tg::infer_girth_bindings(
         b->body, b->landmarks, b->measurements,
-        tp::read_pattern_file(bundled("patterns/aaron_cisFemaleAdult36.json")));
+        tp::read_pattern_file(bundled_path("patterns/aaron_cisFemaleAdult36.json")));
     bool hips = false, armhole = false, strips = false;
     for (const tp::MeasurementBinding& g : inf.pattern.bindings) {
         hips = hips || g.measurement == "hips";
@@ -155,7 +147,8 @@ TEST(GarmentBindings, BindingsFileRoundTripAndOverride) {
     const MeasuredBody* b = nullptr;
     const tg::BindingInference& inf = shirt_on_bundled_body(b);
     nlohmann::json file = tp::bindings_file_json(inf.pattern);
-    tp::Pattern fresh = tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+    tp::Pattern fresh =
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     tp::apply_bindings_file(fresh, file, "b.json");
     EXPECT_EQ(tp::to_json(fresh), tp::to_json(inf.pattern));
     file["bindings"][0]["ease"] = 300;
@@ -173,7 +166,8 @@ TEST(GarmentBindings, BindingsFileRoundTripAndOverride) {
 TEST(GarmentBindings, NoTorsoPieceIsRefused) {
     const MeasuredBody* b = nullptr;
     shirt_on_bundled_body(b);
-    tp::Pattern sleeves = tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+    tp::Pattern sleeves =
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     sleeves.pieces.erase(std::remove_if(sleeves.pieces.begin(), sleeves.pieces.end(),
                                         [](const tp::Piece& p) {
                                             return p.name.find("torso") != std::string::npos;

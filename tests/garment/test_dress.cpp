@@ -26,18 +26,9 @@ namespace {
 
 using tapeline_test::message_of;
 
+using tapeline_test::measurement::bundled_path;
+using tapeline_test::measurement::load_dm_body;
 using tapeline_test::measurement::MeasuredBody;
-
-MeasuredBody load_body(const std::string& path) {
-    tmeas::BodyOptions o;
-    o.name = path;
-    o.unit = tmeas::LengthUnit::dm;
-    return tapeline_test::measurement::load_measured_body(path, o);
-}
-
-std::string bundled(const std::string& rel) {
-    return std::string(TAPELINE_DATA_DIR) + "/" + rel;
-}
 
 }  // namespace
 
@@ -99,9 +90,9 @@ TEST(GarmentPlacement, ArmAxisFollowsTheUpperArmOfABentArm) {
 // cloth inside the body, the run ends without a solver failure, every seam is closable and the
 // welded garment's openings are its neck, hem and two cuffs.
 TEST(Dress, ShirtOnTheBundledBody) {
-    const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
+    const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     const tp::Pattern shirt =
-        tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     tg::DressOptions o;
     o.resolution_mm = 20;  // coarse: a unit test, not the benchmark
     const tg::DressResult r = tg::dress(b.body, b.landmarks, shirt, o);
@@ -151,9 +142,9 @@ TEST(Dress, ShirtOnAHeavyMuscularBodySewsWithoutBlowingUp) {
     if (!std::filesystem::exists(file)) {
         GTEST_SKIP() << file << " is absent";
     }
-    const MeasuredBody b = load_body(file.string());
+    const MeasuredBody b = load_dm_body(file.string());
     const tp::Pattern shirt =
-        tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     tg::DressOptions o;
     o.resolution_mm = 20;
     tg::DressResult r;
@@ -190,9 +181,9 @@ TEST(Dress, AGarmentThatFellOffFailsTheTopDropGate) {
 // current figures: seams not all closed, cloth edges crossing the body, self-intersections and
 // stretch above the limits); run it with --gtest_also_run_disabled_tests.
 TEST(Dress, DISABLED_ShirtPassesTheQualityGates) {
-    const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
+    const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     const tp::Pattern shirt =
-        tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     tg::DressOptions o;
     const tg::DressResult r = tg::dress(b.body, b.landmarks, shirt, o);
     for (const tg::Gate& g : r.report.gates) {
@@ -210,9 +201,9 @@ void place_on_population(const std::function<void(const char*, const tg::DressRe
         GTEST_SKIP() << dir << " is absent";
     }
     const tp::Pattern shirt =
-        tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     for (const char* name : {"mh_pop_003.ply", "mh_pop_012.ply", "mh_pop_021.ply"}) {
-        const MeasuredBody b = load_body((dir / name).string());
+        const MeasuredBody b = load_dm_body((dir / name).string());
         tg::DressOptions o;
         o.resolution_mm = 25;
         o.sewing.sew_seconds = 0;  // placement and strings only
@@ -251,13 +242,13 @@ TEST(Dress, TShirtSleevesArePairedAndPlacedOnTheirArms) {
         GTEST_SKIP() << file << " is absent";
     }
     const tp::Pattern tshirt = tp::read_pattern_file(file.string());
-    std::vector<std::string> bodies = {bundled("bodies/mh_female_average.obj")};
+    std::vector<std::string> bodies = {bundled_path("bodies/mh_female_average.obj")};
     if (std::filesystem::exists(pop)) {
         bodies.push_back(pop.string());
     }
     for (const std::string& path : bodies) {
         SCOPED_TRACE(path);
-        const MeasuredBody b = load_body(path);
+        const MeasuredBody b = load_dm_body(path);
         tg::DressOptions o;
         o.resolution_mm = 25;
         o.sewing.sew_seconds = 0;  // placement and strings only
@@ -337,7 +328,7 @@ TEST(Dress, TShirtComesToRestOutsideTheBody) {
     if (!std::filesystem::exists(file)) {
         GTEST_SKIP() << file << " is absent";
     }
-    const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
+    const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     tg::DressOptions o;
     o.resolution_mm = 20;
     const tg::DressResult r =
@@ -350,8 +341,9 @@ TEST(Dress, TShirtComesToRestOutsideTheBody) {
 }
 
 TEST(Dress, Refusals) {
-    const MeasuredBody b = load_body(bundled("bodies/mh_female_average.obj"));
-    tp::Pattern shirt = tp::read_pattern_file(bundled("patterns/shirt_mean_specification.json"));
+    const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
+    tp::Pattern shirt =
+        tp::read_pattern_file(bundled_path("patterns/shirt_mean_specification.json"));
     tg::DressOptions o;
     tp::Pattern no_seams = shirt;
     no_seams.seams.clear();

@@ -21,4 +21,19 @@ struct MeasuredBody {
 MeasuredBody load_measured_body(const std::string& path,
                                 const tapeline::measurement::BodyOptions& options);
 
+/// load_measured_body of a body in decimetres (the MakeHuman bodies of the data folders).
+inline MeasuredBody load_dm_body(const std::string& path) {
+    tapeline::measurement::BodyOptions o;
+    o.name = path;
+    o.unit = tapeline::measurement::LengthUnit::dm;
+    return load_measured_body(path, o);
+}
+
+#ifdef TAPELINE_DATA_DIR
+/// A file of the project's data folder, by its path inside it ("bodies/mh_female_average.obj").
+inline std::string bundled_path(const std::string& rel) {
+    return std::string(TAPELINE_DATA_DIR) + "/" + rel;
+}
+#endif
+
 }  // namespace tapeline_test::measurement

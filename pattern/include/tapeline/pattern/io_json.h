@@ -135,6 +135,32 @@ inline std::string opt_string(const Json& j, const char* key, const Where& w) {
 }
 
 /// Millimetres per unit (tapeline/core/units.h), or 0 for a unit we do not know.
+inline double unit_scale(const std::string& u) {
+    const auto unit = length_unit(u);
+    return unit ? millimetres_per(*unit) : 0;
+}
+
+/// Checks that document `j` is an object whose "format" is `format`.
+inline void require_format(const Json& j, const Where& top, const std::string& format) {
+    require_object(j, top);
+    const std::string f = string(field(j, "format", top), top.key("format"));
+    if (f != format) {
+        throw InvalidInput(top.key("format").str() + ": '" + f + "' is not a " + format +
+                           " document");
+    }
+}
+
+/// The factor from the document's "units" to mm.
+inline double document_scale(const Json& j, const Where& top) {
+    const std::string units = string(field(j, "units", top), top.key("units"));
+    const double s = unit_scale(units);
+    if (s == 0) {
+        throw InvalidInput(top.key("units").str() + ": unknown unit '" + units +
+                           "' (expected mm, cm, dm, m or in)");
+    }
+    return s;
+}
+
 /// The bindings of a "bindings" array `j` (lengths scaled by `s` to mm), `w` naming it.
 inline std::vector<MeasurementBinding> bindings_from(const Json& j, double s, const Where& w) {
     require_array(j, w);
@@ -167,11 +193,6 @@ inline std::vector<MeasurementBinding> bindings_from(const Json& j, double s, co
         out.push_back(std::move(b));
     }
     return out;
-}
-
-inline double unit_scale(const std::string& u) {
-    const auto unit = length_unit(u);
-    return unit ? millimetres_per(*unit) : 0;
 }
 
 }  // namespace internal
@@ -259,12 +280,7 @@ inline nlohmann::json to_json(const Pattern& p) {
 inline Pattern from_json(const nlohmann::json& j, const std::string& source) {
     using namespace internal;
     const Where top{source, ""};
-    require_object(j, top);
-    const std::string format = string(field(j, "format", top), top.key("format"));
-    if (format != "tapeline-pattern") {
-        throw InvalidInput(top.key("format").str() + ": '" + format +
-                           "' is not a tapeline-pattern document");
-    }
+    require_format(j, top, "tapeline-pattern");
     const Json& ver = field(j, "format_version", top);
     if (!ver.is_number_integer() || ver.get<long long>() < 1 ||
         ver.get<long long>() > pattern_json_format_version) {
@@ -272,12 +288,7 @@ inline Pattern from_json(const nlohmann::json& j, const std::string& source) {
                            " is not supported (this reader knows 1.." +
                            std::to_string(pattern_json_format_version) + ")");
     }
-    const std::string units = string(field(j, "units", top), top.key("units"));
-    const double s = unit_scale(units);
-    if (s == 0) {
-        throw InvalidInput(top.key("units").str() + ": unknown unit '" + units +
-                           "' (expected mm, cm, dm, m or in)");
-    }
+    const double s = document_scale(j, top);
     const ModelReader rd{s};
     Pattern p;
     p.units = "mm";
@@ -465,18 +476,8 @@ inline nlohmann::json bindings_file_json(const Pattern& p) {
 inline void apply_bindings_file(Pattern& p, const nlohmann::json& j, const std::string& source) {
     using namespace internal;
     const Where top{source, ""};
-    require_object(j, top);
-    const std::string format = string(field(j, "format", top), top.key("format"));
-    if (format != "tapeline-bindings") {
-        throw InvalidInput(top.key("format").str() + ": '" + format +
-                           "' is not a tapeline-bindings document");
-    }
-    const std::string units = string(field(j, "units", top), top.key("units"));
-    const double s = unit_scale(units);
-    if (s == 0) {
-        throw InvalidInput(top.key("units").str() + ": unknown unit '" + units +
-                           "' (expected mm, cm, dm, m or in)");
-    }
+    require_format(j, top, "tapeline-bindings");
+    const double s = document_scale(j, top);
     const ModelReader rd{s};
     std::vector<std::pair<Piece*, std::pair<std::string, Point2>>> points;
     if (const Json* pts = optional_field(j, "points")) {
