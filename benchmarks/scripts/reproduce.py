@@ -1171,6 +1171,7 @@ def part_peers(ctx, d):
                              os.path.join(ctx.work, "peer_ours.jsonl"))
             for r in ours:
                 r["mesh"], r["peer_set"] = name, kind
+                r["mesh_file"] = os.path.basename(obj)  # a path relative to the run
                 if r.get("vertices") != nv:
                     raise PartError("%s: the tool loaded %s vertices, the OBJ has %d" % (
                         name, r.get("vertices"), nv))
@@ -1262,7 +1263,7 @@ def part_peers(ctx, d):
     table = md_table(["peer method", "what", "mesh", "|V|", "mean rel err vs our exact-mmp",
                       "max rel err vs our exact-mmp", "our counterpart",
                       "our counterpart's mean rel err", "peer time s", "our time s",
-                      "time ratio peer / ours", "query-only ratio"], rows)
+                      "time ratio peer / ours", "query-only time ratio"], rows)
     plt = pyplot()
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.2))
     for (peer, pts), mk in zip(sorted(plotdata.items()), "osD^v"):
