@@ -12,6 +12,7 @@ not run (one line on stderr, nothing written).
 """
 import argparse
 import datetime
+import hashlib
 import json
 import math
 import os
@@ -210,6 +211,8 @@ class Context:
         self.stage = None
         self.work = None
         self.meta = {}
+        self.peer_tool = None
+        self.peer_git = None
 
     def part_dir(self, key):
         d = os.path.join(self.stage, "results", key)
@@ -1000,23 +1003,325 @@ def part_wrinkles(ctx, d):
                 notes="", links=[])
 
 
-PEER_METHODS = ["MMP (exact polyhedral)", "heat method", "fast marching", "FlipOut (edge flips)",
-                "point-cloud heat"]
+# Peers: geometry-central's methods, built from the checkout --peers names (never downloaded),
+# by the driver of benchmarks/peers/ in a build folder of its own outside the project's build.
+# (peer method, what it computes, our counterpart in `bench geodesic`)
+PEER_METHODS = [("gc-mmp", "MMP (exact polyhedral)", "exact-mmp"),
+                ("gc-heat", "heat method", "heat"),
+                ("gc-fmm", "fast marching", "dijkstra"),
+                ("gc-flipout", "FlipOut (edge flips)", "exact-mmp path"),
+                ("gc-pc-heat", "point-cloud heat", "gcf-points")]
+PEER_EXACT_RULE = 1e-12  # gc-mmp against exact-mmp: mean relative difference at most this
+PEER_SRC = os.path.join(ROOT, "benchmarks", "peers")
+
+
+def peer_build_dir(peers):
+    cache = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return os.path.join(cache, "tapeline", "peers", "gc-" + hashlib.sha1(
+        peers.encode()).hexdigest()[:10])
+
+
+def check_peers_dir(peers):
+    """The checks of --peers DIR made before anything runs (UsageError: exit 2)."""
+    if not os.path.isdir(peers):
+        raise UsageError("--peers %s: no such folder" % peers)
+    if not os.path.isdir(os.path.join(peers, "include", "geometrycentral")) or \
+            not os.path.isfile(os.path.join(peers, "CMakeLists.txt")):
+        raise UsageError("--peers %s: not a geometry-central checkout (no "
+                         "include/geometrycentral or CMakeLists.txt)" % peers)
+    if not os.path.isfile(os.path.join(peers, "deps", "happly", "happly.h")):
+        raise UsageError("--peers %s: deps/happly is empty (run `git submodule update --init` "
+                         "in the checkout)" % peers)
+    if shutil.which("cmake") is None:
+        raise UsageError("--peers %s: cmake not found (needed to build the peer)" % peers)
+
+
+def build_peer(ctx):
+    """Configure and build benchmarks/peers/ against the checkout (Release with the tool's own
+    optimisation flags, -j1), in a cache folder kept between runs; the driver is copied into the
+    run's work folder. A checkout that does not build is a bad --peers DIR: UsageError."""
+    build = peer_build_dir(ctx.peers)
+    flags = ctx.meta.get("flags", "none")
+    flags_arg = [] if flags in ("none", "unknown") else ["-DCMAKE_CXX_FLAGS_RELEASE=" + flags]
+    os.makedirs(build, exist_ok=True)
+    log = os.path.join(build, "build.log")
+    say("peers: building geometry-central from %s in %s (log: %s)" % (ctx.peers, build, log))
+    with open(log, "w") as lf:
+        for step in (["cmake", "-S", PEER_SRC, "-B", build, "-DCMAKE_BUILD_TYPE=Release",
+                      "-DGC_DIR=" + ctx.peers] + flags_arg,
+                     ["cmake", "--build", build, "--target", "gc_peer", "-j1"]):
+            lf.write("$ %s\n" % " ".join(step))
+            lf.flush()
+            p = subprocess.Popen(step, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                 text=True)
+            tail = []
+            for line in p.stdout:
+                lf.write(line)
+                tail = (tail + [line.rstrip()])[-20:]
+                if re.match(r"^\[\s*\d+%\]", line):
+                    sys.stderr.write("peers: " + line)
+            if p.wait() != 0:
+                err = next((t for t in tail if "error" in t.lower()), None) or \
+                    next((t for t in reversed(tail) if t.strip()), "no message")
+                raise UsageError("--peers %s: geometry-central does not build (%s; log: %s)" % (
+                    ctx.peers, err.strip()[:200], log))
+    exe = os.path.join(build, "gc_peer")
+    if not os.access(exe, os.X_OK):
+        raise UsageError("--peers %s: the build made no gc_peer (log: %s)" % (ctx.peers, log))
+    ctx.peer_tool = os.path.join(ctx.work, "gc_peer")
+    shutil.copy2(exe, ctx.peer_tool)
+    try:
+        rev = subprocess.run(["git", "-C", ctx.peers, "rev-parse", "--short=12", "HEAD"],
+                             capture_output=True, text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", ctx.peers, "status", "--porcelain",
+                                "--untracked-files=no"], capture_output=True,
+                               text=True).stdout.strip()
+        ctx.peer_git = rev + ("-dirty" if dirty else "")
+    except (OSError, subprocess.CalledProcessError):
+        ctx.peer_git = "unknown (not a git checkout)"
+
+
+def run_peer(ctx, obj, method, source, target=None, out=None):
+    cmd = [ctx.peer_tool, obj, "--method", method, "--source", source]
+    if target is not None:
+        cmd += ["--target", target]
+    if out:
+        cmd += ["--out", out]
+    text = run(cmd)
+    line = next((t for t in reversed(text.splitlines()) if t.startswith("{")), None)
+    if line is None:
+        raise PartError("gc_peer %s wrote no result line" % method)
+    return json.loads(line)
+
+
+def rel_errors(values, reference, excluded):
+    """Mean and max relative error, reachability mismatches: the formula of the bench lines'
+    mean_rel_error (benchmarks/harness/src/error_stats.cpp), the source and its one-ring
+    excluded."""
+    total, mx, n, mismatch = 0.0, 0.0, 0, 0
+    for i, (v, r) in enumerate(zip(values, reference)):
+        if i in excluded:
+            continue
+        if math.isfinite(v) != math.isfinite(r):
+            mismatch += 1
+            continue
+        if not math.isfinite(r) or r <= 0:
+            continue
+        e = abs(v - r) / r
+        total += e
+        mx = max(mx, e)
+        n += 1
+    return (total / n if n else None), (mx if n else None), mismatch
+
+
+def peer_mesh(ctx, name, cache):
+    """The OBJ of a benchmark mesh (an analytic spec through `mesh generate` with the bench's
+    seed, or the file), its points and triangles."""
+    if name in cache:
+        return cache[name]
+    arg = ctx.mesh_arg(name)
+    if arg is None:
+        cache[name] = None
+        return None
+    obj = os.path.join(ctx.work, "peer_%s.obj" % re.sub(r"[^A-Za-z0-9]+", "_", name))
+    if arg[0] == "--surface":
+        run([ctx.tool, "--quiet", "mesh", "generate", name, "--seed", SEED, "--out", obj])
+    elif arg[1].endswith(".obj"):
+        shutil.copy(arg[1], obj)
+    else:
+        cache[name] = None
+        return None
+    pts, tris = read_obj(obj)
+    cache[name] = (obj, pts, tris)
+    return cache[name]
 
 
 def part_peers(ctx, d):
+    """geometry-central beside our methods on the meshes and sources of parts mmp and d."""
     if ctx.peers is None:
-        status = "peer not built (no --peers DIR)"
+        table = md_table(["peer", "method", "status"],
+                         [["geometry-central", m, "peer not built (no --peers DIR)"]
+                          for _, m, _ in PEER_METHODS])
+        return dict(table=table, plot=None, verdict="not run", figure="peer not built",
+                    notes="With `--peers DIR` (a local geometry-central checkout with its "
+                          "submodules, never downloaded or committed) the driver of "
+                          "benchmarks/peers/ is built against it and geometry-central's MMP, "
+                          "heat method, fast marching, FlipOut and point-cloud heat method run "
+                          "on the meshes and sources of parts mmp and (d), beside ours.",
+                    links=[])
+    s = ctx.size
+    rep = s["mmp_repeat"]
+    cache, runs, rows, plotdata, missing = {}, [], [], {}, []
+    ours_all = []
+    sets = [("surface", s["mmp_surfaces"], s["mmp_sources"], rep,
+             "exact-mmp,heat,dijkstra", ["gc-mmp", "gc-heat", "gc-fmm", "gc-flipout"]),
+            ("points", s["d_meshes"], s["d_sources"], 1, "exact-mmp,gcf-points",
+             ["gc-pc-heat"])]
+    for kind, names, nsources, repeat, ours_methods, peer_methods in sets:
+        for name in names:
+            m = peer_mesh(ctx, name, cache)
+            if m is None:
+                missing.append(name)
+                continue
+            obj, pts, tris = m
+            nv = len(pts)
+            say("peers: %s (%d vertices): ours %s" % (name, nv, ours_methods))
+            ours = ctx.bench(["--mesh", obj, "--methods", ours_methods, "--reference",
+                              "exact-mmp", "--sources", nsources, "--repeat", repeat],
+                             os.path.join(ctx.work, "peer_ours.jsonl"))
+            for r in ours:
+                r["mesh"], r["peer_set"] = name, kind
+                r["mesh_file"] = os.path.basename(obj)  # a path relative to the run
+                if r.get("vertices") != nv:
+                    raise PartError("%s: the tool loaded %s vertices, the OBJ has %d" % (
+                        name, r.get("vertices"), nv))
+            ours_all += ours
+            sources = []
+            for r in ours:
+                if r["source"] not in sources:
+                    sources.append(r["source"])
+            for src in sources:
+                ref_f = os.path.join(ctx.work, "peer_ref.txt")
+                run([ctx.tool, "--quiet", "geodesic", "distances", obj, "--source", src,
+                     "--method", "exact-mmp", "--out", ref_f])
+                ref = read_distances(ref_f)
+                excluded = {src} | {v for t in tris if src in t for v in t}
+                target = max((i for i in range(nv) if math.isfinite(ref[i])),
+                             key=lambda i: ref[i])
+                for method in peer_methods:
+                    say("peers: %s source %d: %s" % (name, src, method))
+                    if method == "gc-flipout":
+                        ours_path = []
+                        for _ in range(repeat):
+                            pj = os.path.join(ctx.work, "peer_path.json")
+                            run([ctx.tool, "--quiet", "geodesic", "path", obj, "--from", src,
+                                 "--to", target, "--out", pj])
+                            ours_path.append(json.load(open(pj)))
+                    for k in range(repeat):
+                        dist_f = os.path.join(ctx.work, "peer_dist.txt")
+                        line = run_peer(ctx, obj, method, src,
+                                        target if method == "gc-flipout" else None,
+                                        None if method == "gc-flipout" else dist_f)
+                        line.update(mesh=name, vertices=nv, source=src, repetition=k)
+                        if method == "gc-flipout":
+                            line["exact_length"] = ref[target]
+                            line["ours_path_length"] = ours_path[0]["length"]
+                            line["ours_path_seconds"] = statistics.median(
+                                p["seconds"] for p in ours_path)
+                            e = abs(line["length"] - ref[target]) / ref[target]
+                            line.update(mean_rel_error=e, max_rel_error=e,
+                                        reachability_mismatches=0)
+                        elif k == 0:
+                            mean, mx, mism = rel_errors(read_distances(dist_f), ref, excluded)
+                            line.update(mean_rel_error=mean, max_rel_error=mx,
+                                        reachability_mismatches=mism)
+                        runs.append(line)
+    if not runs:
+        raise PartError("no mesh available (missing: %s)" % ", ".join(missing))
+    write_jsonl(os.path.join(d, "peers.jsonl"), runs)
+    write_jsonl(os.path.join(d, "ours.jsonl"), ours_all)
+    median = statistics.median
+    exact_worst = None
+    for peer, what, counterpart in PEER_METHODS:
+        for name in dict.fromkeys(r["mesh"] for r in runs if r["method"] == peer):
+            pr = [r for r in runs if r["method"] == peer and r["mesh"] == name]
+            errs = [r for r in pr if r.get("mean_rel_error") is not None]
+            mean = statistics.mean(r["mean_rel_error"] for r in errs) if errs else None
+            mx = max(r["max_rel_error"] for r in errs) if errs else None
+            mism = sum(r.get("reachability_mismatches", 0) for r in pr)
+            t_peer = median(r["pre_seconds"] + r["query_seconds"] for r in pr)
+            q_peer = median(r["query_seconds"] for r in pr)
+            kind = "points" if peer == "gc-pc-heat" else "surface"
+            if peer == "gc-flipout":
+                t_ours = median(r["ours_path_seconds"] for r in pr)
+                q_ours, our_err = None, "path length %.3g" % median(
+                    abs(r["ours_path_length"] - r["exact_length"]) / r["exact_length"]
+                    for r in pr)
+            else:
+                ok = [r for r in ours_all if r["mesh"] == name and r["method"] == counterpart
+                      and r["peer_set"] == kind and r["status"] == "ok"]
+                if not ok:
+                    rows.append([peer, what, name, pr[0]["vertices"], fmt(mean, "%.2e"),
+                                 fmt(mx, "%.2e"), counterpart, "not ok", "%.3g" % t_peer, "–",
+                                 "–", "–"])
+                    continue
+                t_ours = median(r["pre_seconds"] + r["query_seconds"] for r in ok)
+                q_ours = median(r["query_seconds"] for r in ok)
+                oe = [r["mean_rel_error"] for r in ok if r.get("mean_rel_error") is not None]
+                our_err = "reference" if counterpart == "exact-mmp" else fmt(
+                    statistics.mean(oe) if oe else None, "%.2e")
+            if peer == "gc-mmp" and mean is not None:
+                exact_worst = max(exact_worst or 0.0, mean)
+            ratio = t_peer / t_ours if t_ours > 0 else None
+            qratio = q_peer / q_ours if q_ours else None
+            rows.append([peer, what, name, pr[0]["vertices"], fmt(mean, "%.2e"),
+                         fmt(mx, "%.2e") + ("" if not mism else " (%d unreachable)" % mism),
+                         counterpart, our_err, "%.3g" % t_peer, "%.3g" % t_ours,
+                         fmt(ratio, "%.3g"), fmt(qratio, "%.3g")])
+            if ratio is not None:
+                plotdata.setdefault(peer, []).append((pr[0]["vertices"], ratio, mean))
+    table = md_table(["peer method", "what", "mesh", "|V|", "mean rel err vs our exact-mmp",
+                      "max rel err vs our exact-mmp", "our counterpart",
+                      "our counterpart's mean rel err", "peer time s", "our time s",
+                      "time ratio peer / ours", "query-only time ratio"], rows)
+    plt = pyplot()
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(10, 4.2))
+    for (peer, pts), mk in zip(sorted(plotdata.items()), "osD^v"):
+        ax1.loglog([p[0] for p in pts], [p[1] for p in pts], mk, alpha=0.8, label=peer)
+        ax2.loglog([p[0] for p in pts], [max(p[2] or 0, 1e-17) for p in pts], mk, alpha=0.8,
+                   label=peer)
+    ax1.axhline(1.0, color="k", lw=0.8)
+    ax1.set_xlabel("|V|")
+    ax1.set_ylabel("time ratio geometry-central / ours")
+    ax1.set_title("time (pre + query), median, one point per mesh")
+    ax2.set_xlabel("|V|")
+    ax2.set_ylabel("mean relative error against our exact-mmp")
+    ax2.set_title("error (drawn at ≥ 1e-17)")
+    for ax in (ax1, ax2):
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "claim.png"), dpi=110)
+    plt.close(fig)
+    if exact_worst is None:
+        verdict, figure = "undecided", "gc-mmp did not run"
     else:
-        status = ("peer not built: checkout found at %s; building and running it is not part "
-                  "of this version" % ctx.peers)
-    table = md_table(["peer", "method", "status"],
-                     [["geometry-central", m, status] for m in PEER_METHODS])
-    return dict(table=table, plot=None, verdict="not run", figure="peer not built",
-                notes="With `--peers DIR` (a local geometry-central checkout, never downloaded "
-                      "or committed) the peer's methods are to run on the meshes of (a)–(d) in "
-                      "the same run and enter those tables as ratios; this version checks the "
-                      "folder and reports the rows as not built.", links=[])
+        verdict = "holds" if exact_worst <= PEER_EXACT_RULE else "does not hold"
+        figure = ("exact against exact: gc-mmp's mean relative difference from exact-mmp at "
+                  "most %.1e (rule: ≤ %.0e)" % (exact_worst, PEER_EXACT_RULE))
+    ratios = {}
+    for r in rows:
+        if r[10] != "–":
+            ratios.setdefault(r[0], []).append(float(r[10]))
+    timing = "; ".join("%s / %s %s" % (p, c, ("%.2g to %.2g" % (min(ratios[p]), max(ratios[p])))
+                                       if len(ratios[p]) > 1 else "%.2g" % ratios[p][0])
+                       for p, _, c in PEER_METHODS if p in ratios)
+    flags = " ".join(runs[0].get("compiler_flags", "unknown").split())
+    notes = (
+        "geometry-central git %s (%s), built by `benchmarks/peers/` (Release with the tool's "
+        "optimisation flags; compiler and flags `%s`; SuiteSparse %s) into %s; one process per "
+        "run. Surface methods on the meshes and sources of part mmp (%d repetition(s), median), "
+        "the point-cloud heat method on those of part (d) (the vertices as a point cloud, 1 "
+        "repetition). Both sides read the same OBJ (analytic surfaces written by `tapeline mesh "
+        "generate SPEC --seed %d`); ours are `bench geodesic` lines on that file. Errors: mean "
+        "over sources of the mean relative difference from `geodesic distances --method "
+        "exact-mmp`, the source and its one-ring excluded (the formula of the bench lines' "
+        "mean_rel_error). Times are pre + query seconds inside each program (loading excluded); "
+        "gc-heat's pre is the solver set-up, gc-pc-heat's the first solve minus a second; the "
+        "query-only ratio compares the query seconds alone. gc-fmm is set against our dijkstra "
+        "(the tool has no fast marching). gc-flipout shortens a Dijkstra edge path from the "
+        "source to the vertex farthest from it (near the cut locus, where geodesics of other "
+        "classes are almost as short) into a locally shortest geodesic; its error is the "
+        "relative difference of that path's length from the exact distance, its time is set "
+        "against `geodesic path` (exact-mmp, the JSON's seconds). Verdict rule: holds when "
+        "gc-mmp agrees with exact-mmp to a mean relative difference of at most %.0e.%s" % (
+            ctx.peer_git, ctx.peers, flags, "yes" if runs[0].get("suitesparse") else "no",
+            peer_build_dir(ctx.peers), rep, SEED, PEER_EXACT_RULE,
+            "" if not missing else " Not available: %s." % ", ".join(missing)))
+    return dict(table=table, plot="claim.png", verdict=verdict, figure=figure,
+                timing_figure="time ratio " + timing if timing else None, notes=notes,
+                links=[("peer runs (JSON lines)", "peers.jsonl"),
+                       ("our runs (JSON lines)", "ours.jsonl")])
 
 
 PARTS = [
@@ -1109,11 +1414,8 @@ def parse_args(argv):
     a.argv = argv
     if not (os.path.isfile(a.tool) and os.access(a.tool, os.X_OK)):
         raise UsageError("--tool %s: not an executable file" % a.tool)
-    if a.peers and not os.path.isdir(a.peers):
-        raise UsageError("--peers %s: no such folder" % a.peers)
-    if a.peers and not os.path.isdir(os.path.join(a.peers, "include", "geometrycentral")):
-        raise UsageError("--peers %s: not a geometry-central checkout (no "
-                         "include/geometrycentral)" % a.peers)
+    if a.peers:
+        check_peers_dir(os.path.abspath(a.peers))
     keys = [k for k, *_ in PARTS]
     if a.only:
         a.only = a.only.split(",")
@@ -1149,6 +1451,9 @@ def main(argv):
         work = tempfile.mkdtemp(prefix="reproduce_")
         try:
             probe_tool(ctx, work)
+            if ctx.peers and (not ctx.only or "peers" in ctx.only):
+                ctx.work = work
+                build_peer(ctx)
         except UsageError:
             shutil.rmtree(work, ignore_errors=True)
             raise
