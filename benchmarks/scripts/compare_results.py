@@ -5,7 +5,7 @@ usage: compare_results.py A B [--show N]
   A, B: folders holding results.md and results/ (the --out of reproduce.sh), or results/ itself.
 
 Compared: the set of files; every Markdown table of every .md file, cell by cell, except the
-columns whose heading names a timing or memory quantity (time, seconds, s, wall, RSS, MB, KB,
+columns whose heading names a timing or memory quantity (time, timing, seconds, s, wall, RSS, MB, KB,
 ms/..., and the exponents fitted to times: k query, R² query, k pre+query); every .json and .jsonl file, value by value, except keys naming timings, memory or dates
 (*seconds*, timings*, wall*, *rss*, timestamp, ms_per*, date). Text outside tables (provenance,
 dates, wall time) and the pixels of the plots are not compared; a PNG must exist in both.
@@ -20,7 +20,7 @@ import sys
 
 PROG = "compare_results.py"
 # bench_report.py's scaling table: "k query", "R² query", "k pre+query" are fitted to timings.
-VOLATILE_COLUMN = re.compile(r"time|seconds|\bs\b|wall|rss|\bmb\b|\bkb\b|ms/|date|timestamp|"
+VOLATILE_COLUMN = re.compile(r"time|timing|seconds|\bs\b|wall|rss|\bmb\b|\bkb\b|ms/|date|timestamp|"
                              r"^k query|^k pre|^r² query", re.IGNORECASE)
 VOLATILE_KEY = re.compile(r"seconds|^timings|^wall|rss|timestamp|^ms_per|^date$|^time$",
                           re.IGNORECASE)
