@@ -1016,9 +1016,12 @@ PEER_SRC = os.path.join(ROOT, "benchmarks", "peers")
 
 
 def peer_build_dir(peers):
+    """The build folder of the driver against checkout `peers`: one per checkout and per copy of
+    this repository (CMake ties a build folder to its source folder)."""
     cache = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    key = os.path.abspath(peers) + "\n" + os.path.abspath(PEER_SRC)
     return os.path.join(cache, "tapeline", "peers", "gc-" + hashlib.sha1(
-        peers.encode()).hexdigest()[:10])
+        key.encode()).hexdigest()[:10])
 
 
 def check_peers_dir(peers):
