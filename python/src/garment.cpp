@@ -221,6 +221,39 @@ void bind_garment(py::module_& parent) {
         "(m,) largest principal stretch per triangle, 'report' (the JSON of `dress --report`: "
         "gates, quality, seams, pieces, timings), 'warnings' and 'grading_notes'.");
     m.def(
+        "bindings_from_body",
+        [](const py::object& V, const py::object& F, const py::dict& pattern,
+           const std::optional<std::string>& units, const std::string& up, const std::string& front,
+           const std::string& name) {
+            const tm::BodyOptions body = tm::parse_body_options(
+                name, units.value_or(""), up, front, tm::to_string(tm::BodyOptions{}.pose));
+            pattern::Pattern p = pattern::from_json(json_of(pattern, "pattern"), "pattern");
+            pattern::require_valid(p);
+            const auto mesh = mesh_from_arrays(V, F, name);
+            bench::BodyBase b;
+            {
+                InterruptGuard interrupt_guard;
+                py::gil_scoped_release release;
+                b = bench::base_from_mesh(std::move(p), mesh->loaded.mesh, body);
+            }
+            py::dict base;
+            for (const auto& [key, value] : b.measurements.values) {
+                base[py::str(key)] = value;
+            }
+            return py::make_tuple(to_python(pattern::to_json(b.pattern)), base,
+                                  py::cast(b.notes));
+        },
+        py::arg("V"), py::arg("F"), py::arg("pattern"), py::kw_only(),
+        py::arg("units") = py::none(), py::arg("up") = body_defaults.up.to_string(),
+        py::arg("front") = body_defaults.front.to_string(), py::arg("name") = body_defaults.name,
+        "The girth bindings of a pattern dict found by laying it on the body mesh (V, F) it was "
+        "made for, as `tapeline grade --base-body` finds them: the body measured, the pattern "
+        "laid out as dressing lays it, each horizontal torso girth cut across the torso and "
+        "skirt pieces. units, up, front: as tapeline.measure. Returns (the pattern dict with the "
+        "found bindings and their named points, the body's measurements {name: mm} to grade "
+        "from, one note per girth: bound or why not); tapeline.grade(pattern, base, target) "
+        "then grades it.");
+    m.def(
         "fabrics",
         [] {
             py::list out;

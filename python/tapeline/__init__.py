@@ -14,7 +14,7 @@ from ._tapeline import (
     read_mesh,
 )
 from . import garment, geodesic, pattern
-from .garment import dress
+from .garment import bindings_from_body, dress
 
 try:
     from ._tapeline import EaseMode, GradingOptions, grade
@@ -27,6 +27,7 @@ __all__ = [name for name in [
     "TopologyError",
     "EaseMode",
     "GradingOptions",
+    "bindings_from_body",
     "check_mesh",
     "dress",
     "garment",

@@ -7,6 +7,7 @@ import numpy.typing as npt
 from . import garment as garment
 from . import geodesic as geodesic
 from . import pattern as pattern
+from .garment import bindings_from_body as bindings_from_body
 from .garment import dress as dress
 
 class InvalidInput(ValueError):

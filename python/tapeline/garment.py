@@ -3,6 +3,7 @@ gates) and the fabric library."""
 from ._tapeline import garment as _g
 
 dress = _g.dress
+bindings_from_body = _g.bindings_from_body
 fabrics = _g.fabrics
 fabric = _g.fabric
 DressOptions = _g.DressOptions
@@ -10,5 +11,5 @@ PlacementOptions = _g.PlacementOptions
 SewingOptions = _g.SewingOptions
 DrapeOptions = _g.DrapeOptions
 
-__all__ = ["dress", "fabrics", "fabric", "DressOptions", "PlacementOptions", "SewingOptions",
+__all__ = ["dress", "bindings_from_body", "fabrics", "fabric", "DressOptions", "PlacementOptions", "SewingOptions",
            "DrapeOptions"]

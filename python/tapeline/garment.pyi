@@ -64,6 +64,20 @@ def dress(
     garment in the body's coordinates and unit), 'uv', 'piece', 'piece_names', 'stretch',
     'report' (gates, quality, seams, pieces, timings), 'warnings', 'grading_notes'."""
 
+def bindings_from_body(
+    V: npt.ArrayLike,
+    F: npt.ArrayLike,
+    pattern: Dict[str, Any],
+    *,
+    units: Optional[str] = None,
+    up: str = "+Y",
+    front: str = "+Z",
+    name: str = "body",
+) -> Tuple[Dict[str, Any], Dict[str, float], List[str]]:
+    """The pattern's girth bindings found by laying it on the body it was made for (as `tapeline
+    grade --base-body`): (the pattern dict with them, the body's measurements {name: mm}, one note
+    per girth)."""
+
 def fabrics() -> List[Dict[str, Any]]:
     """The fabric library as fabric dicts (`tapeline fabric show`)."""
 

@@ -129,6 +129,36 @@ def test_dress_grades_to_the_body_first(body):
     assert width(graded) < 0.95 * width(plain)
 
 
+def test_bindings_found_on_the_body_equal_the_command_line(cli, body, tmp_path):
+    # tapeline.bindings_from_body gives the bindings `tapeline grade --base-body` writes, and the
+    # body's measurements as the base set; grading with them reaches target + scaled ease.
+    path, V, F = body
+    shirt = pattern.read(SHIRT)
+    found, base, notes = tapeline.bindings_from_body(V, F, shirt, units="dm")
+    assert [b["measurement"] for b in found["bindings"]] == [
+        "bust_girth", "underbust_girth", "waist_girth", "high_hip_girth"]
+    assert any(n.startswith("hip_girth: not bound") for n in notes)
+    target = {k: v * 1.05 for k, v in base.items()}
+    json.dump(target, open(tmp_path / "t.json", "w"))
+    cli("grade", SHIRT, "--base-body", path, "--base-units", "dm", "--to", str(tmp_path / "t.json"),
+        "--out", str(tmp_path / "g.json"), "--bindings-out", str(tmp_path / "b.json"),
+        "--generations", "0")
+    written = json.load(open(tmp_path / "b.json"))
+    assert [(b["measurement"], b["ease"]) for b in written["bindings"]] == [
+        (b["measurement"], b["ease"]) for b in found["bindings"]]
+    for b in found["bindings"]:
+        piece_points = {p["name"]: p["points"] for p in found["pieces"]}
+        for f in b["features"]:
+            assert written["points"][f["piece"]][f["from_point"]] == \
+                list(piece_points[f["piece"]][f["from_point"]])
+    graded, report = tapeline.grade(found, base, target, generations=0)
+    assert report["within_tolerance"], report["fit"]
+    with pytest.raises(tapeline.InvalidInput, match="no binding was found"):
+        sleeves = dict(found, pieces=[p for p in found["pieces"] if "sleeve" in p["name"]],
+                       seams=[], bindings=[])
+        tapeline.bindings_from_body(V, F, sleeves, units="dm")
+
+
 def test_refusals(body):
     _, V, F = body
     p = pattern.read(SHIRT)

@@ -80,8 +80,12 @@ DressRun dress_measured(MeasureRun m, const std::string& body_name, pattern::Pat
 
 BodyBase base_from_body(pattern::Pattern pattern, const std::string& path,
                         const measurement::BodyOptions& body_options) {
-    const auto loaded = read_triangle_mesh<Mesh>(path);
-    const MeasureRun m = measure_mesh(loaded.mesh, body_options);
+    return base_from_mesh(std::move(pattern), read_triangle_mesh<Mesh>(path).mesh, body_options);
+}
+
+BodyBase base_from_mesh(pattern::Pattern pattern, const Mesh& mesh,
+                        const measurement::BodyOptions& body_options) {
+    const MeasureRun m = measure_mesh(mesh, body_options);
     BodyBase b;
     b.measurements = measured_set(m, body_options.name);
     garment::BindingInference inf = garment::infer_girth_bindings(

@@ -66,6 +66,10 @@ struct BodyBase {
 BodyBase base_from_body(pattern::Pattern pattern, const std::string& path,
                         const measurement::BodyOptions& body_options);
 
+/// base_from_body on a mesh already read.
+BodyBase base_from_mesh(pattern::Pattern pattern, const Mesh& mesh,
+                        const measurement::BodyOptions& body_options);
+
 /// The report `tapeline dress --report` writes: body and pattern names, the body's unit, then
 /// garment::dress_report_json.
 nlohmann::ordered_json dress_report_json(const DressRun& run, const std::string& body,
