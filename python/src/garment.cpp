@@ -240,8 +240,7 @@ void bind_garment(py::module_& parent) {
             for (const auto& [key, value] : b.measurements.values) {
                 base[py::str(key)] = value;
             }
-            return py::make_tuple(to_python(pattern::to_json(b.pattern)), base,
-                                  py::cast(b.notes));
+            return py::make_tuple(to_python(pattern::to_json(b.pattern)), base, py::cast(b.notes));
         },
         py::arg("V"), py::arg("F"), py::arg("pattern"), py::kw_only(),
         py::arg("units") = py::none(), py::arg("up") = body_defaults.up.to_string(),
