@@ -158,11 +158,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         double garment = 0;
         std::string pieces, open;
         for (std::size_t i = 0; i < base.pieces.size(); ++i) {
-            const bool trunk =
-                placed[i] &&
-                (regions[i] == Region::torso_front || regions[i] == Region::torso_back ||
-                 regions[i] == Region::skirt_front || regions[i] == Region::skirt_back);
-            if (!trunk) {
+            if (!placed[i] || !trunk_region(*placed[i])) {
                 continue;
             }
             pattern::Piece& piece = base.pieces[i];
