@@ -1,6 +1,7 @@
 #include <tapeline/bench/methods.h>
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/mesh_io.h>
 
 #include <filesystem>
 #include <fstream>

@@ -3,6 +3,7 @@
 #include <tapeline/sizes/json_formats.h>
 
 #include <tapeline/measurement/lengths.h>
+#include <tapeline/measurement/measure.h>
 #include <tapeline/measurement/measurement_json.h>
 
 #include <chrono>

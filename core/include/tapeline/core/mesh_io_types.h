@@ -1,10 +1,17 @@
-// Options, reports and the plain polygon soup of the mesh reader (mesh_io.h). No CGAL here, so
-// loggers and test facades can include it cheaply (DESIGN.md §3).
+// Options, reports, the plain polygon soup and the loaded mesh (a template over any mesh type) of
+// the mesh reader (mesh_io.h). No CGAL here, so loggers and facades can include it cheaply
+// (DESIGN.md §3).
 #pragma once
 
+#include <tapeline/core/errors.h>
+
+#include <boost/graph/graph_traits.hpp>
+
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -101,6 +108,91 @@ struct PolygonSoup {
 struct ScalarPlyOptions {
     std::string property = "distance";  ///< name of the per-vertex float property
     bool binary = true;                 ///< binary_little_endian, else ascii
+};
+
+/// A mesh read from a file or a soup, with the map back to the input's vertex numbering.
+/// Input vertices and faces are numbered from 0 in file order (OBJ's vertex `1` is vertex 0; for
+/// STL, vertex i is the i-th distinct point in order of first appearance, face i is facet i).
+/// LoadedMesh<CGAL::Polyhedron_3<...>> must not be copied: a Polyhedron copy has new handles.
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` and `FaceListGraph` (see
+///         read_triangle_mesh).
+template <class TriangleMesh>
+struct LoadedMesh {
+    /// A vertex of the mesh.
+    using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+    /// A face of the mesh.
+    using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+    TriangleMesh mesh;                          ///< the validated, repaired triangle mesh
+    std::vector<vertex_descriptor> vertices;    ///< all mesh vertices, in mesh order
+    std::vector<std::size_t> input_index;       ///< parallel to `vertices`: input vertex of each
+    std::size_t input_vertex_count = 0;         ///< vertices in the input
+    std::vector<face_descriptor> faces;         ///< all mesh faces, in mesh order
+    std::vector<std::size_t> face_input_index;  ///< parallel to `faces`: input face each came from
+    /// Positions in `vertices` of the mesh vertices representing input vertex i are
+    /// copies[copies_begin[i]] .. copies[copies_begin[i + 1] - 1]; a duplicate vertex that was
+    /// merged shares those of the vertex it was merged into. Filled by the loader.
+    ///@{
+    std::vector<std::size_t> copies_begin, copies;
+    ///@}
+    MeshReport report;  ///< what the loader found and repaired
+
+    /// Mesh vertices that represent input vertex i (several after a non-manifold split, none if
+    /// it was unreferenced, those of its twin if it was merged as a duplicate); throws InvalidInput
+    /// naming the file if i >= input_vertex_count.
+    std::vector<vertex_descriptor> mesh_vertices_of(std::size_t input_vertex) const {
+        if (input_vertex >= input_vertex_count) {
+            throw InvalidInput(report.file + ": vertex " + std::to_string(input_vertex) +
+                               " does not exist (the input has " +
+                               std::to_string(input_vertex_count) + " vertices)");
+        }
+        std::vector<vertex_descriptor> out;
+        if (copies_begin.size() == input_vertex_count + 1) {
+            for (std::size_t k = copies_begin[input_vertex]; k < copies_begin[input_vertex + 1];
+                 ++k) {
+                out.push_back(vertices[copies[k]]);
+            }
+        } else {
+            for (std::size_t k = 0; k < input_index.size(); ++k) {
+                if (input_index[k] == input_vertex) {
+                    out.push_back(vertices[k]);
+                }
+            }
+        }
+        return out;
+    }
+
+    /// Per-mesh-vertex values (indexed like `vertices`) -> per-input-vertex values: minimum over
+    /// the copies, +infinity for input vertices with no mesh vertex.
+    ///
+    /// \throws InvalidInput when `per_mesh_vertex` does not hold one value per mesh vertex.
+    std::vector<double> to_input_order(const std::vector<double>& per_mesh_vertex) const {
+        if (per_mesh_vertex.size() != vertices.size()) {
+            throw InvalidInput(report.file + ": to_input_order needs one value per mesh vertex (" +
+                               std::to_string(vertices.size()) + "), got " +
+                               std::to_string(per_mesh_vertex.size()));
+        }
+        std::vector<double> out(input_vertex_count, std::numeric_limits<double>::infinity());
+        // A NaN copy wins over finite ones: hiding a failed value would be worse.
+        auto take = [](double& slot, double v) {
+            if (std::isnan(v) || v < slot) {
+                slot = v;
+            }
+        };
+        if (copies_begin.size() == input_vertex_count + 1) {
+            for (std::size_t i = 0; i < input_vertex_count; ++i) {
+                for (std::size_t k = copies_begin[i]; k < copies_begin[i + 1]; ++k) {
+                    take(out[i], per_mesh_vertex[copies[k]]);
+                }
+            }
+        } else {
+            for (std::size_t k = 0; k < per_mesh_vertex.size(); ++k) {
+                take(out[input_index[k]], per_mesh_vertex[k]);
+            }
+        }
+        return out;
+    }
 };
 
 }  // namespace tapeline

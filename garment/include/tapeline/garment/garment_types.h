@@ -7,7 +7,9 @@
 
 #include <tapeline/garment/drape_types.h>
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <vector>
@@ -195,6 +197,15 @@ struct DressReport {
     ///@}
     /// DrapeOptions::threads as given (0: all cores).
     int threads = 0;
+};
+
+/// A triangle mesh with per-corner pattern coordinates (the welded garment).
+struct GarmentMesh {
+    std::vector<Vec3> positions;                ///< mm
+    std::vector<Tri> triangles;                 ///< vertex indices
+    std::vector<std::array<UV, 3>> uv;          ///< per corner, pattern mm
+    std::vector<std::uint32_t> triangle_piece;  ///< piece index of each triangle
+    std::vector<std::string> piece_names;       ///< per piece
 };
 
 }  // namespace tapeline::garment

@@ -5,6 +5,7 @@
 // its 2D pattern triangle.
 #pragma once
 
+#include <tapeline/core/vec3.h>
 #include <tapeline/garment/garment_types.h>
 
 #include <CGAL/AABB_traits.h>
@@ -19,15 +20,6 @@
 #include <vector>
 
 namespace tapeline::garment {
-
-/// A triangle mesh with per-corner pattern coordinates (the welded garment).
-struct GarmentMesh {
-    std::vector<Vec3> positions;                ///< mm
-    std::vector<Tri> triangles;                 ///< vertex indices
-    std::vector<std::array<UV, 3>> uv;          ///< per corner, pattern mm
-    std::vector<std::uint32_t> triangle_piece;  ///< piece index of each triangle
-    std::vector<std::string> piece_names;       ///< per piece
-};
 
 /// Largest principal stretch of each triangle: the larger singular value of the map from its
 /// pattern triangle to its 3D triangle (1: unstretched).

@@ -31,22 +31,6 @@
 
 namespace tapeline::measurement {
 
-/// The body in the canonical frame, with the frame that maps it back.
-struct Body {
-    /// How the input was mapped into the canonical frame; BodyFrame::to_input maps back.
-    BodyFrame frame;
-    internal::BodyMesh mesh;  ///< canonical mm, with edge/face adjacency
-    /// The input's holes, filled (holes.h): their faces and vertices follow the input's.
-    std::vector<BodyHole> holes;
-
-    /// Vertices, canonical mm: the input's in its order, then those added to fill holes.
-    const std::vector<Vec3>& points() const { return mesh.points; }
-    /// Triangles (indices into points()): the input's in its order, then those filling holes.
-    const std::vector<std::array<std::uint32_t, 3>>& triangles() const { return mesh.triangles; }
-    /// Stature: the floor to the highest vertex, mm.
-    double height() const { return frame.height; }
-};
-
 /// Builds a Body from points (input coordinates and unit) and triangles. Holes up to 5 % of the
 /// stature across are filled (holes.h; Body::holes, BodyMesh::filled). Rejects NaN/infinite
 /// coordinates, out-of-range indices and a bad frame (InvalidInput), and bigger holes and

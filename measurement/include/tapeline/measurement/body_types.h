@@ -13,9 +13,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tapeline::measurement {
 
@@ -187,5 +189,47 @@ inline LengthUnit infer_length_unit(double height, const std::string& where) {
                        " (a body 0.5-2.5 m tall reads 0.5-2.5 m, 5-25 dm, 50-250 cm or "
                        "500-2500 mm); pass --units");
 }
+
+namespace internal {
+
+/// Closed triangle mesh in canonical millimetres with edge/face adjacency.
+struct BodyMesh {
+    std::string name;
+    std::vector<Vec3> points;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    /// Per triangle: added by filling a hole of the input (holes.h); empty when none was.
+    std::vector<bool> filled;
+    std::vector<std::array<std::uint32_t, 2>> edges;       // end vertices
+    std::vector<std::array<std::uint32_t, 2>> edge_faces;  // the two faces of each edge
+    std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k joins corners k and k+1
+    std::size_t components = 0;
+    double min_y = 0, max_y = 0;
+    // Edges in chunks of kChunk, spatially sorted (Morton order of their midpoints), each with
+    // its bounding box: a cut skips the chunks the plane misses (see cut()).
+    static constexpr std::size_t kChunk = 64;
+    std::vector<std::uint32_t> chunk_edges;
+    std::vector<std::array<Vec3, 2>> chunk_ends;  // end points of chunk_edges[i], contiguous
+    std::vector<std::array<Vec3, 2>> chunk_box;   // min, max corner
+
+    bool is_filled(std::size_t f) const { return !filled.empty() && filled[f]; }
+};
+
+}  // namespace internal
+
+/// The body in the canonical frame, with the frame that maps it back.
+struct Body {
+    /// How the input was mapped into the canonical frame; BodyFrame::to_input maps back.
+    BodyFrame frame;
+    internal::BodyMesh mesh;  ///< canonical mm, with edge/face adjacency
+    /// The input's holes, filled (holes.h): their faces and vertices follow the input's.
+    std::vector<BodyHole> holes;
+
+    /// Vertices, canonical mm: the input's in its order, then those added to fill holes.
+    const std::vector<Vec3>& points() const { return mesh.points; }
+    /// Triangles (indices into points()): the input's in its order, then those filling holes.
+    const std::vector<std::array<std::uint32_t, 3>>& triangles() const { return mesh.triangles; }
+    /// Stature: the floor to the highest vertex, mm.
+    double height() const { return frame.height; }
+};
 
 }  // namespace tapeline::measurement

@@ -16,20 +16,6 @@
 
 namespace tapeline::measurement {
 
-/// Everything measured on one body; points are canonical mm (frame.to_input maps them back).
-struct BodyMeasurements {
-    /// The body's frame (Body::frame).
-    BodyFrame frame;
-    /// Every landmark: found, overridden, or not found with the reason.
-    LandmarkSet landmarks;
-    /// The measurements taken, and those that could not be.
-    MeasurementSet measurements;
-    /// Mesh size, filled holes, timings and landmark counts.
-    MeasureReport report;
-    /// Broken self-check rules (self_checks.h); empty on a plausible result.
-    std::vector<CheckWarning> warnings;
-};
-
 /// Refuses (InvalidInput) a mesh on which five or more of the landmarks found lie outside their
 /// height bands (self_checks.h, landmark_height_bands): a creature or an object with limbs,
 /// whose girths would be garbage. A human body, even an unusual one, breaks at most a pair.

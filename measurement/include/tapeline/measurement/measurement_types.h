@@ -273,4 +273,18 @@ struct MeasureReport {
     std::vector<BodyHole> holes;        ///< the input's holes, filled before measuring
 };
 
+/// Everything measured on one body; points are canonical mm (frame.to_input maps them back).
+struct BodyMeasurements {
+    /// The body's frame (Body::frame).
+    BodyFrame frame;
+    /// Every landmark: found, overridden, or not found with the reason.
+    LandmarkSet landmarks;
+    /// The measurements taken, and those that could not be.
+    MeasurementSet measurements;
+    /// Mesh size, filled holes, timings and landmark counts.
+    MeasureReport report;
+    /// Broken self-check rules (self_checks.h); empty on a plausible result.
+    std::vector<CheckWarning> warnings;
+};
+
 }  // namespace tapeline::measurement

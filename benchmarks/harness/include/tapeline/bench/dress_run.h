@@ -1,13 +1,13 @@
 // A body dressed as `tapeline dress` dresses it: measured (and, given the measurement set the
 // pattern was drafted for, the pattern graded to the body first), the pieces placed, sewn and
-// draped. Compiled once in the harness for the command-line tool and the Python module.
+// draped. Compiled once in the harness for the command-line tool and the Python module; this header
+// includes types only.
 #pragma once
 
 #include <tapeline/bench/measure_run.h>
 #include <tapeline/bench/methods.h>
 #include <tapeline/garment/garment_types.h>
-#include <tapeline/garment/quality.h>
-#include <tapeline/measurement/body.h>
+#include <tapeline/measurement/body_types.h>
 #include <tapeline/pattern/pattern.h>
 #include <tapeline/sizes/measurement_set.h>
 

@@ -1,12 +1,13 @@
 // A body measured as `tapeline measure` measures it: make_body, measure_body and the skin lengths
 // on the tool's mesh type, compiled once in the harness for the command-line tool and the Python
-// module.
+// module. This header includes types only: a file that includes it does not compile the
+// measurement pipeline again.
 #pragma once
 
 #include <tapeline/bench/methods.h>
-#include <tapeline/measurement/body.h>
-#include <tapeline/measurement/landmarks.h>
-#include <tapeline/measurement/measure.h>
+#include <tapeline/measurement/body_types.h>
+#include <tapeline/measurement/landmark_overrides.h>
+#include <tapeline/measurement/measurement_types.h>
 
 #include <tapeline/sizes/measurement_set.h>
 

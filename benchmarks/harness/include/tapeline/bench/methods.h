@@ -5,7 +5,7 @@
 #pragma once
 
 #include <tapeline/bench/surfaces.h>
-#include <tapeline/core/mesh_io.h>
+#include <tapeline/core/mesh_io_types.h>
 #include <tapeline/geodesic/curvature_flow_types.h>
 #include <tapeline/geodesic/geodesic_types.h>
 #include <tapeline/geodesic/point_cloud_types.h>

@@ -44,28 +44,6 @@ inline double dist2d(const Vec2& a, const Vec2& b) {
     return std::hypot(a[0] - b[0], a[1] - b[1]);
 }
 
-/// Closed triangle mesh in canonical millimetres with edge/face adjacency.
-struct BodyMesh {
-    std::string name;
-    std::vector<Vec3> points;
-    std::vector<std::array<std::uint32_t, 3>> triangles;
-    /// Per triangle: added by filling a hole of the input (holes.h); empty when none was.
-    std::vector<bool> filled;
-    std::vector<std::array<std::uint32_t, 2>> edges;       // end vertices
-    std::vector<std::array<std::uint32_t, 2>> edge_faces;  // the two faces of each edge
-    std::vector<std::array<std::uint32_t, 3>> face_edges;  // edge k joins corners k and k+1
-    std::size_t components = 0;
-    double min_y = 0, max_y = 0;
-    // Edges in chunks of kChunk, spatially sorted (Morton order of their midpoints), each with
-    // its bounding box: a cut skips the chunks the plane misses (see cut()).
-    static constexpr std::size_t kChunk = 64;
-    std::vector<std::uint32_t> chunk_edges;
-    std::vector<std::array<Vec3, 2>> chunk_ends;  // end points of chunk_edges[i], contiguous
-    std::vector<std::array<Vec3, 2>> chunk_box;   // min, max corner
-
-    bool is_filled(std::size_t f) const { return !filled.empty() && filled[f]; }
-};
-
 /// Sorts the edges into spatially coherent chunks with bounding boxes (BodyMesh::chunk_edges).
 inline void build_edge_chunks(BodyMesh& m) {
     Vec3 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
