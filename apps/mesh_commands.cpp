@@ -3,16 +3,26 @@
 #include "commands.h"
 #include "output.h"
 
+#include <tapeline/core/atomic_write.h>
 #include <tapeline/core/errors.h>
+#include <tapeline/core/mesh_io.h>
 #include <tapeline/core/mesh_writers.h>
 #include <tapeline/core/remesh.h>
+#include <tapeline/measurement/synthetic_body.h>
 #include <tapeline/surfaces/analytic_geodesics.h>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
+#include <array>
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace tapeline::app {
 namespace {
@@ -25,7 +35,114 @@ struct GenerateArgs {
     std::string truth_out;
 };
 
+/// Parses `body[:AROUND,RING_MM[,ARM_DEGREES]]`; nullopt when the spec is not a body's.
+std::optional<measurement::SyntheticBodyOptions> body_spec(const std::string& spec) {
+    if (spec != "body" && spec.rfind("body:", 0) != 0) {
+        return std::nullopt;
+    }
+    measurement::SyntheticBodyOptions o;
+    if (spec == "body") {
+        return o;
+    }
+    std::vector<double> v;
+    std::stringstream in(spec.substr(5));
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        std::size_t used = 0;
+        double x = NAN;
+        try {
+            x = std::stod(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != item.size() || !std::isfinite(x)) {
+            throw InvalidInput("surface spec '" + spec + "': '" + item + "' is not a number");
+        }
+        v.push_back(x);
+    }
+    if (v.size() < 2 || v.size() > 3) {
+        throw InvalidInput("surface spec '" + spec +
+                           "': expected body:AROUND,RING_MM[,ARM_DEGREES]");
+    }
+    if (v[0] < 8 || v[0] > 1024 || v[0] != std::floor(v[0])) {
+        throw InvalidInput("surface spec '" + spec + "': AROUND must be a whole number in 8..1024");
+    }
+    if (v[1] < 1 || v[1] > 100) {
+        throw InvalidInput("surface spec '" + spec + "': RING_MM must be in 1..100");
+    }
+    if (v.size() == 3 && (v[2] < 20 || v[2] > 90)) {
+        throw InvalidInput("surface spec '" + spec + "': ARM_DEGREES must be in 20..90");
+    }
+    o.around = static_cast<int>(v[0]);
+    o.ring_step = v[1];
+    if (v.size() == 3) {
+        o.arm_angle_degrees = v[2];
+    }
+    return o;
+}
+
+/// `mesh generate body...`: the synthetic body of measurement/synthetic_body.h in millimetres
+/// (+Y up, +Z front) and, with --truth-out, its exact girths as JSON.
+void run_generate_body(const GenerateArgs& args, const measurement::SyntheticBodyOptions& o) {
+    if (args.truth_source >= 0) {
+        throw InvalidInput(
+            "--truth-source: the synthetic body's truth is its girths "
+            "(--truth-out FILE.json), not a distance field");
+    }
+    check_mesh_output(args.out);
+    if (!args.truth_out.empty() && extension_of(args.truth_out) != ".json") {
+        throw InvalidInput("--truth-out " + args.truth_out +
+                           ": the synthetic body's truth is written as .json");
+    }
+    OutputFiles outputs({args.out, args.truth_out});
+    const measurement::SyntheticBody body(o);
+    std::vector<std::array<double, 3>> points(body.points().begin(), body.points().end());
+    std::vector<std::vector<std::size_t>> faces;
+    faces.reserve(body.triangles().size());
+    for (const auto& t : body.triangles()) {
+        faces.push_back({t[0], t[1], t[2]});
+    }
+    const LoadedMesh<Mesh> loaded = triangle_mesh_from_soup<Mesh>(points, faces, "synthetic body");
+    write_mesh(outputs.temporary(args.out), loaded.mesh);
+    const std::vector<measurement::SyntheticTruth> truth = measurement::synthetic_girth_truth(body);
+    if (!args.truth_out.empty()) {
+        nlohmann::ordered_json j;
+        j["format"] = "tapeline-synthetic-body-truth";
+        j["unit"] = "mm";
+        j["spec"] = args.spec;
+        j["around"] = o.around;
+        j["ring_step_mm"] = o.ring_step;
+        j["arm_angle_degrees"] = o.arm_angle_degrees;
+        j["stature"] = measurement::SyntheticBody::kHeight;
+        j["note"] =
+            "exact perimeters of the analytic sections at the levels the construction "
+            "defines (measurement/synthetic_body.h); tolerance: what this mesh resolves";
+        auto& list = j["girths"] = nlohmann::ordered_json::array();
+        for (const auto& t : truth) {
+            list.push_back({{"name", t.name},
+                            {"value_mm", t.value},
+                            {"tolerance_mm", t.tolerance},
+                            {"level_mm", t.level},
+                            {"level_from_landmarks", t.from_landmarks}});
+        }
+        outputs.write(args.truth_out, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
+    }
+    outputs.commit();
+    std::cout << "wrote " << args.out << ": synthetic body (" << o.around << " around, "
+              << o.ring_step << " mm rings, arms " << o.arm_angle_degrees << " degrees), "
+              << num_vertices(loaded.mesh) << " vertices, " << num_faces(loaded.mesh)
+              << " faces, millimetres, +Y up, +Z front\n";
+    if (!args.truth_out.empty()) {
+        std::cout << "wrote " << args.truth_out << ": exact values of " << truth.size()
+                  << " girths\n";
+    }
+}
+
 void run_generate(const GenerateArgs& args) {
+    if (const auto body = body_spec(args.spec)) {
+        run_generate_body(args, *body);
+        return;
+    }
     InputMesh input = make_input_surface(args.spec, args.seed);
     const Mesh& mesh = input.loaded.mesh;
     if (!args.truth_out.empty() && args.truth_source < 0) {
@@ -100,14 +217,17 @@ void register_mesh_commands(CLI::App& app) {
         "generate",
         "Write an analytic surface mesh (and optionally its exact smooth geodesic distance).\n"
         "SPEC: icosphere:LEVEL[:J] | uvsphere:NLAT,NLON[:J] | ellipsoid:A,B,C:LEVEL[:J] |\n"
-        "      torus:R,r:NU,NV[:J] | cylinder:R,H:NU,NV[:J]   (J = tangential jitter, 0..0.5)");
+        "      torus:R,r:NU,NV[:J] | cylinder:R,H:NU,NV[:J]   (J = tangential jitter, 0..0.5)\n"
+        "      body[:AROUND,RING_MM[,ARM_DEGREES]]: the synthetic body of exactly known girths\n"
+        "      (mm, +Y up, +Z front; default body:48,8,40); --truth-out FILE.json its girths");
     generate->add_option("spec", gen->spec, "Surface spec, e.g. icosphere:4")->required();
     generate->add_option("--out,-o", gen->out, "Output mesh (.off, .obj, .ply, .stl)")->required();
     generate->add_option("--seed", gen->seed, "Seed of the jitter (default 1)");
     generate->add_option("--truth-source", gen->truth_source,
                          "Vertex whose exact smooth geodesic distance to every vertex is written");
     generate->add_option("--truth-out", gen->truth_out,
-                         "Where to write that distance (.txt: one per vertex; .ply: coloured)");
+                         "Where to write that distance (.txt: one per vertex; .ply: coloured), or "
+                         "the synthetic body's girths (.json)");
     generate->callback([gen] { run_generate(*gen); });
 
     auto check_path = std::make_shared<std::string>();

@@ -119,6 +119,27 @@ if paste ico_exact.txt truth.txt | awk 'NR > 1 && $2 > 0.3 { s += ($2 - $1) / $2
   ok "icosphere:3 exact vs great circle ($(cat gap.txt))"; else fail "icosphere:3 vs great circle ($(cat gap.txt))"; fi
 expect_ok "mesh check" "$bin" mesh check ico.off
 if grep -qi "642" out.txt; then ok "mesh check reports 642 vertices"; else fail "mesh check output: $(head -c 300 out.txt)"; fi
+# The synthetic body of exactly known girths, measured by the tool: every girth of the truth file
+# within its tolerance (the truth is the analytic sections' ellipse perimeters, computed apart
+# from the mesh and the measuring), stature exact.
+expect_ok "generate the synthetic body with its truth" "$bin" mesh generate body:40,10 --out body.obj --truth-out body_truth.json
+expect_ok "measure the synthetic body" "$bin" measure body.obj --units mm --out body_m.json
+if $py - <<'PY' >truth_cmp.txt
+import json, sys
+t = json.load(open("body_truth.json")); m = json.load(open("body_m.json"))
+got = {x["name"]: x["value_mm"] for x in m["measurements"]}
+bad = [g["name"] for g in t["girths"] if g["name"] not in got or abs(got[g["name"]] - g["value_mm"]) > g["tolerance_mm"]]
+worst = max(abs(got.get(g["name"], 1e9) - g["value_mm"]) for g in t["girths"])
+print(len(t["girths"]), "girths, worst", round(worst, 2), "mm, outside:", bad)
+sys.exit(0 if len(t["girths"]) == 25 and not bad and abs(got["stature"] - t["stature"]) < 1e-6 else 1)
+PY
+then ok "synthetic body: $(cat truth_cmp.txt)"; else fail "synthetic body against its truth: $(cat truth_cmp.txt)"; fi
+expect_fail "body spec: AROUND not whole" "AROUND" "$bin" mesh generate body:40.5,10 --out b.obj
+expect_fail "body spec: one number" "body:AROUND" "$bin" mesh generate body:40 --out b.obj
+expect_fail "body spec: not a number" "'x' is not a number" "$bin" mesh generate body:40,x --out b.obj
+expect_fail "body truth as text" "as .json" "$bin" mesh generate body --out b.obj --truth-out b.txt
+expect_fail "body with a distance source" "truth-source" "$bin" mesh generate body --out b.obj --truth-source 0 --truth-out b.json
+if [ ! -e b.obj ] && [ ! -e b.json ] && [ ! -e b.txt ]; then ok "nothing written on a refused body"; else fail "a refused body left a file"; fi
 fi
 
 # --- exact path ---------------------------------------------------------------------------------

@@ -36,35 +36,6 @@ double level(const Result& r, const std::string& name) {
     return m ? m->plane_point[1] : NAN;
 }
 
-/// The underbust rule (girths.h) on the construction: on the front profile at the bust point's
-/// x (0.1 of the half-width), the level between waist and bust deepest behind the chord from
-/// the bust point to the waist's front; on a chest without a fold, 2.5 % of the height under
-/// the bust point.
-double underbust_level(const SyntheticBody& body) {
-    const double x = 0.1 * body.torso_half_width(SyntheticBody::kBust);
-    auto front = [&](double y) {
-        const double u = x / body.torso_half_width(y);
-        return body.torso_depth(y) * std::sqrt(1 - u * u);
-    };
-    const double y1 = SyntheticBody::kBust, y0 = SyntheticBody::kWaist;
-    const double z1 = front(y1), z0 = front(y0);
-    double best = -INFINITY, at = y1;
-    const double len = std::hypot(y0 - y1, z0 - z1);
-    for (double y = y1; y >= y0; y -= 0.01) {
-        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1)) / len;
-        if (behind > best) {
-            best = behind;
-            at = y;
-        }
-    }
-    // No fold under the chest (less than 0.2 % of the height behind the chord): 2.5 % of the
-    // height under the bust point, as the rule does on a flat chest.
-    if (best < 0.002 * SyntheticBody::kHeight) {
-        at = y1 - 0.025 * SyntheticBody::kHeight;
-    }
-    return at;
-}
-
 TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
     const SyntheticBody body(GetParam().options);
     const Result r = measure_synthetic(GetParam().options);
@@ -135,81 +106,16 @@ TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
 TEST_P(SyntheticBodyTest, GirthsMatchTheEllipsePerimetersAtTheConstructionsLevels) {
     const SyntheticBody body(GetParam().options);
     const Result r = measure_synthetic(GetParam().options);
-    struct Check {
-        std::string name;
-        double truth, tolerance;
-    };
-    const double step = SyntheticBody::kHeight / 400;  // the scan's spacing
-    const double n = GetParam().options.around;
-    // Twice the polygon's shortfall P pi^2 / (6 n^2), plus (for a level taken from landmarks)
-    // the change of the truth over one scan step of level.
-    auto tol = [&](const std::function<double(double)>& girth, double level, bool from_landmark) {
-        const double p = girth(level);
-        double t = 2 * p * M_PI * M_PI / (6 * n * n);
-        if (from_landmark)
-            t += std::max(std::abs(girth(level + step) - p), std::abs(girth(level - step) - p));
-        return t;
-    };
-    const std::function<double(double)> torso = [&](double y) { return body.torso_girth(y); };
-    const std::function<double(double)> leg = [&](double y) { return body.leg_girth(y); };
-    const std::function<double(double)> neck = [&](double y) { return body.neck_girth(y); };
-    const std::function<double(double)> head = [&](double y) { return body.head_girth(y); };
-    const std::function<double(double)> arm = [&](double t) { return body.arm_girth(t); };
-    auto check = [&](const std::string& name, const std::function<double(double)>& girth,
-                     double level, bool from_landmark) {
-        return Check{name, girth(level), tol(girth, level, from_landmark)};
-    };
-    // Construction levels of the rules in girths.h: high bust 0.5 % of the height under the
-    // armpits; high hip halfway between waist and hip; neck base where the neck meets the cap;
-    // thigh at its top (2 % of the height under the crotch: the leg still widens up to 780);
-    // mid-thigh halfway between crotch and knee; upper arm halfway between the armpit's
-    // projection on the arm axis (or the joint's, if farther out) and the elbow.
-    const double armpit = body.armpit_height();
-    const double high_bust = armpit - 0.005 * SyntheticBody::kHeight;
-    const double high_hip = 0.5 * (SyntheticBody::kWaist + SyntheticBody::kHip);
-    const double thigh = SyntheticBody::kCrotch - 0.02 * SyntheticBody::kHeight;
-    const double mid_thigh = 0.5 * (SyntheticBody::kCrotch + SyntheticBody::kKnee);
-    std::vector<Check> checks = {
-        check("head_girth", head, SyntheticBody::kHead, false),
-        check("neck_girth", neck, SyntheticBody::kNeck, false),
-        check("neck_base_girth", neck, SyntheticBody::kShoulder, true),
-        check("bust_girth", torso, SyntheticBody::kBust, false),
-        check("high_bust_girth", torso, high_bust, true),
-        check("underbust_girth", torso, underbust_level(body), true),
-        check("waist_girth", torso, SyntheticBody::kWaist, false),
-        check("high_hip_girth", torso, high_hip, true),
-        check("hip_girth", torso, SyntheticBody::kHip, false),
-    };
-    for (const char* side : {"left", "right"}) {
-        const std::string s = std::string("_") + side;
-        const int sign = s == "_left" ? 1 : -1;
-        checks.push_back(check("thigh_girth" + s, leg, thigh, true));
-        checks.push_back(check("mid_thigh_girth" + s, leg, mid_thigh, true));
-        checks.push_back(check("knee_girth" + s, leg, SyntheticBody::kKnee, false));
-        checks.push_back(check("calf_girth" + s, leg, SyntheticBody::kCalf, false));
-        checks.push_back(check("ankle_girth" + s, leg, SyntheticBody::kAnkle, false));
-        // The arm's joint is midway between acromion and armpit (the construction's: the cap's
-        // corner, and the torso's side at the armpit level).
-        const double top = SyntheticBody::kShoulder;
-        const Vec3 armpit_point{sign * body.torso_half_width(armpit), armpit, 0};
-        const Vec3 joint{0.5 * sign * (body.torso_half_width(top) + body.torso_half_width(armpit)),
-                         0.5 * (top + armpit), 0};
-        const double t_from =
-            std::max(body.arm_parameter(sign, armpit_point), body.arm_parameter(sign, joint));
-        checks.push_back(
-            check("upper_arm_girth" + s, arm, 0.5 * (t_from + SyntheticBody::kElbowT), true));
-        checks.push_back(check("elbow_girth" + s, arm, SyntheticBody::kElbowT, false));
-        checks.push_back(check("wrist_girth" + s, arm, SyntheticBody::kWristT, false));
-    }
+    const std::vector<SyntheticTruth> checks = synthetic_girth_truth(body);
+    ASSERT_EQ(checks.size(), 9u + 2 * 8u);
     std::printf("%s: %zu vertices, %.3f s\n", GetParam().name, r.report.vertices, r.seconds);
     std::printf("  %-26s %10s %10s %8s\n", "girth", "measured", "exact", "error");
     for (const auto& c : checks) {
-        const std::string name = c.name.substr(0, c.name.find('@'));
-        const Measurement* m = r.measurements.find(name);
-        ASSERT_NE(m, nullptr) << name;
+        const Measurement* m = r.measurements.find(c.name);
+        ASSERT_NE(m, nullptr) << c.name;
         std::printf("  %-26s %10.2f %10.2f %+8.2f (tolerance %.2f)\n", c.name.c_str(), m->value,
-                    c.truth, m->value - c.truth, c.tolerance);
-        EXPECT_NEAR(m->value, c.truth, c.tolerance) << c.name;
+                    c.value, m->value - c.value, c.tolerance);
+        EXPECT_NEAR(m->value, c.value, c.tolerance) << c.name;
     }
     EXPECT_NEAR(r.measurements.value("stature").value(), SyntheticBody::kHeight, 1e-9);
     EXPECT_EQ(r.measurements.missing.size(), 0u);

@@ -79,6 +79,10 @@ class Reproduce(unittest.TestCase):
                 self.assertIsNotNone(m, "no verdict in %s" % want)
                 self.assertIn(m.group(1), VERDICTS)
                 self.assertIn("|", found[0], "no table in %s" % want)
+        # The synthetic body measured against its exact girths: all 25 within tolerance.
+        meas = next(s for t, s in secs.items() if t.startswith("Measurement"))
+        self.assertRegex(meas, r"\| body:40,10 \| \d+ \| 25 \| [\d.]+ \(\w+, tolerance [\d.]+\) "
+                               r"\| none \|")
         lines = text.split("\n")
         tables = compare_results.tables(md)
         self.assertGreaterEqual(len(tables), len(SECTIONS) + 1)

@@ -31,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -92,6 +93,8 @@ public:
             {{0, 43}, {180, 41.4}, {330, 34.2}, {410, 37.8}, {560, 24.3}, {640, 20}, {720, 8}}};
         build();
     }
+
+    const SyntheticBodyOptions& options() const { return options_; }  ///< as constructed
 
     // --- the mesh (canonical millimetres) -----------------------------------------------------
     const std::vector<Vec3>& points() const { return points_; }  ///< vertices, canonical mm
@@ -318,5 +321,100 @@ private:
         add_ellipsoid({0, kHead, 10}, 75, 100, 95);
     }
 };
+
+/// One girth's exact value on the synthetic body, and how far a measurement of it may be off.
+struct SyntheticTruth {
+    std::string name;  ///< measurement name (measurement_types.h)
+    double level = 0;  ///< height (mm) or, for the arm, mm along its axis, of the exact section
+    double value = 0;  ///< the perimeter of the analytic section there, mm
+    /// What the mesh resolves: twice the polygon's shortfall P·π²/(6n²) (n vertices around),
+    /// plus, where the level comes from landmarks (`from_landmarks`), what one scan step of level
+    /// changes the truth.
+    double tolerance = 0;
+    bool from_landmarks = false;  ///< the level follows a rule from landmarks, not an extremum
+};
+
+/// The girths of the measurement rules (girths.h) at the levels the construction defines: an
+/// extremum of a profile, or the rule applied to the construction's landmarks (high bust 0.5 % of
+/// the height under the armpits; high hip halfway between waist and hip; neck base where the
+/// neck meets the shoulder cap; thigh 2 % of the height under the crotch; mid-thigh halfway
+/// between crotch and knee; upper arm halfway between the arm's joint and the elbow; underbust
+/// deepest behind the chord from bust point to waist, or 2.5 % of the height under the bust on a
+/// chest without a fold). `scan_step` is the landmark scan's spacing (MeasureOptions::scan_step;
+/// 0: height / 400).
+inline std::vector<SyntheticTruth> synthetic_girth_truth(const SyntheticBody& body,
+                                                         double scan_step = 0) {
+    using B = SyntheticBody;
+    const double step = scan_step > 0 ? scan_step : B::kHeight / 400;
+    const double n = body.options().around;
+    std::vector<SyntheticTruth> out;
+    auto add = [&](const std::string& name, const std::function<double(double)>& girth,
+                   double level, bool from_landmarks) {
+        const double p = girth(level);
+        double t = 2 * p * M_PI * M_PI / (6 * n * n);
+        if (from_landmarks) {
+            t += std::max(std::abs(girth(level + step) - p), std::abs(girth(level - step) - p));
+        }
+        out.push_back({name, level, p, t, from_landmarks});
+    };
+    const std::function<double(double)> torso = [&](double y) { return body.torso_girth(y); };
+    const std::function<double(double)> leg = [&](double y) { return body.leg_girth(y); };
+    const std::function<double(double)> neck = [&](double y) { return body.neck_girth(y); };
+    const std::function<double(double)> head = [&](double y) { return body.head_girth(y); };
+    const std::function<double(double)> arm = [&](double t) { return body.arm_girth(t); };
+
+    // Underbust: on the front profile at the bust point's x (0.1 of the half-width), the level
+    // between waist and bust deepest behind the chord from the bust point to the waist's front.
+    const double bx = 0.1 * body.torso_half_width(B::kBust);
+    auto front = [&](double y) {
+        const double u = bx / body.torso_half_width(y);
+        return body.torso_depth(y) * std::sqrt(1 - u * u);
+    };
+    const double y1 = B::kBust, y0 = B::kWaist, z1 = front(y1), z0 = front(y0);
+    const double chord = std::hypot(y0 - y1, z0 - z1);
+    double deepest = -INFINITY, underbust = y1;
+    for (double y = y1; y >= y0; y -= 0.01) {
+        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1)) / chord;
+        if (behind > deepest) {
+            deepest = behind;
+            underbust = y;
+        }
+    }
+    if (deepest < 0.002 * B::kHeight) {
+        underbust = y1 - 0.025 * B::kHeight;
+    }
+
+    const double armpit = body.armpit_height();
+    add("head_girth", head, B::kHead, false);
+    add("neck_girth", neck, B::kNeck, false);
+    add("neck_base_girth", neck, B::kShoulder, true);
+    add("bust_girth", torso, B::kBust, false);
+    add("high_bust_girth", torso, armpit - 0.005 * B::kHeight, true);
+    add("underbust_girth", torso, underbust, true);
+    add("waist_girth", torso, B::kWaist, false);
+    add("high_hip_girth", torso, 0.5 * (B::kWaist + B::kHip), true);
+    add("hip_girth", torso, B::kHip, false);
+    for (const int sign : {1, -1}) {
+        const std::string s = sign > 0 ? "_left" : "_right";
+        add("thigh_girth" + s, leg, B::kCrotch - 0.02 * B::kHeight, true);
+        add("mid_thigh_girth" + s, leg, 0.5 * (B::kCrotch + B::kKnee), true);
+        add("knee_girth" + s, leg, B::kKnee, false);
+        add("calf_girth" + s, leg, B::kCalf, false);
+        add("ankle_girth" + s, leg, B::kAnkle, false);
+        // The arm's joint is midway between the acromion (the cap's corner) and the armpit (the
+        // torso's side at the armpit level); the upper arm starts at the farther of the joint's
+        // and the armpit's projections on the arm's axis.
+        const double top = B::kShoulder;
+        const Vec3 armpit_point{sign * body.torso_half_width(armpit), armpit, 0};
+        const Vec3 joint{0.5 * sign * (body.torso_half_width(top) + body.torso_half_width(armpit)),
+                         0.5 * (top + armpit), 0};
+        const double from =
+            std::max(body.arm_parameter(sign, armpit_point), body.arm_parameter(sign, joint));
+        add("upper_arm_girth" + s, arm, 0.5 * (from + B::kElbowT), true);
+        add("elbow_girth" + s, arm, B::kElbowT, false);
+        add("wrist_girth" + s, arm, B::kWristT, false);
+    }
+    return out;
+}
 
 }  // namespace tapeline::measurement
