@@ -767,7 +767,8 @@ base = {e["name"]: e["value_mm"] for e in json.load(open("base_m.json"))["measur
 target = {e["name"]: e["value_mm"] for e in json.load(open("target_m.json"))["measurements"]}
 pieces = {p["name"]: p for p in g["pieces"]}
 names = [x["measurement"] for x in b["bindings"]]
-assert names == ["bust_girth", "underbust_girth", "waist_girth", "high_hip_girth"], names
+assert names == ["bust_girth", "underbust_girth", "waist_girth", "high_hip_girth",
+                 "upper_arm_girth", "elbow_girth"], names
 for x in b["bindings"]:
     got = 0
     for f in x["features"]:

@@ -12,6 +12,12 @@
 // body (2 for a half piece cut on the fold, cut_count for pieces cut several times). Its ease is
 // the garment's girth there minus the body's: grading keeps it. The body is the one the pattern
 // was made for (its measurements are the grading's base set).
+//
+// Arm girths (upper arm, elbow, wrist) cut the sleeves of one arm the same way, at the distance
+// down the sleeve from the top of its cap at which the body's girth plane lies from the shoulder
+// point (acromion) along the arm: the cap's top is sewn to the end of the shoulder seam, which
+// sits on the shoulder point. A sleeve goes round one arm: a piece counts once (twice when cut on
+// the fold), whatever its cut count (its copies dress the other arm).
 #pragma once
 
 #include <tapeline/core/errors.h>
@@ -29,10 +35,12 @@
 
 namespace tapeline::garment {
 
-/// The girths bindings are looked for, in this order: horizontal torso girths.
+/// The girths bindings are looked for, in this order: horizontal torso girths, then arm girths
+/// (on the sleeves).
 inline const std::vector<std::string>& inferred_girths() {
-    static const std::vector<std::string> names = {"bust_girth", "underbust_girth", "waist_girth",
-                                                   "high_hip_girth", "hip_girth"};
+    static const std::vector<std::string> names = {
+        "bust_girth", "underbust_girth", "waist_girth", "high_hip_girth",
+        "hip_girth",  "upper_arm_girth", "elbow_girth", "wrist_girth"};
     return names;
 }
 
@@ -77,9 +85,17 @@ inline std::vector<Crossing> outline_crossings(const pattern::Piece& piece, Regi
     return out;
 }
 
-/// How often a piece goes round the body.
-inline double girth_count(const pattern::Piece& piece) {
-    return double(std::max(piece.cut_count, 1)) * (piece.fold ? 2.0 : 1.0);
+/// How often a piece goes round the body (a trunk piece) or the arm (a sleeve).
+inline double girth_count(const pattern::Piece& piece, bool sleeve) {
+    return (sleeve ? 1.0 : double(std::max(piece.cut_count, 1))) * (piece.fold ? 2.0 : 1.0);
+}
+
+inline bool trunk_region(Region r) {
+    return r == Region::torso_front || r == Region::torso_back || r == Region::skirt_front ||
+           r == Region::skirt_back;
+}
+inline bool sleeve_region(Region r) {
+    return r == Region::sleeve_left || r == Region::sleeve_right;
 }
 
 }  // namespace internal
@@ -109,11 +125,11 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         outline_points.push_back(placed.back() ? pattern::sample(p.outline, 0.25).points
                                                : std::vector<pattern::Point2>{});
     }
-    // The edges a girth may cross: sewn to a piece that goes round the trunk, or a fold.
-    const auto trunk_region = [](Region r) {
-        return r == Region::torso_front || r == Region::torso_back || r == Region::skirt_front ||
-               r == Region::skirt_back;
-    };
+    // The edges a girth may cross: sewn to a piece of the same kind (trunk to trunk, sleeve to
+    // sleeve), or a fold. Crossing any other edge (an armhole, a hem) means the garment is open
+    // at that level.
+    using internal::sleeve_region;
+    using internal::trunk_region;
     std::set<std::pair<std::string, std::size_t>> closed_edges;
     for (std::size_t i = 0; i < base.pieces.size(); ++i) {
         const pattern::Piece& p = base.pieces[i];
@@ -121,16 +137,19 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             closed_edges.insert({p.name, *p.fold->edge});
         }
     }
-    const auto trunk_piece = [&](const std::string& name) {
+    const auto region_of = [&](const std::string& name) -> std::optional<Region> {
         for (std::size_t i = 0; i < base.pieces.size(); ++i) {
             if (base.pieces[i].name == name) {
-                return placed[i] && trunk_region(*placed[i]);
+                return placed[i];
             }
         }
-        return false;
+        return std::nullopt;
     };
     for (const pattern::Seam& seam : base.seams) {
-        if (!trunk_piece(seam.a.piece) || !trunk_piece(seam.b.piece)) {
+        const auto ra = region_of(seam.a.piece), rb = region_of(seam.b.piece);
+        if (!ra || !rb ||
+            !((trunk_region(*ra) && trunk_region(*rb)) ||
+              (sleeve_region(*ra) && sleeve_region(*rb)))) {
             continue;
         }
         for (const pattern::EdgeRange* r : {&seam.a, &seam.b}) {
@@ -143,14 +162,52 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     }
     const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
     const LayoutHeights heights = layout_heights(base, regions, outline_points, shape, gap_mm);
-    std::vector<pattern::MeasurementBinding> bindings;
-    for (const std::string& name : inferred_girths()) {
-        const measurement::Measurement* g = measurements.find(name);
-        if (!g || !g->closed || std::abs(g->plane_normal[1]) < 0.9) {
-            out.notes.push_back(name + ": not bound (the body has no horizontal " + name + ")");
+    // The sleeves of each arm: their layout's distance down the arm at the top of the cap.
+    std::optional<Region> sleeve_side;  // the arm whose sleeves are cut (the body's left first)
+    double cap_top[2] = {1e300, 1e300};
+    for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+        if (!placed[i] || !sleeve_region(*placed[i])) {
             continue;
         }
-        const double y = g->plane_point[1];
+        pattern::PieceMesh samples;
+        samples.uv = outline_points[i];
+        const PieceLayout l = piece_layout(base.pieces[i], samples, *placed[i], heights.top_y,
+                                           heights.waist_y, heights.gc_shift);
+        const int k = *placed[i] == Region::sleeve_left ? 0 : 1;
+        for (const double h : l.h) {
+            cap_top[k] = std::min(cap_top[k], h);
+        }
+        if (!sleeve_side || (*sleeve_side == Region::sleeve_right && k == 0)) {
+            sleeve_side = *placed[i];
+        }
+    }
+    std::vector<pattern::MeasurementBinding> bindings;
+    for (const std::string& name : inferred_girths()) {
+        const bool arm =
+            name == "upper_arm_girth" || name == "elbow_girth" || name == "wrist_girth";
+        if (arm && !sleeve_side) {
+            out.notes.push_back(name + ": not bound (no sleeve)");
+            continue;
+        }
+        // An arm girth without a side is the right arm's, else the left's (the base set's value);
+        // its shoulder point is on the same side (+x: the body's left).
+        const measurement::Measurement* g = measurements.find(name);
+        const std::string side = g && g->plane_point[0] > 0 ? "_left" : "_right";
+        const std::optional<Vec3> acromion = landmarks.point("acromion" + side);
+        if (!g || !g->closed || (!arm && std::abs(g->plane_normal[1]) < 0.9) ||
+            (arm && !acromion)) {
+            out.notes.push_back(name + ": not bound (the body has no " +
+                                (arm ? name + " or acromion" + side : "horizontal " + name) + ")");
+            continue;
+        }
+        // The level in the layout's terms: a height for the trunk, a distance down the arm from
+        // the cap's top for a sleeve.
+        const double top = arm ? cap_top[*sleeve_side == Region::sleeve_left ? 0 : 1] : 0;
+        const double y =
+            arm ? top + std::abs(vec3::dot(vec3::sub(g->plane_point, *acromion), g->plane_normal))
+                : g->plane_point[1];
+        const std::string at =
+            std::to_string(int(std::lround(y - top))) + (arm ? " mm below the cap's top" : " mm");
         const std::string fs = sizes::freesewing_name(name);
         const bool fs_named = !fs.empty() && base.measurements_used.count(fs) > 0;
         pattern::MeasurementBinding b;
@@ -158,7 +215,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         double garment = 0;
         std::string pieces, open;
         for (std::size_t i = 0; i < base.pieces.size(); ++i) {
-            if (!placed[i] || !trunk_region(*placed[i])) {
+            if (!placed[i] || (arm ? *placed[i] != *sleeve_side : !trunk_region(*placed[i]))) {
                 continue;
             }
             pattern::Piece& piece = base.pieces[i];
@@ -180,23 +237,24 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             f.piece = piece.name;
             f.from_point = pa;
             f.to_point = pb;
-            f.count = internal::girth_count(piece);
+            f.count = internal::girth_count(piece, arm);
             garment += f.count * std::hypot(hi->p.x - lo->p.x, hi->p.y - lo->p.y);
             pieces += (pieces.empty() ? "" : ", ") + piece.name +
                       (f.count != 1 ? " ×" + std::to_string(int(f.count)) : "");
             b.features.push_back(std::move(f));
         }
         if (b.features.empty()) {
-            out.notes.push_back(name + ": not bound (no torso or skirt piece reaches " +
-                                std::to_string(int(std::lround(y))) + " mm)");
+            out.notes.push_back(name + ": not bound (no " +
+                                (arm ? "sleeve reaches " : "torso or skirt piece reaches ") + at +
+                                ")");
             continue;
         }
         if (!open.empty()) {
             // The level cuts an opening (an armhole, a hem, a neckline): the garment does not go
             // round the body there, and a span to that edge is no part of a girth.
-            out.notes.push_back(name + ": not bound (at " + std::to_string(int(std::lround(y))) +
-                                " mm it crosses " + open +
-                                ", which is sewn to no torso piece: the garment is open there)");
+            out.notes.push_back(name + ": not bound (at " + at + " it crosses " + open +
+                                ", which is sewn to no " + (arm ? "sleeve" : "torso") +
+                                " piece: the garment is open there)");
             for (pattern::BoundFeature& f : b.features) {
                 pattern::Piece* piece = pattern::find_piece(base, f.piece);
                 piece->points.erase(f.from_point);
@@ -208,14 +266,13 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         out.notes.push_back(b.measurement + ": " + pieces + "; garment " +
                             std::to_string(int(std::lround(garment))) + " mm, body " +
                             std::to_string(int(std::lround(g->value))) + " mm, ease " +
-                            std::to_string(int(std::lround(b.ease_mm))) + " mm, at " +
-                            std::to_string(int(std::lround(y))) + " mm");
+                            std::to_string(int(std::lround(b.ease_mm))) + " mm, at " + at);
         bindings.push_back(std::move(b));
     }
     if (bindings.empty()) {
         throw InvalidInput("pattern '" + base.name +
-                           "': no girth of the body cuts its torso or skirt pieces, so no "
-                           "binding was found: give the bindings (--bindings)");
+                           "': no girth of the body goes round its torso, skirt or sleeve "
+                           "pieces, so no binding was found: give the bindings (--bindings)");
     }
     base.bindings = std::move(bindings);
     out.pattern = std::move(base);
