@@ -56,7 +56,8 @@ struct DressArgs {
     bool strict = false;
     bool to_body = false;
     std::string from, from_set;
-    std::string base_body, base_units;  ///< the body the pattern was made for (with --to-body)
+    /// The body the pattern was made for (with --to-body), its unit and axes.
+    std::string base_body, base_units, base_up = "+Y", base_front = "+Z";
     std::uint32_t seed = 1;
 };
 
@@ -115,13 +116,18 @@ void run_dress(const DressArgs& a) {
     if (!a.to_body && (!a.from.empty() || !a.from_set.empty() || !a.base_body.empty())) {
         throw InvalidInput("--from, --from-set and --base-body are for --to-body");
     }
+    if (a.base_body.empty() &&
+        (!a.base_units.empty() || a.base_up != "+Y" || a.base_front != "+Z")) {
+        throw InvalidInput("--base-units, --base-up and --base-front describe --base-body");
+    }
     pattern::Pattern pat = load_pattern(a.pattern, a.db, a.format);
     pattern::require_valid(pat);
     std::optional<sizes::MeasurementSet> from;
     if (a.to_body && !a.base_body.empty()) {
-        bench::BodyBase b = bench::base_from_body(
-            std::move(pat), a.base_body,
-            tm::parse_body_options(a.base_body, a.base_units, "+Y", "+Z", "A", "--base-"));
+        bench::BodyBase b =
+            bench::base_from_body(std::move(pat), a.base_body,
+                                  tm::parse_body_options(a.base_body, a.base_units, a.base_up,
+                                                         a.base_front, "A", "--base-"));
         pat = std::move(b.pattern);
         from = std::move(b.measurements);
         for (const std::string& note : b.notes) {
@@ -269,6 +275,9 @@ void register_dress_commands(CLI::App& app) {
                     "pattern laid on it to find its girth bindings (for patterns without them)");
     cmd->add_option("--base-units", a->base_units,
                     "Unit of --base-body: m, dm, cm or mm (default: inferred from its height)");
+    cmd->add_option("--base-up", a->base_up, "Up axis of --base-body")->capture_default_str();
+    cmd->add_option("--base-front", a->base_front, "Front axis of --base-body")
+        ->capture_default_str();
     cmd->add_option("--seed", a->seed, "Random seed of the grading (with --to-body)")
         ->capture_default_str();
     cmd->add_flag("--strict", a->strict,

@@ -106,6 +106,10 @@ void run_grade(const GradeArgs& a) {
             "give the pattern's base measurements either as a set (--from) or as a body to lay "
             "the pattern on (--base-body), not both");
     }
+    if (a.base_body.empty() &&
+        (!a.base_units.empty() || a.base_up != "+Y" || a.base_front != "+Z")) {
+        throw InvalidInput("--base-units, --base-up and --base-front describe --base-body");
+    }
     if (!a.bindings_out.empty() && extension(a.bindings_out) != ".json") {
         throw InvalidInput("--bindings-out " + a.bindings_out + ": expected a .json file");
     }

@@ -1057,6 +1057,27 @@ if [ $rc -eq 0 ] && [ -s wide_shirt.obj ] && grep -q "binding: bust_girth: .*eas
    grep -q "grading: graded shirt_mean.* from mh_female_average to wide" err.txt
 then ok "dress: --to-body --base-body grades a pattern without bindings to the body"
 else fail "dress: --base-body (exit $rc): $(head -c 400 err.txt)"; fi
+# The same base body lying down (Z up, front -Y; its unit inferred): the same bindings are found.
+$py - "$body" <<'PY'
+import sys
+with open("lying.obj", "w") as out:
+    for line in open(sys.argv[1]):
+        w = line.split()
+        if w and w[0] == "v":
+            line = "v %s %.6f %s\n" % (w[1], -float(w[3]), w[2])
+        out.write(line)
+PY
+"$bin" dress wide.obj --units dm "$gcs" --to-body --base-body lying.obj --base-up +Z \
+  --base-front -Y --resolution 30 --sew-seconds 0 --settle-seconds 0 --out lying_shirt.obj \
+  >out.txt 2>err_lying.txt; rc=$?
+if [ $rc -eq 0 ] && [ "$(grep '^tapeline: binding:' err.txt)" = "$(grep '^tapeline: binding:' err_lying.txt)" ] &&
+   [ "$(grep -c '^tapeline: binding:' err.txt)" -ge 4 ]
+then ok "dress: --base-up/--base-front: a lying base body gives the same bindings"
+else fail "dress: --base-up/--base-front (exit $rc): $(diff <(grep binding: err.txt) <(grep binding: err_lying.txt) | head -c 400)"; fi
+expect_fail "dress: --base-up without --base-body" "describe --base-body" "$bin" dress "$body" --units dm "$gcs" \
+  --base-up +Z --out x.obj
+expect_fail "grade: --base-units without --base-body" "describe --base-body" "$bin" grade "$gcs" \
+  --from "$fsm" --to "$fsm" --base-units dm --out x.json
 place_fs() {
   "$bin" dress "$body" --units dm "$fs" --without aaron.armBinding --without aaron.neckBinding \
     --resolution 30 --sew-seconds 0 --settle-seconds 0 "$@" 2>tb_err.txt
