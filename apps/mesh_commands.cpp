@@ -10,17 +10,16 @@
 #include <tapeline/core/remesh.h>
 #include <tapeline/measurement/synthetic_body.h>
 #include <tapeline/surfaces/analytic_geodesics.h>
+#include <tapeline/surfaces/analytic_surface_types.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <array>
-#include <cmath>
 #include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -35,7 +34,8 @@ struct GenerateArgs {
     std::string truth_out;
 };
 
-/// Parses `body[:AROUND,RING_MM[,ARM_DEGREES]]`; nullopt when the spec is not a body's.
+/// Parses `body[:AROUND,RING_MM[,ARM_DEGREES]]` with the surface specs' field parsers
+/// (surfaces/analytic_surface_types.h); nullopt when the spec is not a body's.
 std::optional<measurement::SyntheticBodyOptions> body_spec(const std::string& spec) {
     if (spec != "body" && spec.rfind("body:", 0) != 0) {
         return std::nullopt;
@@ -44,39 +44,20 @@ std::optional<measurement::SyntheticBodyOptions> body_spec(const std::string& sp
     if (spec == "body") {
         return o;
     }
-    std::vector<double> v;
-    std::stringstream in(spec.substr(5));
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        std::size_t used = 0;
-        double x = NAN;
-        try {
-            x = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
+    const std::vector<std::string> f = internal::split(spec.substr(5), ',');
+    if (f.size() < 2 || f.size() > 3) {
+        internal::spec_error(spec, "expected body:AROUND,RING_MM[,ARM_DEGREES]");
+    }
+    o.around = internal::parse_int_in(spec, f[0], "AROUND", 8, 1024);
+    o.ring_step = internal::parse_double(spec, f[1], "RING_MM");
+    if (o.ring_step < 1 || o.ring_step > 100) {
+        internal::spec_error(spec, "RING_MM must be in 1..100");
+    }
+    if (f.size() == 3) {
+        o.arm_angle_degrees = internal::parse_double(spec, f[2], "ARM_DEGREES");
+        if (o.arm_angle_degrees < 20 || o.arm_angle_degrees > 90) {
+            internal::spec_error(spec, "ARM_DEGREES must be in 20..90");
         }
-        if (used == 0 || used != item.size() || !std::isfinite(x)) {
-            throw InvalidInput("surface spec '" + spec + "': '" + item + "' is not a number");
-        }
-        v.push_back(x);
-    }
-    if (v.size() < 2 || v.size() > 3) {
-        throw InvalidInput("surface spec '" + spec +
-                           "': expected body:AROUND,RING_MM[,ARM_DEGREES]");
-    }
-    if (v[0] < 8 || v[0] > 1024 || v[0] != std::floor(v[0])) {
-        throw InvalidInput("surface spec '" + spec + "': AROUND must be a whole number in 8..1024");
-    }
-    if (v[1] < 1 || v[1] > 100) {
-        throw InvalidInput("surface spec '" + spec + "': RING_MM must be in 1..100");
-    }
-    if (v.size() == 3 && (v[2] < 20 || v[2] > 90)) {
-        throw InvalidInput("surface spec '" + spec + "': ARM_DEGREES must be in 20..90");
-    }
-    o.around = static_cast<int>(v[0]);
-    o.ring_step = v[1];
-    if (v.size() == 3) {
-        o.arm_angle_degrees = v[2];
     }
     return o;
 }
