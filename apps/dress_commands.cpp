@@ -53,6 +53,8 @@ struct DressArgs {
     double gap = tg::PlacementOptions{}.gap_mm;
     int substeps = tg::DressOptions{}.drape.substeps;
     bool no_self_collision = false;
+    bool no_relax = false;
+    int relax_iterations = tg::RelaxOptions{}.max_iterations;
     bool strict = false;
     bool to_body = false;
     std::string from, from_set;
@@ -104,6 +106,8 @@ void run_dress(const DressArgs& a) {
     o.placement.gap_mm = a.gap;
     o.drape.substeps = a.substeps;
     o.drape.self_collision = !a.no_self_collision;
+    o.relax = !a.no_relax;
+    o.relax_options.max_iterations = a.relax_iterations;
     o.without_pieces = a.without;
 
     const tm::BodyOptions bo = tm::parse_body_options(a.body, a.units, a.up, a.front,
@@ -263,6 +267,12 @@ void register_dress_commands(CLI::App& app) {
         ->check(CLI::Range(1, 10000))
         ->capture_default_str();
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
+    cmd->add_flag("--no-relax", a->no_relax,
+                  "End with the drape's last frame instead of solving for the static equilibrium");
+    cmd->add_option("--relax-iterations", a->relax_iterations,
+                    "Newton iterations of the static solve at most")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "
                   "one command; needs --from or --base-body)");

@@ -24,6 +24,21 @@ if(NOT TARGET CGAL::Eigen3_support)
   message(FATAL_ERROR "tapeline: Eigen 3 not found (Debian package libeigen3-dev)")
 endif()
 
+# CHOLMOD (Debian package libsuitesparse-dev): the supernodal sparse Cholesky factorisation of the
+# garment solver's static solve (DrapeSolver::relax). It ships no CMake config; wrap it in a target.
+if(NOT TARGET tapeline::CHOLMOD)
+  find_path(TAPELINE_CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+  find_library(TAPELINE_CHOLMOD_LIBRARY cholmod)
+  if(TAPELINE_CHOLMOD_INCLUDE_DIR AND TAPELINE_CHOLMOD_LIBRARY)
+    add_library(tapeline::CHOLMOD UNKNOWN IMPORTED)
+    set_target_properties(tapeline::CHOLMOD PROPERTIES
+      IMPORTED_LOCATION "${TAPELINE_CHOLMOD_LIBRARY}"
+      INTERFACE_INCLUDE_DIRECTORIES "${TAPELINE_CHOLMOD_INCLUDE_DIR}")
+  else()
+    message(FATAL_ERROR "tapeline: CHOLMOD not found (Debian package libsuitesparse-dev)")
+  endif()
+endif()
+
 # Optional: only tapeline::surfaces needs it (Debian package libgeographiclib-dev), which ships a
 # find module but no config file; wrap it in a target.
 if(NOT TARGET tapeline::GeographicLib)

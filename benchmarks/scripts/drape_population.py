@@ -72,6 +72,8 @@ def main():
     ap.add_argument("--threads", type=int, default=0)
     ap.add_argument("--substeps", type=int, default=40)
     ap.add_argument("--json")
+    ap.add_argument("--no-relax", action="store_true",
+                    help="end with the drape's last frame (tapeline dress --no-relax)")
     ap.add_argument("--no-grading", action="store_true",
                     help="dress the FreeSewing drafts as drafted (default: --to-body)")
     ap.add_argument("--table-only", metavar="RUN_JSONL",
@@ -95,6 +97,8 @@ def main():
                "--substeps", str(a.substeps)]
         for w in without:
             cmd += ["--without", w]
+        if a.no_relax:
+            cmd += ["--no-relax"]
         if rel.startswith("patterns/freesewing/") and not a.no_grading:
             cmd += to_body_args(a.data)
         t0 = time.time()
@@ -130,7 +134,8 @@ def write_table(rows, a):
              " --threads %d --substeps %d --patterns %s%s`" % (
                  "build/apps/tapeline", "../shared/data", a.out, a.bodies, a.resolution,
                  a.threads, a.substeps, " ".join(a.patterns),
-                 " --no-grading" if a.no_grading else ""), "",
+                 (" --no-grading" if a.no_grading else "") +
+                 (" --no-relax" if a.no_relax else "")), "",
              "Success: %d of %d drapes (%.0f %%); median wall time of the drapes that ran: %s s." %
              (len(ok), len(rows), 100.0 * len(ok) / max(len(rows), 1),
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",

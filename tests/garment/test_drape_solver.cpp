@@ -434,4 +434,210 @@ TEST(GarmentDrapeSolver, RefusesBadInputNamingTheElement) {
               std::string::npos);
 }
 
+// ---- relax(): the static equilibrium by a direct solve
+
+// The warp strain of the triangle (a, b, c) against its rest shape, |F·e_warp| − 1, computed from
+// positions and pattern coordinates (independently of the solver).
+double warp_strain(const ClothModel& m, std::size_t t, const std::vector<Vec3>& x) {
+    const auto& uv = m.rest_uv[t];
+    const auto& tri = m.triangles[t];
+    const double m00 = uv[1][0] - uv[0][0], m10 = uv[1][1] - uv[0][1];
+    const double m01 = uv[2][0] - uv[0][0], m11 = uv[2][1] - uv[0][1];
+    const double det = m00 * m11 - m01 * m10;
+    // Column 0 of F = [x1 − x0, x2 − x0]·Dm⁻¹; the grain is the pattern's first axis.
+    const double i00 = m11 / det, i10 = -m10 / det;
+    Vec3 f;
+    for (int a = 0; a < 3; ++a) {
+        f[a] = (x[tri[1]][a] - x[tri[0]][a]) * i00 + (x[tri[2]][a] - x[tri[0]][a]) * i10;
+    }
+    return std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]) - 1;
+}
+
+// A sheet hanging from its pinned top row: each row of elements carries the weight of the cloth
+// below it, so its warp strain is ρ·g·(H − s)/k at the depth s of its middle (ρ the areal
+// density, k the warp stiffness; the lumped masses make that exact for the rows of a uniform grid,
+// and without a Poisson coupling in the model the width stays). The sub-stepped solver leaves the
+// top of such a sheet far softer than the fabric (see the solver's header); relax() must give the
+// analytic strain in every row, and a balance of forces (residual) near zero.
+TEST(GarmentDrapeSolver, RelaxedHangingSheetCarriesTheWeightBelowEachRow) {
+    const int nx = 30, ny = 10;
+    const double cell = 10, k = 20, density = 180, g = 9.81;
+    ClothModel sheet = cloth_grid(nx, ny, cell, {0, 0, 0}, {0, -1, 0}, {0, 0, 1});
+    sheet.pinned.assign(sheet.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        sheet.pinned[grid_vertex(nx, 0, j)] = 1;
+    }
+    FabricParams fabric;
+    fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = k;
+    fabric.shear_n_m = 5;
+    fabric.bending_un_m = 0;
+    fabric.density_g_m2 = density;
+    DrapeOptions options;
+    options.self_collision = false;
+    DrapeSolver solver(sheet, fabric, options);
+    for (int f = 0; f < 10; ++f) {
+        solver.step();
+    }
+    const auto rep = solver.relax();
+    EXPECT_TRUE(rep.converged) << rep.iterations << " iterations, last move "
+                               << rep.last_max_move_mm;
+    EXPECT_LT(rep.energy_after_j, rep.energy_before_j);
+    EXPECT_LT(rep.max_residual_of_weight, 1e-3);
+    // Per row of elements the mean strain is the analytic one within 1 % of the top row's strain;
+    // single triangles within 5 % of it (the alternating diagonals give the vertices 4 or 8
+    // triangles, hence unequal lumped masses across a row).
+    const double top = density * 1e-3 * g * (nx - 0.5) * cell * 1e-3 / k;
+    std::vector<double> sum(nx, 0.0);
+    std::vector<int> count(nx, 0);
+    for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+        // Row of elements: the smaller i of the triangle's corners (i = index mod (nx + 1)).
+        int row = nx;
+        for (auto v : sheet.triangles[t]) {
+            row = std::min(row, int(v % (nx + 1)));
+        }
+        const double got = warp_strain(sheet, t, solver.positions());
+        sum[row] += got;
+        ++count[row];
+        const double depth_m = (row + 0.5) * cell * 1e-3, height_m = nx * cell * 1e-3;
+        const double expected = density * 1e-3 * g * (height_m - depth_m) / k;
+        ASSERT_NEAR(got, expected, 0.05 * top) << "triangle " << t << " row " << row;
+    }
+    double worst = 0;
+    for (int row = 0; row < nx; ++row) {
+        const double depth_m = (row + 0.5) * cell * 1e-3, height_m = nx * cell * 1e-3;
+        const double expected = density * 1e-3 * g * (height_m - depth_m) / k;
+        const double mean = sum[row] / count[row];
+        worst = std::max(worst, std::abs(mean - expected) / top);
+        EXPECT_NEAR(mean, expected, 0.01 * top) << "row " << row;
+    }
+    RecordProperty("worst_row_relative_error", std::to_string(worst));
+    for (const Vec3& v : solver.velocities()) {
+        ASSERT_EQ(v, (Vec3{0, 0, 0}));
+    }
+}
+
+// The catenary again, from the V of the right length straight to the static solve (no
+// dynamics): the sag within 0.5 % (a stiff strip, no bending). Newton needs about 130
+// iterations here (the strip's sideways modes are soft), hence the options.
+TEST(GarmentDrapeSolver, RelaxFromAVFindsTheCatenary) {
+    const double length = 300, span = 200, cell = 10;
+    const int nx = 30, ny = 2;
+    ClothModel strip = cloth_grid(nx, ny, cell, {0, 0, -cell}, {1, 0, 0}, {0, 0, 1});
+    const double drop = std::sqrt((length / 2) * (length / 2) - (span / 2) * (span / 2));
+    for (Vec3& p : strip.positions) {
+        const double s = p[0];
+        const double along = s <= length / 2 ? s : length - s;
+        p[0] = s <= length / 2 ? along * span / length : span - along * span / length;
+        p[1] = -along * 2 * drop / length;
+    }
+    strip.pinned.assign(strip.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        strip.pinned[grid_vertex(nx, 0, j)] = 1;
+        strip.pinned[grid_vertex(nx, nx, j)] = 1;
+    }
+    FabricParams fabric;
+    fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 1e5;
+    fabric.bending_un_m = 0;
+    DrapeOptions options;
+    options.self_collision = false;
+    DrapeSolver solver(strip, fabric, options);
+    tapeline::garment::RelaxOptions ro;
+    ro.max_iterations = 300;
+    ro.tolerance_mm = 1e-4;
+    const auto rep = solver.relax(ro);
+    RecordProperty("iterations", std::to_string(rep.iterations));
+    EXPECT_TRUE(rep.converged) << rep.iterations << " iterations, last move "
+                               << rep.last_max_move_mm;
+    double lo = 1, hi = 1e5;
+    for (int k = 0; k < 200; ++k) {
+        const double a = 0.5 * (lo + hi);
+        (2 * a * std::sinh(span / (2 * a)) > length ? lo : hi) = a;
+    }
+    const double a = 0.5 * (lo + hi);
+    const double sag = a * (std::cosh(span / (2 * a)) - 1);
+    double lowest = 0;
+    for (int i = 0; i <= nx; ++i) {
+        lowest = std::min(lowest, solver.positions()[grid_vertex(nx, i, 1)][1]);
+    }
+    EXPECT_NEAR(-lowest, sag, 0.005 * sag);
+}
+
+// A sheet hanging from its pinned top row over a sphere that bulges 15 mm through its plane from
+// behind, gravity tilted by 0.5 rad so that the sheet leans back onto it: settled by the
+// sub-stepped solver, then relaxed. No vertex inside the sphere (the analytic distance at least 0.5
+// mm, as for the sub-stepped solver), the cloth balanced (net force on the free vertices, the
+// sphere's push taken out, below a hundredth of their weight: the solve stops at moves of 0.1 mm),
+// the stretch back to the fabric's (the sub-stepped solver leaves the top rows far softer), and
+// the same result for one and two threads. (Without friction a square lying on a sphere slides
+// off it: the static solve has none, so the test hangs the cloth where it cannot slide away.)
+TEST(GarmentDrapeSolver, RelaxedSheetOverASphereStaysOutsideAndBalances) {
+    const double radius = 60;
+    const Vec3 centre{100, -150, -(radius - 15)};
+    const auto sphere = tapeline_test::uv_sphere(centre, radius, 64, 32);
+    const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{2});
+    const int nx = 30, ny = 20;
+    ClothModel sheet = cloth_grid(nx, ny, 10, {0, 0, 0}, {0, -1, 0}, {1, 0, 0});
+    sheet.pinned.assign(sheet.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        sheet.pinned[grid_vertex(nx, 0, j)] = 1;
+    }
+    // Start in front of the sphere: the plane moved forward by the bulge plus the clearance.
+    for (Vec3& p : sheet.positions) {
+        p[2] = 17;
+    }
+    std::vector<Vec3> result[2];
+    for (int threads : {1, 2}) {
+        DrapeOptions options;
+        options.threads = threads;
+        options.self_collision = false;
+        options.damping_per_second = 4;
+        options.gravity = {0, -9810 * std::cos(0.5), -9810 * std::sin(0.5)};  // leans back
+        DrapeSolver solver(sheet, FabricParams{}, options, &body);
+        for (int f = 0; f < 60; ++f) {
+            solver.step();
+        }
+        tapeline::garment::RelaxOptions ro;
+        ro.max_iterations = 100;
+        const auto rep = solver.relax(ro);
+        EXPECT_TRUE(rep.converged)
+            << rep.iterations << " iterations, last move " << rep.last_max_move_mm;
+        EXPECT_GT(rep.contacts, 5u);
+        EXPECT_LT(rep.total_residual_of_weight, 1e-2);
+        EXPECT_LT(rep.energy_after_j, rep.energy_before_j);
+        double closest = 1e300;
+        for (const Vec3& p : solver.positions()) {
+            closest = std::min(closest, distance(p, centre) - radius);
+        }
+        EXPECT_GE(closest, 0.5);
+        double top = 0;
+        for (int j = 0; j < ny; ++j) {  // the first row of elements, where the load is largest
+            for (std::size_t t = 0; t < sheet.triangles.size(); ++t) {
+                const auto& tri = sheet.triangles[t];
+                if (tri[0] % (nx + 1) == 0 || tri[1] % (nx + 1) == 0 || tri[2] % (nx + 1) == 0) {
+                    top = std::max(top, warp_strain(sheet, t, solver.positions()));
+                }
+            }
+        }
+        EXPECT_LT(top, 0.01);  // cotton jersey under 300 mm of itself: about 0.04 %
+        result[threads - 1] = solver.positions();
+        RecordProperty("iterations_" + std::to_string(threads), std::to_string(rep.iterations));
+    }
+    EXPECT_EQ(result[0], result[1]);
+}
+
+TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
+    DrapeSolver solver(horizontal_square(4, 10, 0, 0, 0), FabricParams{}, DrapeOptions{});
+    tapeline::garment::RelaxOptions ro;
+    ro.max_iterations = 0;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("max_iterations must be >= 1"),
+              std::string::npos);
+    ro = {};
+    ro.tolerance_mm = -1;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("tolerance_mm"), std::string::npos);
+    ro = {};
+    ro.initial_step_seconds = std::nan("");
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("initial_step_seconds"),
+              std::string::npos);
+}
+
 }  // namespace

@@ -321,7 +321,10 @@ TEST(Dress, TShirtSleevesArePairedAndPlacedOnTheirArms) {
 // The T-shirt (sleeves drafted once, paired with their mirror) dressed on the bundled body: the
 // garment is one mesh with its four openings, no cloth edge crosses the body, no vertex is inside
 // it, and the garment comes to rest (at most 1 % of the vertices moving more than 0.3 mm in the
-// last frame) — three of the gates, with the sleeves on.
+// last frame) — three of the gates, with the sleeves on. Then the same with the static
+// solve after the drape: a lower energy, the stretch gate met, the cloth outside the body and
+// still hanging from it. (The static solve does not always converge within its 30 iterations
+// here: the rest gate is checked on the drape alone.)
 TEST(Dress, TShirtComesToRestOutsideTheBody) {
     const std::filesystem::path file = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) /
                                        "patterns" / "freesewing" / "teagan_cisFemaleAdult36.json";
@@ -329,15 +332,29 @@ TEST(Dress, TShirtComesToRestOutsideTheBody) {
         GTEST_SKIP() << file << " is absent";
     }
     const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
+    const tp::Pattern teagan = tp::read_pattern_file(file.string());
+    // The sub-stepped drape alone comes to rest outside the body...
     tg::DressOptions o;
     o.resolution_mm = 20;
-    const tg::DressResult r =
-        tg::dress(b.body, b.landmarks, tp::read_pattern_file(file.string()), o);
-    const tg::DressReport& rep = r.report;
+    o.relax = false;
+    const tg::DressReport rep = tg::dress(b.body, b.landmarks, teagan, o).report;
+    EXPECT_EQ(rep.relax.iterations, 0);
     EXPECT_EQ(rep.boundary_loops, 4u) << "neck, hem and two sleeve openings";
     EXPECT_EQ(rep.quality.edges_crossing_body, 0u);
     EXPECT_EQ(rep.quality.vertices_inside_body, 0u);
     EXPECT_LE(rep.quality.moving_fraction, 0.01);
+    // ...and the static solve after it lowers the energy and takes the stretch to the gate's
+    // 1.05 while keeping the cloth outside the body and on it.
+    o.relax = true;
+    const tg::DressReport relaxed = tg::dress(b.body, b.landmarks, teagan, o).report;
+    EXPECT_GT(relaxed.relax.iterations, 0);
+    EXPECT_LT(relaxed.relax.energy_after_j, relaxed.relax.energy_before_j);
+    EXPECT_EQ(relaxed.quality.vertices_inside_body, 0u);
+    EXPECT_LT(relaxed.quality.stretch_p95, rep.quality.stretch_p95);
+    EXPECT_LE(relaxed.quality.stretch_p95, 1.05);
+    EXPECT_LE(relaxed.quality.top_drop_mm, tg::kMaxTopDropMm);
+    RecordProperty("stretch_p95_drape", std::to_string(rep.quality.stretch_p95));
+    RecordProperty("stretch_p95_relaxed", std::to_string(relaxed.quality.stretch_p95));
 }
 
 TEST(Dress, Refusals) {

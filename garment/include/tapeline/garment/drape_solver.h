@@ -71,7 +71,9 @@
 // (factor refreshed when that set changes) keeps it outside but the cloth never comes to rest
 // and the stretch of the shirt at the body stays (p95 1.55); removing only the motion into the
 // body lets the free vertices through again; resisting stretch only (not compression) grows an
-// oscillation on sheets of 40 rows and more. A global solve needs the contacts inside it.
+// oscillation on sheets of 40 rows and more. A global solve needs the contacts inside it:
+// relax() (below) is such a solve for the end state, a Newton iteration on the same energies with
+// the body's contacts as an active set; dress() runs it after the drape.
 // Tried and left out: over-relaxing the λ update (ω = 1.5 blows up within two frames) and
 // warm-starting each sub-step from a fraction β of the previous multipliers (β = 0.5 halves the
 // stretch, β ≥ 0.9 blows up).
@@ -86,6 +88,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <Eigen/CholmodSupport>
+#include <Eigen/Sparse>
 
 #include <algorithm>
 #include <atomic>
@@ -147,6 +151,13 @@ public:
 
     /// Back to the initial positions, zero velocity, frame 0 (attachments and stitches stay).
     void reset();
+
+    /// Looks for the static equilibrium from the current state: where the fabric's stretch,
+    /// shear and bending, the stitches, the attachments, gravity and the body's push balance
+    /// (damped Newton iterations on the same energies the constraints stand for; see the comment
+    /// above its definition). Velocities become zero. Cloth–cloth contact and friction take no
+    /// part in it. Throws InvalidInput on bad options.
+    RelaxReport relax(const RelaxOptions& options = {});
 
 private:
     struct TriangleConstraint {
@@ -1364,6 +1375,584 @@ inline void DrapeSolver::solve_self_contacts() {
             p_[tv[k]] = sub(p_[tv[k]], scale(sc.n, w_[tv[k]] * sc.b[k] * dl));
         }
     }
+}
+
+// Static equilibrium. The constraints above are the gradients of energies ½·C²/α (stretch,
+// shear, bending, stitches, attachments); relax() minimises their sum plus gravity's potential
+// and a stiff one-sided penalty that keeps the cloth at the clearance from the body,
+//   E(x) = Σ ½·C(x)²/α − Σ m_i·g·x_i + Σ ½·k_c·max(0, c − d(q))²,
+// q running over the vertices (c the clearance) and the edge midpoints (c half of it: an edge
+// cannot cut through a bump of the body between its ends). Each iteration solves a Newton system:
+// the Gauss–Newton Hessian Σ ∇C·∇Cᵀ/α (positive semi-definite), the geometric stiffness of
+// stretched fibres (what holds hanging cloth against swinging sideways; its negative part under
+// compression is left out), the proximal term M/h² (Levenberg–Marquardt: h doubles after a
+// step that lowered E, is divided by four after one that did not) and, for every contact point
+// near the body, a stiff hold of its distance from it (an active set: a point the step pulls
+// away is released at the next iteration). The step is bounded by a trust radius on the largest
+// vertex move, then shortened until E falls; points a trial step takes into the body are put
+// back at their clearance. The sparse system (three unknowns per free vertex) is factored by
+// CHOLMOD's supernodal Cholesky, its pattern analysed once. Hard stitches and attachments
+// (compliance 0) and k_c are a thousand times as stiff as the stiffest triangle term (per mm of
+// vertex motion).
+// Why: with one constraint pass per sub-step XPBD leaves cloth hanging from a support stretched
+// by about g·h²·N (see the header), far more than its fabric; a direct solve has no such limit,
+// so the drape ends at the fabric's own stretch. Left out: cloth–cloth contact and friction (the
+// quality gates on self-intersections and the top drop judge what that leaves out). Serial,
+// apart from independent distance queries: the same result for any thread count.
+inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
+    using namespace tapeline::vec3;
+    const auto start = std::chrono::steady_clock::now();
+    if (ro.max_iterations < 1) {
+        throw InvalidInput("DrapeSolver::relax: max_iterations must be >= 1, got " +
+                           std::to_string(ro.max_iterations));
+    }
+    if (!(std::isfinite(ro.tolerance_mm) && ro.tolerance_mm > 0)) {
+        throw InvalidInput("DrapeSolver::relax: tolerance_mm must be finite and > 0, got " +
+                           std::to_string(ro.tolerance_mm));
+    }
+    if (!(std::isfinite(ro.initial_step_seconds) && ro.initial_step_seconds > 0)) {
+        throw InvalidInput("DrapeSolver::relax: initial_step_seconds must be finite and > 0, got " +
+                           std::to_string(ro.initial_step_seconds));
+    }
+    if (failed_) {
+        throw SolverFailure("relax: the solver failed earlier; call reset()");
+    }
+    const std::size_t n = x_.size();
+    RelaxReport rep;
+    std::vector<std::int64_t> dof(n, -1);
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (w_[i] > 0) {
+            dof[i] = static_cast<std::int64_t>(m++);
+        }
+    }
+    auto finish = [&] {
+        rep.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        return rep;
+    };
+    if (m == 0) {
+        rep.converged = true;
+        return finish();
+    }
+    // Block pattern: free vertices that share a triangle, a hinge or a stitch (and the diagonal).
+    std::vector<std::vector<std::uint32_t>> adj(m);
+    auto link = [&](std::uint32_t a, std::uint32_t b) {
+        if (dof[a] >= 0 && dof[b] >= 0) {
+            adj[std::size_t(dof[a])].push_back(b);
+        }
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        link(std::uint32_t(i), std::uint32_t(i));
+    }
+    for (const TriangleConstraint& c : tris_) {
+        for (int k = 0; k < 3; ++k) {
+            for (int l = 0; l < 3; ++l) {
+                link(c.v[k], c.v[l]);
+            }
+        }
+    }
+    for (const BendConstraint& c : bends_) {
+        for (int k = 0; k < 4; ++k) {
+            for (int l = 0; l < 4; ++l) {
+                link(c.v[k], c.v[l]);
+            }
+        }
+    }
+    for (const Stitch& st : stitches_) {
+        link(st.a, st.b);
+        link(st.b, st.a);
+    }
+    std::vector<std::size_t> row_start(m + 1, 0);
+    std::vector<std::uint32_t> cols;
+    for (std::size_t r = 0; r < m; ++r) {
+        std::sort(adj[r].begin(), adj[r].end());
+        adj[r].erase(std::unique(adj[r].begin(), adj[r].end()), adj[r].end());
+        row_start[r + 1] = row_start[r] + adj[r].size();
+        cols.insert(cols.end(), adj[r].begin(), adj[r].end());
+    }
+    adj = {};
+    std::vector<double> blocks(9 * cols.size()), system(9 * cols.size());
+    auto block_index = [&](std::uint32_t a, std::uint32_t b) {
+        const std::size_t r = std::size_t(dof[a]);
+        const auto it = std::lower_bound(cols.begin() + std::ptrdiff_t(row_start[r]),
+                                         cols.begin() + std::ptrdiff_t(row_start[r + 1]), b);
+        return 9 * std::size_t(it - cols.begin());
+    };
+    // The stiffest triangle term per mm of vertex motion sets hard stitches, hard attachments and
+    // the contact penalty k_c a thousand times stiffer.
+    double k_ref = 0;
+    for (const TriangleConstraint& c : tris_) {
+        double c2 = 0;
+        for (int k = 0; k < 3; ++k) {
+            c2 = std::max({c2, c.c1[k] * c.c1[k], c.c2[k] * c.c2[k]});
+        }
+        for (double al : {c.alpha_warp, c.alpha_weft, c.alpha_shear}) {
+            if (al > 0) {
+                k_ref = std::max(k_ref, c2 / al);
+            }
+        }
+    }
+    if (!(k_ref > 0)) {
+        k_ref = 1;
+    }
+    const double hard_alpha = 1e-3 / k_ref, kc = 1e3 * k_ref;
+    auto alpha_or_hard = [&](double al) { return al > 0 ? al : hard_alpha; };
+
+    // Contact points: every free vertex (clearance c), then every edge midpoint (c/2).
+    struct ContactPoint {
+        std::uint32_t v[2];
+        double w[2];
+        double clearance;
+    };
+    std::vector<ContactPoint> points;
+    if (collider_) {
+        for (std::size_t i = 0; i < n; ++i) {
+            if (dof[i] >= 0) {
+                points.push_back({{std::uint32_t(i), std::uint32_t(i)}, {1.0, 0.0}, clearance_});
+            }
+        }
+        for (const auto& [a, b] : edge_list_) {
+            if (dof[a] >= 0 || dof[b] >= 0) {
+                points.push_back({{a, b}, {0.5, 0.5}, 0.5 * clearance_});
+            }
+        }
+    }
+    const std::size_t np = points.size();
+    std::vector<Vec3> normal(np);
+    std::vector<double> dist(np);
+    auto point_of = [&](const ContactPoint& c, const std::vector<Vec3>& x) {
+        return add(scale(x[c.v[0]], c.w[0]), scale(x[c.v[1]], c.w[1]));
+    };
+    auto query_points = [&](const std::vector<Vec3>& x) {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, np, 512),
+                          [&](const tbb::blocked_range<std::size_t>& rg) {
+                              for (std::size_t k = rg.begin(); k != rg.end(); ++k) {
+                                  dist[k] = collider_->signed_distance(point_of(points[k], x),
+                                                                       &normal[k]);
+                              }
+                          });
+    };
+
+    std::vector<double> grad(3 * m);
+    // One term ½·C²/α with the gradients grads[k] of C at the vertices v[k].
+    auto term = [&](double C, double inv_alpha, const std::uint32_t* v, const Vec3* grads, int k,
+                    bool with_grad, bool hessian) {
+        for (int a = 0; a < k && with_grad; ++a) {
+            if (dof[v[a]] >= 0) {
+                double* g = &grad[3 * std::size_t(dof[v[a]])];
+                for (int r = 0; r < 3; ++r) {
+                    g[r] += inv_alpha * C * grads[a][r];
+                }
+            }
+        }
+        for (int a = 0; a < k && hessian; ++a) {
+            for (int b = 0; b < k; ++b) {
+                if (dof[v[a]] < 0 || dof[v[b]] < 0) {
+                    continue;
+                }
+                double* B = &blocks[block_index(v[a], v[b])];
+                for (int r = 0; r < 3; ++r) {
+                    for (int q = 0; q < 3; ++q) {
+                        B[3 * r + q] += inv_alpha * grads[a][r] * grads[b][q];
+                    }
+                }
+            }
+        }
+        return 0.5 * inv_alpha * C * C;
+    };
+    // E(x); with_grad fills grad, hessian the blocks (elastic part only), both query the body.
+    auto energy = [&](const std::vector<Vec3>& x, bool with_grad, bool hessian) {
+        if (with_grad) {
+            std::fill(grad.begin(), grad.end(), 0.0);
+        }
+        if (hessian) {
+            std::fill(blocks.begin(), blocks.end(), 0.0);
+        }
+        double e = 0;
+        for (const TriangleConstraint& c : tris_) {
+            Vec3 f[2] = {{0, 0, 0}, {0, 0, 0}};
+            for (int k = 0; k < 3; ++k) {
+                f[0] = add(f[0], scale(x[c.v[k]], c.c1[k]));
+                f[1] = add(f[1], scale(x[c.v[k]], c.c2[k]));
+            }
+            const double* coefs[2] = {c.c1, c.c2};
+            const double alphas[2] = {c.alpha_warp, c.alpha_weft};
+            const double len[2] = {norm(f[0]), norm(f[1])};
+            for (int d = 0; d < 2; ++d) {
+                if (alphas[d] < 0 || len[d] < 1e-12) {
+                    continue;
+                }
+                const Vec3 u = scale(f[d], 1 / len[d]);
+                const Vec3 g[3] = {scale(u, coefs[d][0]), scale(u, coefs[d][1]),
+                                   scale(u, coefs[d][2])};
+                e += term(len[d] - 1, 1 / alphas[d], c.v, g, 3, with_grad, hessian);
+                // Geometric stiffness of a stretched fibre, (C/α)·∇²C with ∇²C = c_k·c_l·(I −
+                // u·uᵀ)/|f|.
+                if (!hessian || len[d] <= 1) {
+                    continue;
+                }
+                const double sg = (len[d] - 1) / (alphas[d] * len[d]);
+                for (int a = 0; a < 3; ++a) {
+                    for (int b = 0; b < 3; ++b) {
+                        if (dof[c.v[a]] < 0 || dof[c.v[b]] < 0) {
+                            continue;
+                        }
+                        double* B = &blocks[block_index(c.v[a], c.v[b])];
+                        const double wt = sg * coefs[d][a] * coefs[d][b];
+                        for (int r = 0; r < 3; ++r) {
+                            for (int q = 0; q < 3; ++q) {
+                                B[3 * r + q] += wt * ((r == q ? 1.0 : 0.0) - u[r] * u[q]);
+                            }
+                        }
+                    }
+                }
+            }
+            if (c.alpha_shear >= 0 && len[0] > 1e-12 && len[1] > 1e-12) {
+                const Vec3 u1 = scale(f[0], 1 / len[0]), u2 = scale(f[1], 1 / len[1]);
+                const double C = dot(u1, u2);
+                const Vec3 d1 = scale(sub(u2, scale(u1, C)), 1 / len[0]);
+                const Vec3 d2 = scale(sub(u1, scale(u2, C)), 1 / len[1]);
+                Vec3 g[3];
+                for (int k = 0; k < 3; ++k) {
+                    g[k] = add(scale(d1, c.c1[k]), scale(d2, c.c2[k]));
+                }
+                e += term(C, 1 / c.alpha_shear, c.v, g, 3, with_grad, hessian);
+            }
+        }
+        for (const BendConstraint& c : bends_) {
+            const Vec3 &x1 = x[c.v[0]], &x2 = x[c.v[1]], &x3 = x[c.v[2]], &x4 = x[c.v[3]];
+            const Vec3 edge = sub(x4, x3);
+            const double el = norm(edge);
+            const Vec3 n1 = cross(sub(x1, x3), sub(x1, x4)), n2 = cross(sub(x2, x4), sub(x2, x3));
+            const double n1l2 = dot(n1, n1), n2l2 = dot(n2, n2);
+            if (el < 1e-12 || n1l2 < 1e-24 || n2l2 < 1e-24 || !(c.alpha > 0)) {
+                continue;
+            }
+            // The dihedral angle and its gradients as in project_bend().
+            const Vec3 ee = scale(edge, 1 / el);
+            const Vec3 m1 = scale(n1, 1 / std::sqrt(n1l2)), m2 = scale(n2, 1 / std::sqrt(n2l2));
+            const double theta = std::atan2(dot(cross(m2, m1), ee), dot(m1, m2));
+            const Vec3 a1 = scale(n1, 1 / n1l2), a2 = scale(n2, 1 / n2l2);
+            Vec3 g[4];
+            g[0] = scale(a1, el);
+            g[1] = scale(a2, el);
+            g[2] = add(scale(a1, dot(sub(x1, x4), ee)), scale(a2, dot(sub(x2, x4), ee)));
+            g[3] = scale(add(scale(a1, dot(sub(x1, x3), ee)), scale(a2, dot(sub(x2, x3), ee))), -1);
+            e += term(theta, 1 / c.alpha, c.v, g, 4, with_grad, hessian);
+        }
+        for (std::size_t k = 0; k < stitches_.size(); ++k) {
+            const Stitch& st = stitches_[k];
+            const std::uint32_t v[2] = {st.a, st.b};
+            const double inv_alpha = 1 / alpha_or_hard(stitch_alpha_[k]);
+            const Vec3 d = sub(x[st.a], x[st.b]);
+            if (st.rest_mm == 0) {  // ½·|d|²/α: one term per axis
+                for (int r = 0; r < 3; ++r) {
+                    Vec3 g[2] = {{0, 0, 0}, {0, 0, 0}};
+                    g[0][r] = 1;
+                    g[1][r] = -1;
+                    e += term(d[r], inv_alpha, v, g, 2, with_grad, hessian);
+                }
+            } else if (norm(d) > 1e-12) {
+                const Vec3 u = scale(d, 1 / norm(d));
+                const Vec3 g[2] = {u, scale(u, -1)};
+                e += term(norm(d) - st.rest_mm, inv_alpha, v, g, 2, with_grad, hessian);
+            }
+        }
+        for (std::size_t k = 0; k < attachments_.size(); ++k) {
+            const Attachment& at = attachments_[k];
+            const double inv_alpha = 1 / alpha_or_hard(attachment_alpha_[k]);
+            for (int r = 0; r < 3; ++r) {
+                Vec3 g{0, 0, 0};
+                g[r] = 1;
+                e += term(x[at.vertex][r] - at.target[r], inv_alpha, &at.vertex, &g, 1, with_grad,
+                          hessian);
+            }
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            if (dof[i] < 0) {
+                continue;
+            }
+            e -= mass_[i] * dot(options_.gravity, x[i]);
+            for (int r = 0; r < 3 && with_grad; ++r) {
+                grad[3 * std::size_t(dof[i]) + std::size_t(r)] -= mass_[i] * options_.gravity[r];
+            }
+        }
+        if (np > 0) {
+            query_points(x);
+        }
+        for (std::size_t k = 0; k < np; ++k) {
+            const double pen = points[k].clearance - dist[k];
+            if (!(pen > 0)) {
+                continue;
+            }
+            e += 0.5 * kc * pen * pen;
+            for (int a = 0; a < 2 && with_grad; ++a) {
+                const std::int64_t d = dof[points[k].v[a]];
+                if (d >= 0 && points[k].w[a] > 0) {
+                    for (int r = 0; r < 3; ++r) {
+                        grad[3 * std::size_t(d) + std::size_t(r)] -=
+                            kc * pen * points[k].w[a] * normal[k][r];
+                    }
+                }
+            }
+        }
+        return e;
+    };
+    // Puts the contact points of x that are inside their clearance back onto it (vertices, then
+    // midpoints by moving both ends; a few rounds, the distance being a grid's).
+    auto push_out = [&](std::vector<Vec3>& x) {
+        for (int round = 0; round < 3; ++round) {
+            query_points(x);
+            bool any = false;
+            for (std::size_t k = 0; k < np; ++k) {
+                const double pen = points[k].clearance - dist[k];
+                if (!(pen > 0)) {
+                    continue;
+                }
+                any = true;
+                for (int a = 0; a < 2; ++a) {
+                    const std::uint32_t v = points[k].v[a];
+                    if (dof[v] >= 0 && points[k].w[a] > 0 && (a == 0 || v != points[k].v[0])) {
+                        x[v] = add(x[v], scale(normal[k], pen));
+                    }
+                }
+            }
+            if (!any) {
+                break;
+            }
+        }
+    };
+
+    std::vector<Vec3> x = x_, trial(n);
+    using SpMat = Eigen::SparseMatrix<double>;
+    const Eigen::Index dim = Eigen::Index(3 * m);
+    std::vector<Eigen::Triplet<double>> trip;
+    trip.reserve(9 * cols.size());
+    SpMat K(dim, dim);
+    Eigen::CholmodSupernodalLLT<SpMat> llt;
+    bool analysed = false;
+    double h = ro.initial_step_seconds;
+    double trust = 1;  // mm: the largest vertex move of a step; grows while whole steps succeed
+    double e = energy(x, true, true);
+    rep.energy_before_j = e * 1e-6;
+    std::vector<std::uint8_t> held(np, 0);
+    Eigen::VectorXd rhs(dim), step(dim);
+    for (int it = 0; it < ro.max_iterations; ++it) {
+        rep.iterations = it + 1;
+        const double inv_h2 = 1 / (h * h);
+        // Active set, updated once per iteration: every point inside its clearance, and those the
+        // last solve took into the body or did not pull off it while they are still within a
+        // tenth of their clearance of it.
+        for (std::size_t k = 0; k < np; ++k) {
+            held[k] =
+                (held[k] && dist[k] < 1.1 * points[k].clearance) || dist[k] < points[k].clearance;
+        }
+        bool solved = false;
+        {
+            // The system: elastic blocks, M/h², and for every held point the linearised contact
+            // n·Δ = c − d as a stiff spring ½·k_c·(n·Δ − (c − d))².
+            system = blocks;
+            for (std::size_t i = 0; i < n; ++i) {
+                if (dof[i] >= 0) {
+                    double* B = &system[block_index(std::uint32_t(i), std::uint32_t(i))];
+                    for (int r = 0; r < 3; ++r) {
+                        B[4 * r] += mass_[i] * inv_h2;
+                    }
+                }
+            }
+            for (Eigen::Index k = 0; k < dim; ++k) {
+                rhs[k] = -grad[std::size_t(k)];
+            }
+            for (std::size_t k = 0; k < np; ++k) {
+                if (!held[k]) {
+                    continue;
+                }
+                const ContactPoint& c = points[k];
+                const double pen = c.clearance - dist[k];
+                const int ends = c.v[0] == c.v[1] ? 1 : 2;
+                for (int a = 0; a < ends; ++a) {
+                    if (dof[c.v[a]] < 0) {
+                        continue;
+                    }
+                    // E's own penalty already pushes a point inside its clearance out.
+                    if (pen < 0) {
+                        for (int r = 0; r < 3; ++r) {
+                            rhs[Eigen::Index(3 * dof[c.v[a]] + r)] +=
+                                kc * pen * c.w[a] * normal[k][r];
+                        }
+                    }
+                    for (int b = 0; b < ends; ++b) {
+                        if (dof[c.v[b]] < 0) {
+                            continue;
+                        }
+                        double* B = &system[block_index(c.v[a], c.v[b])];
+                        const double wt = kc * c.w[a] * c.w[b];
+                        for (int r = 0; r < 3; ++r) {
+                            for (int q = 0; q < 3; ++q) {
+                                B[3 * r + q] += wt * normal[k][r] * normal[k][q];
+                            }
+                        }
+                    }
+                }
+            }
+            trip.clear();
+            for (std::size_t r = 0; r < m; ++r) {
+                for (std::size_t j = row_start[r]; j < row_start[r + 1]; ++j) {
+                    const std::size_t c = std::size_t(dof[cols[j]]);
+                    for (int a = 0; a < 3; ++a) {
+                        for (int b = 0; b < 3; ++b) {
+                            trip.emplace_back(Eigen::Index(3 * r + std::size_t(a)),
+                                              Eigen::Index(3 * c + std::size_t(b)),
+                                              system[9 * j + std::size_t(3 * a + b)]);
+                        }
+                    }
+                }
+            }
+            K.setFromTriplets(trip.begin(), trip.end());
+            if (!analysed) {
+                llt.analyzePattern(K);
+                analysed = true;
+            }
+            llt.factorize(K);
+            solved = llt.info() == Eigen::Success;
+            if (solved) {
+                step = llt.solve(rhs);
+            }
+            // Release the held points the solution pulls off the body; hold the free ones it
+            // takes into it (from the next iteration on). In the second half of the iterations
+            // points are only added: the set stops changing and Newton converges (a point the
+            // cloth would lift off by then stays on the body).
+            const bool may_release = 2 * it < ro.max_iterations;
+            for (std::size_t k = 0; k < np && solved; ++k) {
+                double out = 0;
+                for (int a = 0; a < 2; ++a) {
+                    const std::int64_t d = dof[points[k].v[a]];
+                    if (d >= 0 && points[k].w[a] > 0) {
+                        for (int r = 0; r < 3; ++r) {
+                            out += points[k].w[a] * normal[k][r] * step[Eigen::Index(3 * d + r)];
+                        }
+                    }
+                }
+                const double pen = points[k].clearance - dist[k];
+                if (may_release && held[k] && out > pen + 1e-6 && pen <= 0) {
+                    held[k] = 0;
+                } else if (!held[k] && out < pen - 1e-6) {
+                    held[k] = 1;
+                }
+            }
+        }
+        if (!solved) {
+            h *= 0.25;
+            if (h < 1e-9) {
+                break;
+            }
+            continue;
+        }
+        double longest = 0;
+        for (std::size_t r = 0; r < m; ++r) {
+            longest = std::max(longest, step.segment<3>(Eigen::Index(3 * r)).norm());
+        }
+        const bool limited = longest > trust;
+        if (limited) {
+            step *= trust / longest;
+        }
+        bool accepted = false;
+        double t = 1;
+        for (int ls = 0; ls < 8; ++ls, t *= 0.5) {
+            for (std::size_t i = 0; i < n; ++i) {
+                trial[i] = x[i];
+                if (dof[i] >= 0) {
+                    const Eigen::Index k = Eigen::Index(3 * dof[i]);
+                    trial[i] = {x[i][0] + t * step[k], x[i][1] + t * step[k + 1],
+                                x[i][2] + t * step[k + 2]};
+                }
+            }
+            if (np > 0) {
+                push_out(trial);
+            }
+            const double e_new = energy(trial, false, false);
+            if (std::isfinite(e_new) && e_new < e) {
+                accepted = true;
+                break;
+            }
+        }
+        if (!accepted) {
+            h *= 0.25;
+            trust *= 0.25;
+            energy(x, true, true);  // the distances and normals of x again
+            if (h < 1e-9) {
+                break;
+            }
+            continue;
+        }
+        double max_move = 0;
+        std::size_t moving = 0;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double d = norm(sub(trial[i], x[i]));
+            max_move = std::max(max_move, d);
+            moving += d > 0.3 ? 1 : 0;
+        }
+        x.swap(trial);
+        e = energy(x, true, true);
+        rep.last_max_move_mm = max_move;
+        rep.moving_fraction = double(moving) / double(n);
+        h = std::min(2 * h, 10.0);
+        if (t == 1) {
+            trust = limited ? std::min(2 * trust, 50.0) : std::max(trust, 2 * longest);
+        }
+        // Converged: a whole Newton step (cut neither by the trust radius nor by the line
+        // search) that moved no vertex more than the tolerance.
+        if (t == 1 && !limited && max_move < ro.tolerance_mm) {
+            rep.converged = true;
+            break;
+        }
+    }
+    // Self-check: the net force left on each free vertex against its weight. The body's reaction
+    // balances a push into it at a vertex that rests on it: that part is not a residual.
+    std::vector<Vec3> force(n, Vec3{0, 0, 0});
+    for (std::size_t i = 0; i < n; ++i) {
+        if (dof[i] >= 0) {
+            const double* g = &grad[3 * std::size_t(dof[i])];
+            force[i] = {-g[0], -g[1], -g[2]};
+        }
+    }
+    for (std::size_t k = 0; k < np; ++k) {
+        if (dist[k] > 1.01 * points[k].clearance) {
+            continue;
+        }
+        ++rep.contacts;
+        for (int a = 0; a < 2; ++a) {
+            const std::uint32_t v = points[k].v[a];
+            if (dof[v] < 0 || points[k].w[a] == 0) {
+                continue;
+            }
+            const double into = dot(force[v], normal[k]);
+            if (into < 0) {
+                force[v] = sub(force[v], scale(normal[k], into));
+            }
+        }
+    }
+    const double gmag = norm(options_.gravity);
+    Vec3 total{0, 0, 0};
+    double weight = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (dof[i] < 0) {
+            continue;
+        }
+        total = add(total, force[i]);
+        weight += mass_[i] * gmag;
+        if (gmag > 0) {
+            rep.max_residual_of_weight =
+                std::max(rep.max_residual_of_weight, norm(force[i]) / (mass_[i] * gmag));
+        }
+    }
+    rep.total_residual_of_weight = weight > 0 ? norm(total) / weight : 0;
+    rep.energy_after_j = e * 1e-6;
+    x_ = x;
+    p_ = x;
+    std::fill(v_.begin(), v_.end(), Vec3{0, 0, 0});
+    return finish();
 }
 
 }  // namespace tapeline::garment

@@ -113,6 +113,36 @@ struct ClothModel {
     std::vector<std::uint8_t> pinned;        ///< per vertex (empty: none); pinned stay put
 };
 
+/// How DrapeSolver::relax() looks for the static equilibrium.
+struct RelaxOptions {
+    int max_iterations = 30;  ///< Newton iterations at most (>= 1)
+    /// It has converged when a whole Newton step moved no vertex more than this, mm (> 0).
+    double tolerance_mm = 0.1;
+    /// Damping of the first iteration: the proximal term M/h² with this h, s (> 0). It doubles
+    /// after every step that lowered the energy and is divided by four after one that did not.
+    double initial_step_seconds = 1.0 / 30;
+};
+
+/// What relax() did.
+struct RelaxReport {
+    int iterations = 0;      ///< Newton iterations taken
+    bool converged = false;  ///< the last iteration moved no vertex more than the tolerance
+    /// Potential energy (stretch, shear, bending, stitches, attachments, gravity, contact
+    /// penalty) before and after, J.
+    ///@{
+    double energy_before_j = 0, energy_after_j = 0;
+    ///@}
+    double last_max_move_mm = 0;  ///< largest vertex move of the last iteration
+    double moving_fraction = 0;   ///< fraction of vertices that moved more than 0.3 mm in it
+    /// Largest net force left on a free vertex, as a fraction of that vertex's weight (the
+    /// equilibrium's self-check; the body's push is part of the balance).
+    double max_residual_of_weight = 0;
+    /// Net force left over the whole cloth, as a fraction of its weight.
+    double total_residual_of_weight = 0;
+    std::size_t contacts = 0;  ///< vertices pressed on the body at the end
+    double seconds = 0;        ///< wall time
+};
+
 /// What one step() did.
 struct StepReport {
     std::size_t frame = 0;           ///< frames done so far

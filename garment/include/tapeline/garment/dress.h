@@ -376,6 +376,16 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             }
         }
         simulated += double(drape.positions().empty() ? 0 : last.frame) * frame;
+        if (o.relax && !placement_only) {
+            Progress progress("dress: static solve");
+            rep.relax = drape.relax(o.relax_options);
+            progress.note(std::to_string(rep.relax.iterations) + " iterations, last move " +
+                          std::to_string(rep.relax.last_max_move_mm).substr(0, 6) + " mm");
+            progress.finish();
+            // The garment ends where the static solve left it: the static gate takes its last
+            // iteration's moves (a further frame of the sub-stepped solver would sag it again).
+            last.moving_fraction = rep.relax.moving_fraction;
+        }
         out.draped.resize(cloth.positions.size());
         for (std::size_t v = 0; v < cloth.positions.size(); ++v) {
             out.draped[v] = drape.positions()[pre.weld_map[v]];

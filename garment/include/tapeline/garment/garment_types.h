@@ -82,7 +82,12 @@ struct DressOptions {
     /// The fabric of every piece.
     FabricParams fabric;
     std::vector<std::string> without_pieces;  ///< pieces left out (with their seams), by name
-    double sdf_cell_mm = 5;                   ///< cell of the body's signed-distance grid
+    /// After the drape, solve for the static equilibrium (DrapeSolver::relax): the sub-stepped
+    /// solver leaves cloth hanging from the shoulders stretched by its few constraint passes,
+    /// the direct solve takes it to the fabric's own stretch.
+    bool relax = true;
+    RelaxOptions relax_options;  ///< how
+    double sdf_cell_mm = 5;      ///< cell of the body's signed-distance grid
 };
 
 /// Sewing quality of one seam at the end of the drape.
@@ -197,6 +202,8 @@ struct DressReport {
     ///@}
     /// DrapeOptions::threads as given (0: all cores).
     int threads = 0;
+    /// The static solve after the drape (DressOptions::relax; iterations 0 when it did not run).
+    RelaxReport relax;
 };
 
 /// A triangle mesh with per-corner pattern coordinates (the welded garment).
