@@ -1387,8 +1387,11 @@ inline void DrapeSolver::solve_self_contacts() {
 // stretched fibres (what holds hanging cloth against swinging sideways; its negative part under
 // compression is left out), the proximal term M/h² (Levenberg–Marquardt: h doubles after a
 // step that lowered E, is divided by four after one that did not) and, for every contact point
-// near the body, a stiff hold of its distance from it (an active set: a point the step pulls
-// away is released at the next iteration). The step is bounded by a trust radius on the largest
+// near the body, a stiff hold of its distance from it (an active set updated once per iteration:
+// a point the step pulls away is released, one it takes into the body held; in the second half
+// of the iterations points are only added). From the first third of the iterations on, Coulomb
+// friction holds the vertices resting on the body (anchored tangential springs that slip at μ
+// times the normal force). The step is bounded by a trust radius on the largest
 // vertex move, then shortened until E falls; points a trial step takes into the body are put
 // back at their clearance. The sparse system (three unknowns per free vertex) is factored by
 // CHOLMOD's supernodal Cholesky, its pattern analysed once. Hard stitches and attachments
@@ -1396,8 +1399,8 @@ inline void DrapeSolver::solve_self_contacts() {
 // vertex motion).
 // Why: with one constraint pass per sub-step XPBD leaves cloth hanging from a support stretched
 // by about g·h²·N (see the header), far more than its fabric; a direct solve has no such limit,
-// so the drape ends at the fabric's own stretch. Left out: cloth–cloth contact and friction (the
-// quality gates on self-intersections and the top drop judge what that leaves out). Serial,
+// so the drape ends at the fabric's own stretch. Left out: cloth–cloth contact (the quality gate
+// on self-intersections judges what that leaves out). Serial,
 // apart from independent distance queries: the same result for any thread count.
 inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     using namespace tapeline::vec3;
@@ -1535,6 +1538,21 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     };
 
     std::vector<double> grad(3 * m);
+    // Coulomb friction at the vertices resting on the body (the fabric's coefficient μ): a
+    // tangential spring of stiffness 10·k_ref to an anchor, which slips when the spring's force
+    // exceeds μ times the normal force (a return mapping after each step). It acts from the
+    // first third of the iterations on: before, the cloth slides to give up the stretch that
+    // the sub-stepped drape left at the contacts (anchors set at once would keep it).
+    bool friction = false;
+    const double kt = 10 * k_ref;
+    std::vector<Vec3> anchor(n);
+    std::vector<std::uint8_t> anchored(n, 0);
+    std::vector<std::size_t> vertex_point(n, std::size_t(-1));
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (points[k].v[0] == points[k].v[1]) {
+            vertex_point[points[k].v[0]] = k;
+        }
+    }
     // One term ½·C²/α with the gradients grads[k] of C at the vertices v[k].
     auto term = [&](double C, double inv_alpha, const std::uint32_t* v, const Vec3* grads, int k,
                     bool with_grad, bool hessian) {
@@ -1697,7 +1715,65 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
                 }
             }
         }
+        for (std::size_t i = 0; i < n && friction; ++i) {
+            if (!anchored[i]) {
+                continue;
+            }
+            const Vec3& nn = normal[vertex_point[i]];
+            const Vec3 d = sub(x[i], anchor[i]);
+            const Vec3 u = sub(d, scale(nn, dot(d, nn)));
+            e += 0.5 * kt * dot(u, u);
+            const std::size_t g = 3 * std::size_t(dof[i]);
+            for (int r = 0; r < 3 && with_grad; ++r) {
+                grad[g + std::size_t(r)] += kt * u[r];
+            }
+            if (hessian) {
+                double* B = &blocks[block_index(std::uint32_t(i), std::uint32_t(i))];
+                for (int r = 0; r < 3; ++r) {
+                    for (int q = 0; q < 3; ++q) {
+                        B[3 * r + q] += kt * ((r == q ? 1.0 : 0.0) - nn[r] * nn[q]);
+                    }
+                }
+            }
+        }
         return e;
+    };
+    // Anchors: vertices within a tenth of their clearance of the body get one (where they are),
+    // the others lose theirs; an anchor whose spring pulls harder than μ times the normal force
+    // (what the rest of the cloth presses the vertex onto the body with) slips to that limit.
+    auto update_anchors = [&](const std::vector<Vec3>& x) {
+        bool changed = false;
+        for (std::size_t i = 0; i < n && friction; ++i) {
+            if (dof[i] < 0) {
+                continue;
+            }
+            const std::size_t k = vertex_point[i];
+            const bool touching = dist[k] < 1.1 * points[k].clearance;
+            if (!touching) {
+                changed |= anchored[i] != 0;
+                anchored[i] = 0;
+                continue;
+            }
+            if (!anchored[i]) {
+                anchored[i] = 1;
+                anchor[i] = x[i];
+                changed = true;
+                continue;
+            }
+            const Vec3& nn = normal[k];
+            const double* g = &grad[3 * std::size_t(dof[i])];
+            const double pen = std::max(points[k].clearance - dist[k], 0.0);
+            const double fn = std::max(0.0, g[0] * nn[0] + g[1] * nn[1] + g[2] * nn[2] + kc * pen);
+            const Vec3 d = sub(x[i], anchor[i]);
+            const Vec3 u = sub(d, scale(nn, dot(d, nn)));
+            const double ft = kt * norm(u);
+            const double limit = fabric_.friction * fn;
+            if (ft > limit) {
+                anchor[i] = sub(x[i], scale(u, ft > 0 ? limit / ft : 0.0));
+                changed = true;
+            }
+        }
+        return changed;
     };
     // Puts the contact points of x that are inside their clearance back onto it (vertices, then
     // midpoints by moving both ends; a few rounds, the distance being a grid's).
@@ -1736,10 +1812,16 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     double trust = 1;  // mm: the largest vertex move of a step; grows while whole steps succeed
     double e = energy(x, true, true);
     rep.energy_before_j = e * 1e-6;
+    const int friction_from = ro.max_iterations / 3;
     std::vector<std::uint8_t> held(np, 0);
     Eigen::VectorXd rhs(dim), step(dim);
     for (int it = 0; it < ro.max_iterations; ++it) {
         rep.iterations = it + 1;
+        if (it == friction_from && collider_ && fabric_.friction > 0) {
+            friction = true;
+            update_anchors(x);
+            e = energy(x, true, true);
+        }
         const double inv_h2 = 1 / (h * h);
         // Active set, updated once per iteration: every point inside its clearance, and those the
         // last solve took into the body or did not pull off it while they are still within a
@@ -1895,6 +1977,9 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
         }
         x.swap(trial);
         e = energy(x, true, true);
+        if (update_anchors(x)) {
+            e = energy(x, true, true);
+        }
         rep.last_max_move_mm = max_move;
         rep.moving_fraction = double(moving) / double(n);
         h = std::min(2 * h, 10.0);
