@@ -53,6 +53,35 @@ ClothModel join(ClothModel a, const ClothModel& b) {
     return a;
 }
 
+// A strip of nx × ny cells along x, laid as a V of the given length between two supports `span`
+// apart (each half straight, so every triangle is at rest), its end columns pinned.
+ClothModel v_strip(double length, double span, double cell, int nx, int ny) {
+    ClothModel strip = cloth_grid(nx, ny, cell, {0, 0, -cell}, {1, 0, 0}, {0, 0, 1});
+    const double drop = std::sqrt((length / 2) * (length / 2) - (span / 2) * (span / 2));
+    for (Vec3& p : strip.positions) {
+        const double s = p[0];
+        const double along = s <= length / 2 ? s : length - s;
+        p[0] = s <= length / 2 ? along * span / length : span - along * span / length;
+        p[1] = -along * 2 * drop / length;
+    }
+    strip.pinned.assign(strip.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        strip.pinned[grid_vertex(nx, 0, j)] = 1;
+        strip.pinned[grid_vertex(nx, nx, j)] = 1;
+    }
+    return strip;
+}
+
+// The catenary's a from L = 2a·sinh(D/2a), by bisection (the right side decreases in a).
+double catenary_parameter(double length, double span) {
+    double lo = 1, hi = 1e5;
+    for (int k = 0; k < 200; ++k) {
+        const double a = 0.5 * (lo + hi);
+        (2 * a * std::sinh(span / (2 * a)) > length ? lo : hi) = a;
+    }
+    return 0.5 * (lo + hi);
+}
+
 // Free fall under symplectic Euler sub-steps: after N sub-steps of h from rest the drop is
 // g·h²·N(N+1)/2 = g·t²/2 + g·t·h/2 exactly (the O(h) term is the scheme's known bias). The cloth
 // is unstrained, so its constraints move nothing beyond rounding (1e-9 mm).
@@ -96,20 +125,7 @@ TEST(GarmentDrapeSolver, FreeFallMatchesTheDiscreteParabola) {
 TEST(GarmentDrapeSolver, HangingStripSettlesToTheCatenary) {
     const double length = 300, span = 200, cell = 10;
     const int nx = 30, ny = 2;
-    ClothModel strip = cloth_grid(nx, ny, cell, {0, 0, -cell}, {1, 0, 0}, {0, 0, 1});
-    // Start as a V of the right length: each half is straight, so every triangle is at rest.
-    const double drop = std::sqrt((length / 2) * (length / 2) - (span / 2) * (span / 2));
-    for (Vec3& p : strip.positions) {
-        const double s = p[0];
-        const double along = s <= length / 2 ? s : length - s;
-        p[0] = s <= length / 2 ? along * span / length : span - along * span / length;
-        p[1] = -along * 2 * drop / length;
-    }
-    strip.pinned.assign(strip.positions.size(), 0);
-    for (int j = 0; j <= ny; ++j) {
-        strip.pinned[grid_vertex(nx, 0, j)] = 1;
-        strip.pinned[grid_vertex(nx, nx, j)] = 1;
-    }
+    ClothModel strip = v_strip(length, span, cell, nx, ny);
     FabricParams fabric;
     fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 1e5;
     fabric.bending_un_m = 0;
@@ -123,13 +139,7 @@ TEST(GarmentDrapeSolver, HangingStripSettlesToTheCatenary) {
         report = solver.step();
     }
     EXPECT_LT(report.max_move_mm, 0.01);
-    // a from L = 2a·sinh(D/2a), by bisection (the right side decreases in a).
-    double lo = 1, hi = 1e5;
-    for (int k = 0; k < 200; ++k) {
-        const double a = 0.5 * (lo + hi);
-        (2 * a * std::sinh(span / (2 * a)) > length ? lo : hi) = a;
-    }
-    const double a = 0.5 * (lo + hi);
+    const double a = catenary_parameter(length, span);
     const double sag = a * (std::cosh(span / (2 * a)) - 1);
     double lowest = 0;
     for (int i = 0; i <= nx; ++i) {
@@ -522,19 +532,7 @@ TEST(GarmentDrapeSolver, RelaxedHangingSheetCarriesTheWeightBelowEachRow) {
 TEST(GarmentDrapeSolver, RelaxFromAVFindsTheCatenary) {
     const double length = 300, span = 200, cell = 10;
     const int nx = 30, ny = 2;
-    ClothModel strip = cloth_grid(nx, ny, cell, {0, 0, -cell}, {1, 0, 0}, {0, 0, 1});
-    const double drop = std::sqrt((length / 2) * (length / 2) - (span / 2) * (span / 2));
-    for (Vec3& p : strip.positions) {
-        const double s = p[0];
-        const double along = s <= length / 2 ? s : length - s;
-        p[0] = s <= length / 2 ? along * span / length : span - along * span / length;
-        p[1] = -along * 2 * drop / length;
-    }
-    strip.pinned.assign(strip.positions.size(), 0);
-    for (int j = 0; j <= ny; ++j) {
-        strip.pinned[grid_vertex(nx, 0, j)] = 1;
-        strip.pinned[grid_vertex(nx, nx, j)] = 1;
-    }
+    ClothModel strip = v_strip(length, span, cell, nx, ny);
     FabricParams fabric;
     fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 1e5;
     fabric.bending_un_m = 0;
@@ -548,12 +546,7 @@ TEST(GarmentDrapeSolver, RelaxFromAVFindsTheCatenary) {
     RecordProperty("iterations", std::to_string(rep.iterations));
     EXPECT_TRUE(rep.converged) << rep.iterations << " iterations, last move "
                                << rep.last_max_move_mm;
-    double lo = 1, hi = 1e5;
-    for (int k = 0; k < 200; ++k) {
-        const double a = 0.5 * (lo + hi);
-        (2 * a * std::sinh(span / (2 * a)) > length ? lo : hi) = a;
-    }
-    const double a = 0.5 * (lo + hi);
+    const double a = catenary_parameter(length, span);
     const double sag = a * (std::cosh(span / (2 * a)) - 1);
     double lowest = 0;
     for (int i = 0; i <= nx; ++i) {

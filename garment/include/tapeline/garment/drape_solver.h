@@ -285,6 +285,30 @@ inline std::array<double, 3> closest_barycentric(const Vec3& p, const Vec3& a, c
     return {1 - v - w, v, w};
 }
 
+// Dihedral angle of the hinge with wings x1, x2 across the edge (x3, x4), zero when flat, and its
+// gradients with respect to x1..x4 (Bridson, Marino, Fedkiw 2003); false when the hinge is
+// degenerate.
+inline bool dihedral(const Vec3& x1, const Vec3& x2, const Vec3& x3, const Vec3& x4, double& theta,
+                     Vec3 g[4]) {
+    using namespace tapeline::vec3;
+    const Vec3 edge = sub(x4, x3);
+    const double el = norm(edge);
+    const Vec3 n1 = cross(sub(x1, x3), sub(x1, x4)), n2 = cross(sub(x2, x4), sub(x2, x3));
+    const double n1l2 = dot(n1, n1), n2l2 = dot(n2, n2);
+    if (el < 1e-12 || n1l2 < 1e-24 || n2l2 < 1e-24) {
+        return false;
+    }
+    const Vec3 ee = scale(edge, 1 / el);
+    const Vec3 m1 = scale(n1, 1 / std::sqrt(n1l2)), m2 = scale(n2, 1 / std::sqrt(n2l2));
+    theta = std::atan2(dot(cross(m2, m1), ee), dot(m1, m2));
+    const Vec3 a1 = scale(n1, 1 / n1l2), a2 = scale(n2, 1 / n2l2);
+    g[0] = scale(a1, el);
+    g[1] = scale(a2, el);
+    g[2] = add(scale(a1, dot(sub(x1, x4), ee)), scale(a2, dot(sub(x2, x4), ee)));
+    g[3] = scale(add(scale(a1, dot(sub(x1, x3), ee)), scale(a2, dot(sub(x2, x3), ee))), -1);
+    return true;
+}
+
 }  // namespace internal
 
 inline DrapeSolver::DrapeSolver(ClothModel cloth, FabricParams fabric, DrapeOptions options,
@@ -1074,23 +1098,11 @@ inline void DrapeSolver::project_bend(std::size_t e, double h) {
     if (w[0] + w[1] + w[2] + w[3] == 0) {
         return;
     }
-    const Vec3 edge = sub(x4, x3);
-    const double el = norm(edge);
-    const Vec3 n1 = cross(sub(x1, x3), sub(x1, x4)), n2 = cross(sub(x2, x4), sub(x2, x3));
-    const double n1l2 = dot(n1, n1), n2l2 = dot(n2, n2);
-    if (el < 1e-12 || n1l2 < 1e-24 || n2l2 < 1e-24) {
+    double theta;
+    Vec3 g[4];
+    if (!internal::dihedral(x1, x2, x3, x4, theta, g)) {
         return;
     }
-    const Vec3 ee = scale(edge, 1 / el);
-    // Dihedral angle, zero when flat; gradients of Bridson et al. 2003.
-    const Vec3 m1 = scale(n1, 1 / std::sqrt(n1l2)), m2 = scale(n2, 1 / std::sqrt(n2l2));
-    const double theta = std::atan2(dot(cross(m2, m1), ee), dot(m1, m2));
-    const Vec3 a1 = scale(n1, 1 / n1l2), a2 = scale(n2, 1 / n2l2);
-    Vec3 g[4];
-    g[0] = scale(a1, el);
-    g[1] = scale(a2, el);
-    g[2] = add(scale(a1, dot(sub(x1, x4), ee)), scale(a2, dot(sub(x2, x4), ee)));
-    g[3] = scale(add(scale(a1, dot(sub(x1, x3), ee)), scale(a2, dot(sub(x2, x3), ee))), -1);
     double denom = c.alpha / (h * h);
     for (int k = 0; k < 4; ++k) {
         denom += w[k] * dot(g[k], g[k]);
@@ -1639,24 +1651,12 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
             }
         }
         for (const BendConstraint& c : bends_) {
-            const Vec3 &x1 = x[c.v[0]], &x2 = x[c.v[1]], &x3 = x[c.v[2]], &x4 = x[c.v[3]];
-            const Vec3 edge = sub(x4, x3);
-            const double el = norm(edge);
-            const Vec3 n1 = cross(sub(x1, x3), sub(x1, x4)), n2 = cross(sub(x2, x4), sub(x2, x3));
-            const double n1l2 = dot(n1, n1), n2l2 = dot(n2, n2);
-            if (el < 1e-12 || n1l2 < 1e-24 || n2l2 < 1e-24 || !(c.alpha > 0)) {
+            double theta;
+            Vec3 g[4];
+            if (!(c.alpha > 0) ||
+                !internal::dihedral(x[c.v[0]], x[c.v[1]], x[c.v[2]], x[c.v[3]], theta, g)) {
                 continue;
             }
-            // The dihedral angle and its gradients as in project_bend().
-            const Vec3 ee = scale(edge, 1 / el);
-            const Vec3 m1 = scale(n1, 1 / std::sqrt(n1l2)), m2 = scale(n2, 1 / std::sqrt(n2l2));
-            const double theta = std::atan2(dot(cross(m2, m1), ee), dot(m1, m2));
-            const Vec3 a1 = scale(n1, 1 / n1l2), a2 = scale(n2, 1 / n2l2);
-            Vec3 g[4];
-            g[0] = scale(a1, el);
-            g[1] = scale(a2, el);
-            g[2] = add(scale(a1, dot(sub(x1, x4), ee)), scale(a2, dot(sub(x2, x4), ee)));
-            g[3] = scale(add(scale(a1, dot(sub(x1, x3), ee)), scale(a2, dot(sub(x2, x3), ee))), -1);
             e += term(theta, 1 / c.alpha, c.v, g, 4, with_grad, hessian);
         }
         for (std::size_t k = 0; k < stitches_.size(); ++k) {
