@@ -394,7 +394,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     rep.drape_seconds = internal::seconds_since(t0);
     rep.frames = frames;
     rep.simulated_seconds = simulated;
-    rep.ms_per_step_per_10k = rep.drape_seconds * 1000.0 /
+    // Per solver frame: the static solve's time is not a frame's.
+    rep.ms_per_step_per_10k = (rep.drape_seconds - rep.relax.seconds) * 1000.0 /
                               double(std::max<std::size_t>(frames, 1)) * 10000.0 /
                               double(std::max<std::size_t>(cloth.positions.size(), 1));
     // --- seam gaps, welding
