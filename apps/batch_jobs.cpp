@@ -53,7 +53,8 @@ const std::map<std::string, Json::value_t> kOptionKeys = {
     {"substeps", Json::value_t::number_unsigned},   {"threads", Json::value_t::number_unsigned},
     {"self_collision", Json::value_t::boolean},     {"without", Json::value_t::array},
     {"seed", Json::value_t::number_unsigned},       {"population", Json::value_t::number_unsigned},
-    {"generations", Json::value_t::number_unsigned}};
+    {"generations", Json::value_t::number_unsigned}, {"relax", Json::value_t::boolean},
+    {"relax_iterations", Json::value_t::number_unsigned}};
 
 std::string names_of(const std::set<std::string>& s) {
     std::string out;
@@ -436,6 +437,12 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
         }
         if (o.contains("self_collision")) {
             d.drape.self_collision = o["self_collision"].get<bool>();
+        }
+        if (o.contains("relax")) {
+            d.relax = o["relax"].get<bool>();
+        }
+        if (o.contains("relax_iterations")) {
+            d.relax_options.max_iterations = o["relax_iterations"].get<int>();
         }
         if (o.contains("without")) {
             d.without_pieces = o["without"].get<std::vector<std::string>>();

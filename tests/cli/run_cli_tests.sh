@@ -1181,10 +1181,10 @@ expect_ok "batch: --resume on a folder without a batch" "$bin" batch one.jsonl -
 if [ -s fresh/jobs/m/measure.json ]; then ok "batch: --resume on a new folder starts the batch"
 else fail "batch: --resume on a new folder"; fi
 
-# Six dressing jobs (placement only, one thread each): uninterrupted, killed and resumed, over MPI.
+# Six dressing jobs (a tenth of a second of sewing, no static solve, one thread each): uninterrupted, killed and resumed, over MPI.
 : >six.jsonl
 for k in 1 2 3 4 5 6; do
-  printf '{"id": "d%s", "body": "%s", "units": "dm", "pattern": "%s", "steps": ["dress"], "options": {"resolution_mm": %s, "sew_seconds": 0.1, "settle_seconds": 0, "without": ["aaron.armBinding", "aaron.neckBinding"], "threads": 1}}\n' \
+  printf '{"id": "d%s", "body": "%s", "units": "dm", "pattern": "%s", "steps": ["dress"], "options": {"resolution_mm": %s, "sew_seconds": 0.1, "settle_seconds": 0, "relax": false, "without": ["aaron.armBinding", "aaron.neckBinding"], "threads": 1}}\n' \
     $k "$body" "$fs" $((26 + k)) >>six.jsonl
 done
 same_outputs() {  # same_outputs DIR: every job's files equal those of the uninterrupted run
@@ -1213,6 +1213,8 @@ import json, struct
 s = json.load(open("full/summary.json"))
 assert s["run"]["jobs_run"] == 6 and s["run"]["ranks"] == 1, s["run"]
 assert all(j["outcome"]["dress"]["garment_vertices"] > 0 for j in s["jobs"]), s["jobs"]
+d1 = json.load(open("full/jobs/d1/dress.json"))  # "relax": false reached the dressing
+assert d1["options"]["static_solve"] is False and not d1["simulation"]["static_solve"]["ran"], d1
 sheet = open("full/contact_sheet.png", "rb").read()
 assert sheet[:8] == bytes([0x89]) + b"PNG" + bytes([13, 10, 26, 10])
 w, h = struct.unpack(">II", sheet[16:24])
