@@ -48,12 +48,18 @@ const std::set<std::string> kKeys = {"id",    "body",     "bodies",  "units",   
                                      "from",  "from_set", "fabric",  "steps",    "options"};
 /// Options of a job and the JSON type each takes.
 const std::map<std::string, Json::value_t> kOptionKeys = {
-    {"resolution_mm", Json::value_t::number_float}, {"gap_mm", Json::value_t::number_float},
-    {"sew_seconds", Json::value_t::number_float},   {"settle_seconds", Json::value_t::number_float},
-    {"substeps", Json::value_t::number_unsigned},   {"threads", Json::value_t::number_unsigned},
-    {"self_collision", Json::value_t::boolean},     {"without", Json::value_t::array},
-    {"seed", Json::value_t::number_unsigned},       {"population", Json::value_t::number_unsigned},
-    {"generations", Json::value_t::number_unsigned}, {"relax", Json::value_t::boolean},
+    {"resolution_mm", Json::value_t::number_float},
+    {"gap_mm", Json::value_t::number_float},
+    {"sew_seconds", Json::value_t::number_float},
+    {"settle_seconds", Json::value_t::number_float},
+    {"substeps", Json::value_t::number_unsigned},
+    {"threads", Json::value_t::number_unsigned},
+    {"self_collision", Json::value_t::boolean},
+    {"without", Json::value_t::array},
+    {"seed", Json::value_t::number_unsigned},
+    {"population", Json::value_t::number_unsigned},
+    {"generations", Json::value_t::number_unsigned},
+    {"relax", Json::value_t::boolean},
     {"relax_iterations", Json::value_t::number_unsigned}};
 
 std::string names_of(const std::set<std::string>& s) {

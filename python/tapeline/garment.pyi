@@ -29,6 +29,7 @@ class DrapeOptions:
     damping_per_second: float
     body_clearance_mm: float
     self_collision: bool
+    edge_edge_collision: bool
     tether_stretch: float
     threads: int
     max_speed_mm_s: float

@@ -227,6 +227,65 @@ TEST(GarmentDrapeSolver, ThinCylinderAtFiveTimesTheFrameStepIsNotTunnelled) {
 }
 
 // Same run with 1 and 2 threads: every position bit-identical.
+// Two strips crossing at right angles, the lower one held, the upper one falling onto it. Their
+// vertices are placed so that none lies over the other strip: only edges meet, like an X, where
+// they cross. Vertex–triangle pairs alone let the upper strip fall through; with the edge–edge
+// pairs it rests on the lower one.
+TEST(GarmentDrapeSolver, EdgesCrossingLikeAnXDoNotPassThrough) {
+    // Lower: x from -90 to 90 (nodes at ±30, ±90), z from -20 to 20, held at y = 0.
+    ClothModel lower = cloth_grid(3, 1, 60, {-90, 0, -20}, {1, 0, 0}, {0, 0, 1});
+    for (Vec3& p : lower.positions) {
+        p[2] = p[2] < 0 ? p[2] : 20;  // the second row at z = 20 (cells 60 × 40)
+    }
+    for (auto& uv : lower.rest_uv) {
+        for (auto& c : uv) {
+            c[1] = c[1] > 0 ? 40 : 0;
+        }
+    }
+    // Upper: z from -90 to 90 (nodes at ±30, ±90), x from -20 to 20, 5 mm above.
+    ClothModel upper = cloth_grid(3, 1, 60, {-20, 5, -90}, {0, 0, 1}, {1, 0, 0});
+    for (Vec3& p : upper.positions) {
+        p[0] = p[0] < 0 ? p[0] : 20;
+    }
+    for (auto& uv : upper.rest_uv) {
+        for (auto& c : uv) {
+            c[1] = c[1] > 0 ? 40 : 0;
+        }
+    }
+    ClothModel both = join(lower, upper);
+    both.pinned.assign(both.positions.size(), 0);
+    for (std::size_t i = 0; i < lower.positions.size(); ++i) {
+        both.pinned[i] = 1;
+    }
+    const std::size_t offset = lower.positions.size();
+    for (std::size_t i = 0; i < both.positions.size(); ++i) {
+        const Vec3& p = both.positions[i];
+        const bool over_the_other =
+            i < offset ? std::abs(p[0]) < 20 : std::abs(p[2]) < 20;  // inside the other's span
+        ASSERT_FALSE(over_the_other) << "vertex " << i;
+    }
+    // The upper strip's four inner vertices (z = ±30), after a second.
+    auto lowest_inner = [&](bool edge_edge) {
+        DrapeOptions options;
+        options.edge_edge_collision = edge_edge;
+        DrapeSolver solver(both, FabricParams{}, options);
+        for (int f = 0; f < 30; ++f) {
+            solver.step();
+        }
+        double lowest = 1e9;
+        for (std::size_t i = offset; i < both.positions.size(); ++i) {
+            if (std::abs(both.positions[i][2]) < 40) {
+                lowest = std::min(lowest, solver.positions()[i][1]);
+            }
+        }
+        return lowest;
+    };
+    EXPECT_LT(lowest_inner(false), -1000);  // fell through (free fall: 4.9 m in a second)
+    const double thickness = FabricParams{}.thickness_mm;
+    EXPECT_GT(lowest_inner(true), 0.0);              // held above the lower strip...
+    EXPECT_LT(lowest_inner(true), 5.0 + thickness);  // ...and resting on it
+}
+
 TEST(GarmentDrapeSolver, BitIdenticalForAnyThreadCount) {
     const auto sphere = tapeline_test::uv_sphere({0, 0, 0}, 80, 48, 24);
     const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{5});

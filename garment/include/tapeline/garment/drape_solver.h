@@ -44,9 +44,9 @@
 // gradient, with Coulomb friction. Cloth–cloth: vertex–
 // triangle proximity within the thickness, detected once per sub-step through a spatial hash of
 // the predicted positions; the side is taken from the sub-step's start, so a vertex that crossed
-// a triangle within one sub-step is pushed back. Edge–edge pairs, continuous self-collision and
-// self-friction are not done (small sub-steps keep the misses rare). Edges against the body:
-// see contact_edges().
+// a triangle within one sub-step is pushed back. Edge–edge pairs on request
+// (DrapeOptions::edge_edge_collision; see detect_edge_edge_contacts()). Continuous
+// self-collision and self-friction are not done. Edges against the body: see contact_edges().
 //
 // Limit to know: with one constraint pass per sub-step a hard constraint acts like a spring of
 // stiffness m/h² (m the vertex mass), whatever the fabric's stiffness, so a chain of N elements
@@ -175,6 +175,11 @@ private:
         double b[3];
         Vec3 n;  // unit, pointing to the vertex's side
     };
+    struct EdgeEdgeContact {
+        std::uint32_t e, f;  // edge_list_ indices
+        double s, t;         // closest points: (1 − s)·a + s·b on e, (1 − t)·c + t·d on f
+        Vec3 n;              // unit, from f's point to e's point at the sub-step's start
+    };
     using Colouring = std::vector<std::vector<std::uint32_t>>;  // constraint ids per colour
 
     template <typename VertexOf>
@@ -188,7 +193,9 @@ private:
     bool contact_body(std::size_t i);
     void contact_edges();
     void detect_self_contacts();
+    void detect_edge_edge_contacts();
     void solve_self_contacts();
+    bool near_in_rest(std::uint32_t u, std::uint32_t v) const;
     void project_triangle(std::size_t t, double h);
     void project_bend(std::size_t e, double h);
     void project_stitch(std::size_t s, double h);
@@ -230,6 +237,9 @@ private:
     std::vector<std::vector<EdgeContact>> edge_blocks_;
     std::vector<SelfContact> self_contacts_;
     std::vector<std::vector<SelfContact>> self_blocks_;
+    std::vector<EdgeEdgeContact> edge_edge_contacts_;
+    std::vector<std::vector<EdgeEdgeContact>> edge_edge_blocks_;
+    std::vector<std::uint32_t> edge_hash_start_, edge_hash_edges_;
     std::vector<std::uint32_t> hash_start_, hash_vertices_;
     std::vector<std::array<std::int64_t, 3>> vertex_cell_;
     double hash_cell_ = 1;
@@ -243,6 +253,40 @@ namespace internal {
 
 inline bool finite3(const Vec3& p) {
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+}
+
+// Parameters (s, t) of the closest points p0 + s·(p1 − p0) and q0 + t·(q1 − q0) of two segments
+// (Ericson, "Real-Time Collision Detection", 5.1.9); degenerate segments are points.
+inline std::pair<double, double> closest_segment_params(const Vec3& p0, const Vec3& p1,
+                                                        const Vec3& q0, const Vec3& q1) {
+    using namespace tapeline::vec3;
+    const Vec3 d1 = sub(p1, p0), d2 = sub(q1, q0), r = sub(p0, q0);
+    const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+    const double eps = 1e-18;
+    if (a <= eps && e <= eps) {
+        return {0, 0};
+    }
+    double s = 0, t = 0;
+    if (a <= eps) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = dot(d1, r);
+        if (e <= eps) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = dot(d1, d2), denom = a * e - b * b;
+            s = denom > eps * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1) {
+                t = 1;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    return {s, t};
 }
 
 // Closest point of triangle (a, b, c) to p as barycentric coordinates (Ericson, "Real-Time
@@ -782,7 +826,7 @@ inline StepReport DrapeSolver::step() {
     report.simulated_seconds = frame_ * options_.frame_seconds;
     report.moving_fraction = static_cast<double>(moving) / static_cast<double>(n);
     report.kinetic_energy_j = ke * 1e-6;
-    report.self_contacts = self_contacts_.size();
+    report.self_contacts = self_contacts_.size() + edge_edge_contacts_.size();
     report.tether_anchors = tether_anchors_;
     report.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -817,8 +861,14 @@ inline void DrapeSolver::substep(double h, std::size_t frame_number) {
     }
     if (options_.self_collision) {
         detect_self_contacts();
+        if (options_.edge_edge_collision) {
+            detect_edge_edge_contacts();
+        } else {
+            edge_edge_contacts_.clear();
+        }
     } else {
         self_contacts_.clear();
+        edge_edge_contacts_.clear();
     }
     std::fill(lambda_tri_.begin(), lambda_tri_.end(), 0.0);
     std::fill(lambda_bend_.begin(), lambda_bend_.end(), 0.0);
@@ -1319,17 +1369,8 @@ inline void DrapeSolver::detect_self_contacts() {
                             }
                             // A neighbour of a corner, or a corner's stitch partner, touches the
                             // triangle by construction: that is not a collision.
-                            bool adjacent = false;
-                            for (int m = 0; m < 3 && !adjacent; ++m) {
-                                adjacent =
-                                    std::binary_search(
-                                        neighbours_.begin() + neighbour_start_[v],
-                                        neighbours_.begin() + neighbour_start_[v + 1], tv[m]) ||
-                                    (!stitch_pairs_.empty() &&
-                                     std::binary_search(stitch_pairs_.begin(), stitch_pairs_.end(),
-                                                        std::make_pair(v, tv[m])));
-                            }
-                            if (adjacent) {
+                            if (near_in_rest(v, tv[0]) || near_in_rest(v, tv[1]) ||
+                                near_in_rest(v, tv[2])) {
                                 continue;
                             }
                             const auto bary = internal::closest_barycentric(pv, a, b, c);
@@ -1363,6 +1404,159 @@ inline void DrapeSolver::detect_self_contacts() {
     }
 }
 
+// Whether u and v are one vertex, neighbours, or a stitch pair: cloth that touches by
+// construction.
+inline bool DrapeSolver::near_in_rest(std::uint32_t u, std::uint32_t v) const {
+    return u == v ||
+           std::binary_search(neighbours_.begin() + neighbour_start_[u],
+                              neighbours_.begin() + neighbour_start_[u + 1], v) ||
+           (!stitch_pairs_.empty() &&
+            std::binary_search(stitch_pairs_.begin(), stitch_pairs_.end(), std::make_pair(u, v)));
+}
+
+// Edge–edge proximity: two edges crossing like an X pass through each other without any vertex
+// coming near a triangle, which the vertex–triangle pairs cannot see when the edges are much
+// longer than the thickness. Broad phase: the predicted edge midpoints in a spatial hash whose
+// cell is the longest predicted edge (up to three times the mean rest edge; longer, wildly
+// stretched edges are left to the stretch constraints) plus the thickness, so two edges closer
+// than the thickness have their midpoints in neighbouring cells. Narrow phase: the closest points
+// of the two segments (Ericson 5.1.9); the pairs closer than the thickness are kept with the side
+// they were on at the sub-step's start. Pairs with ends that are neighbours or stitch partners
+// are left out, as for the vertex–triangle pairs.
+inline void DrapeSolver::detect_edge_edge_contacts() {
+    using namespace tapeline::vec3;
+    const std::size_t m = edge_list_.size();
+    const double thickness = fabric_.thickness_mm;
+    const double longest_kept = 1.5 * hash_cell_;
+    std::vector<Vec3> mid(m);
+    std::vector<std::uint8_t> kept(m);
+    for (std::size_t e = 0; e < m; ++e) {
+        const Vec3& pa = p_[edge_list_[e].first];
+        const Vec3& pb = p_[edge_list_[e].second];
+        const double len = norm(sub(pb, pa));
+        kept[e] = len <= longest_kept;
+        mid[e] = scale(add(pa, pb), 0.5);
+    }
+    const double inv_cell = 1 / (longest_kept + thickness);
+    std::size_t buckets = 1;
+    while (buckets < 2 * m) {
+        buckets <<= 1;
+    }
+    auto cell_of = [&](const Vec3& q) {
+        return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(q[0] * inv_cell)),
+                                           static_cast<std::int64_t>(std::floor(q[1] * inv_cell)),
+                                           static_cast<std::int64_t>(std::floor(q[2] * inv_cell))};
+    };
+    auto bucket_of = [&](const std::array<std::int64_t, 3>& c) {
+        const std::uint64_t hsh = static_cast<std::uint64_t>(c[0]) * 73856093u ^
+                                  static_cast<std::uint64_t>(c[1]) * 19349663u ^
+                                  static_cast<std::uint64_t>(c[2]) * 83492791u;
+        return static_cast<std::size_t>(hsh & (buckets - 1));
+    };
+    std::vector<std::array<std::int64_t, 3>> cell(m);
+    std::vector<std::uint32_t> bucket(m);
+    edge_hash_start_.assign(buckets + 1, 0);
+    for (std::size_t e = 0; e < m; ++e) {
+        if (kept[e]) {
+            cell[e] = cell_of(mid[e]);
+            bucket[e] = static_cast<std::uint32_t>(bucket_of(cell[e]));
+            ++edge_hash_start_[bucket[e] + 1];
+        }
+    }
+    for (std::size_t bk = 0; bk < buckets; ++bk) {
+        edge_hash_start_[bk + 1] += edge_hash_start_[bk];
+    }
+    edge_hash_edges_.resize(edge_hash_start_[buckets]);
+    {
+        std::vector<std::uint32_t> fill(edge_hash_start_.begin(), edge_hash_start_.end() - 1);
+        for (std::size_t e = 0; e < m; ++e) {
+            if (kept[e]) {
+                edge_hash_edges_[fill[bucket[e]]++] = static_cast<std::uint32_t>(e);
+            }
+        }
+    }
+    // A candidate pair: kept when closer than the thickness.
+    auto test = [&](std::size_t e, std::uint32_t f, std::vector<EdgeEdgeContact>& out) {
+        const auto [a, b] = edge_list_[e];
+        const auto [c, d] = edge_list_[f];
+        if (w_[a] + w_[b] + w_[c] + w_[d] == 0 || near_in_rest(a, c) || near_in_rest(a, d) ||
+            near_in_rest(b, c) || near_in_rest(b, d)) {
+            return;
+        }
+        const auto [se, tf] = internal::closest_segment_params(p_[a], p_[b], p_[c], p_[d]);
+        const Vec3 pe = add(scale(p_[a], 1 - se), scale(p_[b], se));
+        const Vec3 pf = add(scale(p_[c], 1 - tf), scale(p_[d], tf));
+        const Vec3 delta = sub(pe, pf);
+        if (dot(delta, delta) >= thickness * thickness) {
+            return;
+        }
+        // The side at the sub-step's start; when the points met there too, the normal of the
+        // two edges' plane, turned to the side now.
+        Vec3 n = sub(add(scale(x_[a], 1 - se), scale(x_[b], se)),
+                     add(scale(x_[c], 1 - tf), scale(x_[d], tf)));
+        double len = norm(n);
+        if (!(len > 1e-9)) {
+            n = cross(sub(p_[b], p_[a]), sub(p_[d], p_[c]));
+            len = norm(n);
+            if (!(len > 1e-12)) {
+                return;  // parallel edges on one line: left to the vertex–triangle pairs
+            }
+            if (dot(n, delta) < 0) {
+                len = -len;
+            }
+        }
+        out.push_back({static_cast<std::uint32_t>(e), f, se, tf, scale(n, 1 / len)});
+    };
+    const std::size_t block = 1024;
+    const std::size_t blocks = (m + block - 1) / block;
+    edge_edge_blocks_.resize(blocks);
+    tbb::parallel_for(std::size_t{0}, blocks, [&](std::size_t bl) {
+        std::vector<EdgeEdgeContact>& out = edge_edge_blocks_[bl];
+        out.clear();
+        const std::size_t end = std::min(m, (bl + 1) * block);
+        for (std::size_t e = bl * block; e < end; ++e) {
+            if (!kept[e]) {
+                continue;
+            }
+            const auto [a, b] = edge_list_[e];
+            Vec3 elo, ehi;
+            for (int k = 0; k < 3; ++k) {
+                elo[k] = std::min(p_[a][k], p_[b][k]) - thickness;
+                ehi[k] = std::max(p_[a][k], p_[b][k]) + thickness;
+            }
+            const auto& ce = cell[e];
+            for (std::int64_t i = ce[0] - 1; i <= ce[0] + 1; ++i) {
+                for (std::int64_t j = ce[1] - 1; j <= ce[1] + 1; ++j) {
+                    for (std::int64_t k = ce[2] - 1; k <= ce[2] + 1; ++k) {
+                        const std::array<std::int64_t, 3> c3{i, j, k};
+                        const std::size_t bk = bucket_of(c3);
+                        for (std::uint32_t q = edge_hash_start_[bk]; q < edge_hash_start_[bk + 1];
+                             ++q) {
+                            const std::uint32_t f = edge_hash_edges_[q];
+                            if (f <= e || cell[f] != c3) {
+                                continue;  // the pair's other visit, or a hash collision
+                            }
+                            const auto [c, d] = edge_list_[f];
+                            bool apart = false;
+                            for (int x = 0; x < 3 && !apart; ++x) {
+                                apart = std::max(p_[c][x], p_[d][x]) < elo[x] ||
+                                        std::min(p_[c][x], p_[d][x]) > ehi[x];
+                            }
+                            if (!apart) {
+                                test(e, f, out);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    });
+    edge_edge_contacts_.clear();
+    for (const auto& b : edge_edge_blocks_) {
+        edge_edge_contacts_.insert(edge_edge_contacts_.end(), b.begin(), b.end());
+    }
+}
+
 inline void DrapeSolver::solve_self_contacts() {
     using namespace tapeline::vec3;
     const double thickness = fabric_.thickness_mm;
@@ -1386,6 +1580,26 @@ inline void DrapeSolver::solve_self_contacts() {
         for (int k = 0; k < 3; ++k) {
             p_[tv[k]] = sub(p_[tv[k]], scale(sc.n, w_[tv[k]] * sc.b[k] * dl));
         }
+    }
+    for (const EdgeEdgeContact& ec : edge_edge_contacts_) {
+        const auto [a, b] = edge_list_[ec.e];
+        const auto [c, d] = edge_list_[ec.f];
+        const Vec3 pe = add(scale(p_[a], 1 - ec.s), scale(p_[b], ec.s));
+        const Vec3 pf = add(scale(p_[c], 1 - ec.t), scale(p_[d], ec.t));
+        const double C = dot(sub(pe, pf), ec.n) - thickness;
+        if (C >= 0) {
+            continue;
+        }
+        const double ka = 1 - ec.s, kb = ec.s, kc = 1 - ec.t, kd = ec.t;
+        const double denom = w_[a] * ka * ka + w_[b] * kb * kb + w_[c] * kc * kc + w_[d] * kd * kd;
+        if (!(denom > 0)) {
+            continue;
+        }
+        const double dl = -C / denom;
+        p_[a] = add(p_[a], scale(ec.n, w_[a] * ka * dl));
+        p_[b] = add(p_[b], scale(ec.n, w_[b] * kb * dl));
+        p_[c] = sub(p_[c], scale(ec.n, w_[c] * kc * dl));
+        p_[d] = sub(p_[d], scale(ec.n, w_[d] * kd * dl));
     }
 }
 

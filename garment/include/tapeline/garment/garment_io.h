@@ -122,6 +122,16 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
         crossings.push_back({std::lround(p[0]), std::lround(p[1]), std::lround(p[2])});
     }
     j["quality"]["body_crossings_canonical_mm"] = crossings;
+    nlohmann::ordered_json self_crossings = nlohmann::ordered_json::array();
+    for (const Vec3& p : q.self_crossing_points) {
+        self_crossings.push_back({std::lround(p[0]), std::lround(p[1]), std::lround(p[2])});
+    }
+    j["quality"]["self_crossings_canonical_mm"] = self_crossings;
+    nlohmann::ordered_json by_pieces = nlohmann::ordered_json::object();
+    for (const auto& [pieces, n] : q.self_crossings_by_pieces) {
+        by_pieces[pieces] = n;
+    }
+    j["quality"]["self_crossings_by_pieces"] = by_pieces;
     nlohmann::ordered_json seams = nlohmann::ordered_json::array();
     for (const SeamReport& s : r.seams) {
         seams.push_back({{"name", s.name},
@@ -179,6 +189,7 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"substeps", o.drape.substeps},
                     {"iterations", o.drape.iterations},
                     {"self_collision", o.drape.self_collision},
+                    {"edge_edge_collision", o.drape.edge_edge_collision},
                     {"static_solve", o.relax},
                     {"sdf_cell_mm", o.sdf_cell_mm},
                     {"without", o.without_pieces},

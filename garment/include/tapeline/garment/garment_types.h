@@ -145,6 +145,11 @@ struct QualityFigures {
     /// Midpoints of the first (up to 100) crossing edges, mm: where to look.
     std::vector<Vec3> body_crossing_points;
     std::size_t self_intersections = 0;  ///< cloth edges crossing cloth triangles
+    /// Midpoints of the first (up to 100) cloth edges crossing cloth triangles, mm.
+    std::vector<Vec3> self_crossing_points;
+    /// The self-intersections by the pair of pieces they join, "edge's piece / triangle's piece"
+    /// with the names in order (one name when both are of the same piece), most first.
+    std::vector<std::pair<std::string, std::size_t>> self_crossings_by_pieces;
     /// Median, 95th percentile and maximum over the triangles of the largest principal stretch
     /// (triangle_stretch(); 1: unstretched).
     ///@{

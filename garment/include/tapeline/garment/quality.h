@@ -17,6 +17,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace tapeline::garment {
@@ -132,6 +135,22 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
         using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
         Tree tree(tris.cbegin(), tris.cend());
         std::vector<typename Tree::Primitive_id> hits;
+        // The piece of an edge: that of a triangle holding it (a seam edge may be in two).
+        std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> edge_piece;
+        const bool pieces = g.triangle_piece.size() == g.triangles.size();
+        if (pieces) {
+            for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+                for (int k = 0; k < 3; ++k) {
+                    const std::uint32_t a = g.triangles[f][k], b = g.triangles[f][(k + 1) % 3];
+                    edge_piece.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
+                                       g.triangle_piece[f]);
+                }
+            }
+        }
+        std::map<std::string, std::size_t> by_pieces;
+        const auto piece_name = [&](std::uint32_t i) {
+            return i < g.piece_names.size() ? g.piece_names[i] : std::to_string(i);
+        };
         for (const auto& [a, b] : edges) {
             const K::Segment_3 s(P(g.positions[a][0], g.positions[a][1], g.positions[a][2]),
                                  P(g.positions[b][0], g.positions[b][1], g.positions[b][2]));
@@ -143,8 +162,21 @@ inline QualityFigures garment_quality(const std::vector<Vec3>& body_points,
                     continue;
                 }
                 ++q.self_intersections;
+                if (q.self_crossing_points.size() < 100) {
+                    q.self_crossing_points.push_back(
+                        vec3::scale(vec3::add(g.positions[a], g.positions[b]), 0.5));
+                }
+                if (pieces) {
+                    const std::string pe = piece_name(edge_piece.at({a, b}));
+                    const std::string pt =
+                        piece_name(g.triangle_piece[std::size_t(h - tris.cbegin())]);
+                    ++by_pieces[pe == pt ? pe : std::min(pe, pt) + " / " + std::max(pe, pt)];
+                }
             }
         }
+        q.self_crossings_by_pieces.assign(by_pieces.begin(), by_pieces.end());
+        std::stable_sort(q.self_crossings_by_pieces.begin(), q.self_crossings_by_pieces.end(),
+                         [](const auto& x, const auto& y) { return x.second > y.second; });
     }
     const auto st = triangle_stretch(g.positions, g.triangles, g.uv);
     if (!st.empty()) {
