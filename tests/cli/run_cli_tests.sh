@@ -1014,10 +1014,14 @@ expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
 expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \
   --sew-seconds 0 --settle-seconds 0 --out placed.obj --ply placed.ply --report placed.json \
-  --picture placed.png
+  --picture placed.png --edge-edge
 if $py - <<'PY'
 import json
 r = json.load(open("placed.json"))
+assert r["options"]["edge_edge_collision"] is True, r["options"]
+q = r["quality"]  # the self-intersections located and split by pieces, as many as counted
+assert len(q["self_crossings_canonical_mm"]) == min(100, q["self_intersections"]), q
+assert sum(q["self_crossings_by_pieces"].values()) == q["self_intersections"], q
 v = sum(1 for l in open("placed.obj") if l.startswith("v "))
 f = sum(1 for l in open("placed.obj") if l.startswith("f "))
 assert r["placement"]["vertices_inside_body"] == 0, r["placement"]

@@ -241,6 +241,73 @@ TEST(GarmentQuality, CountsEdgesCrossingABodyAndVerticesInside) {
     EXPECT_EQ(q.self_intersections, 0u);
 }
 
+// Two pieces crossing: piece "a" a 20 mm square in the plane y = 0 (split along x = z), piece
+// "b" one triangle in the plane x = 2 standing through it. Two of b's edges pierce a's triangle
+// on the side z > x, at (2, 0, 3) and (2, 0, 4.5); b's trace on y = 0 (z from 3 to 4.5 at x = 2)
+// meets none of a's edges. Far from any body.
+TEST(GarmentQuality, CountsAndLocatesSelfIntersectionsByPieces) {
+    const auto body = capped_cylinder(v3(0, 0, 1000), 50, 100, 24, 4);
+    tg::GarmentMesh g;
+    g.positions = {v3(-10, 0, -10), v3(10, 0, -10), v3(10, 0, 10), v3(-10, 0, 10),
+                   v3(2, -5, 3),    v3(2, 5, 3),    v3(2, 5, 6)};
+    g.triangles = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}};
+    g.uv.assign(3, {tg::UV{0, 0}, tg::UV{1, 0}, tg::UV{0, 1}});
+    g.triangle_piece = {0, 0, 1};
+    g.piece_names = {"a", "b"};
+    const auto q = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+    EXPECT_EQ(q.edges_crossing_body, 0u);
+    EXPECT_EQ(q.self_intersections, 2u);
+    ASSERT_EQ(q.self_crossings_by_pieces.size(), 1u);
+    EXPECT_EQ(q.self_crossings_by_pieces[0].first, "a / b");
+    EXPECT_EQ(q.self_crossings_by_pieces[0].second, 2u);
+    // The midpoints of the two crossing edges, (2, 0, 3) and (2, 0, 4.5), in either order.
+    ASSERT_EQ(q.self_crossing_points.size(), 2u);
+    double z_sum = 0;
+    for (const auto& p : q.self_crossing_points) {
+        EXPECT_NEAR(p[0], 2, 1e-12);
+        EXPECT_NEAR(p[1], 0, 1e-12);
+        z_sum += p[2];
+    }
+    EXPECT_NEAR(z_sum, 7.5, 1e-12);
+    // Moved 1 mm beside a (x = 11), b crosses nothing.
+    for (std::size_t i = 4; i < 7; ++i) {
+        g.positions[i][0] = 11;
+    }
+    const auto apart = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+    EXPECT_EQ(apart.self_intersections, 0u);
+    EXPECT_TRUE(apart.self_crossings_by_pieces.empty());
+}
+
+// Flat cloth is the common case of a drape (a back panel, a skirt) and the hard case for the
+// crossing test: every edge lies in the plane of its neighbours' triangles. A 60 × 60 grid of
+// 20 mm cells in a tilted plane far from the origin, and the same grid folded along a line into
+// a 90° dihedral (two flat halves): no edge crosses a triangle.
+TEST(GarmentQuality, FlatAndFoldedClothHasNoSelfIntersection) {
+    const auto body = capped_cylinder(v3(0, 0, -5000), 50, 100, 24, 4);
+    const double c1 = std::cos(0.3), s1 = std::sin(0.3), c2 = std::cos(1.1), s2 = std::sin(1.1);
+    const tg::Vec3 u = v3(c1, s1 * s2, s1 * c2);  // two orthonormal directions of a tilted plane
+    const tg::Vec3 w = v3(0, c2, -s2);
+    for (const bool folded : {false, true}) {
+        const int n = 60;
+        const tg::ClothModel grid = cloth_grid(n, n, 20, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0));
+        tg::GarmentMesh g;
+        const tg::Vec3 normal = tapeline::vec3::cross(u, w);
+        for (const tg::Vec3& p : grid.positions) {
+            // Folded: the half beyond x = 600 turns up along the plane's normal.
+            const double a = folded && p[0] > 600 ? 600 : p[0];
+            const double up = folded && p[0] > 600 ? p[0] - 600 : 0;
+            g.positions.push_back(v3(313.7 + a * u[0] + p[1] * w[0] + up * normal[0],
+                                     1103.3 + a * u[1] + p[1] * w[1] + up * normal[1],
+                                     151.9 + a * u[2] + p[1] * w[2] + up * normal[2]));
+        }
+        g.triangles = grid.triangles;
+        g.uv = grid.rest_uv;
+        g.triangle_piece.assign(g.triangles.size(), 0);
+        const auto q = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+        EXPECT_EQ(q.self_intersections, 0u) << (folded ? "folded" : "flat");
+    }
+}
+
 // The stretch split between triangles on the body and off it. Cylinder of radius R along z;
 // separate right triangles in planes y = const parallel to its side: those at y = R + 2 (about
 // 2 mm off the skin) are stretched 1.2 along x against their pattern, those at y = R + 40 are

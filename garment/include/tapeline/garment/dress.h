@@ -57,39 +57,17 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
 inline std::size_t piece_crossings(const std::vector<Vec3>& x, const std::vector<Tri>& tris,
                                    const std::vector<std::uint32_t>& tri_piece) {
     // Pieces are disjoint meshes here: an edge of one crossing a triangle of another is two
-    // pieces meeting before they are sewn.
-    using K = CGAL::Simple_cartesian<double>;
-    using P = K::Point_3;
-    using Triangle = K::Triangle_3;
-    std::vector<Triangle> ts;
-    for (const Tri& t : tris) {
-        ts.emplace_back(P(x[t[0]][0], x[t[0]][1], x[t[0]][2]),
-                        P(x[t[1]][0], x[t[1]][1], x[t[1]][2]),
-                        P(x[t[2]][0], x[t[2]][1], x[t[2]][2]));
-    }
-    using Iterator = std::vector<Triangle>::const_iterator;
-    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Iterator>>>;
-    Tree tree(ts.cbegin(), ts.cend());
-    std::size_t n = 0;
-    std::vector<Tree::Primitive_id> hits;
+    // pieces meeting before they are sewn. The piece of an edge: that of any triangle holding it.
+    std::vector<std::uint32_t> piece_of_vertex(x.size(), 0);
     for (std::size_t f = 0; f < tris.size(); ++f) {
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = tris[f][k], b = tris[f][(k + 1) % 3];
-            if (a > b) {
-                continue;  // each interior edge once (boundary edges in one direction only)
-            }
-            hits.clear();
-            tree.all_intersected_primitives(
-                K::Segment_3(P(x[a][0], x[a][1], x[a][2]), P(x[b][0], x[b][1], x[b][2])),
-                std::back_inserter(hits));
-            for (const auto& h : hits) {
-                const std::size_t g2 = std::size_t(h - ts.cbegin());
-                if (tri_piece[g2] != tri_piece[f]) {
-                    ++n;
-                }
-            }
+            piece_of_vertex[tris[f][k]] = tri_piece[f];
         }
     }
+    std::size_t n = 0;
+    for_each_edge_triangle_crossing(x, tris, [&](std::uint32_t a, std::uint32_t, std::size_t t) {
+        n += piece_of_vertex[a] != tri_piece[t] ? 1 : 0;
+    });
     return n;
 }
 

@@ -728,8 +728,10 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
             const auto [lo, hi] = std::minmax_element(l.s.begin(), l.s.end());
             span += *hi - *lo;
         }
-        // The tube is at least as wide as the sleeve (3 % of ease) and clears the arm by the gap.
-        const double radius_min = std::max(r_arm + o.gap_mm, 1.03 * span / (2 * M_PI));
+        // The tube is at least as wide as the sleeve (3 % of ease, and the layer gap between two
+        // halves) and clears the arm by the gap.
+        const double radius_min =
+            std::max(r_arm + o.gap_mm, (1.03 * span + o.layer_gap_mm) / (2 * M_PI));
         double radius = radius_min;
         // Frame: n_up ⟂ d pointing up, n_front ⟂ both pointing to the front (+z).
         Vec3 n_up = sub(Vec3{0, 1, 0}, scale(d, d[1]));
@@ -738,11 +740,15 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
         if (n_front[2] < 0) {
             n_front = scale(n_front, -1);
         }
-        // Where a sleeve vertex goes when the top of the sleeve is `start` down the arm.
+        // Where a sleeve vertex goes when the top of the sleeve is `start` down the arm. Two
+        // halves meet along the top of the arm, a layer gap apart (as the torso's halves at the
+        // centre line), so that they do not touch before they are sewn.
         const auto sleeve_point = [&](const PieceLayout& l, bool front_half, std::size_t v,
                                       double start) {
             const double theta =
-                l.whole_sleeve ? l.s[v] / radius : (front_half ? 1 : -1) * (smax - l.s[v]) / radius;
+                l.whole_sleeve
+                    ? l.s[v] / radius
+                    : (front_half ? 1 : -1) * (smax - l.s[v] + 0.5 * o.layer_gap_mm) / radius;
             const Vec3 c = add(a0, scale(d, start + l.h[v] - hmin_s));
             return add(c, add(scale(n_up, radius * std::cos(theta)),
                               scale(n_front, radius * std::sin(theta))));
