@@ -105,6 +105,67 @@
 
 namespace tapeline::garment {
 
+namespace internal {
+
+// A spatial hash of points (Teschner et al. 2003): cubic cells of a given size hashed into twice
+// as many buckets as points, counting-sorted so that each bucket lists its points in index order
+// (deterministic whatever the thread count). A bucket also holds points of other cells that hash
+// alike: compare `cell`.
+struct PointHash {
+    using Cell = std::array<std::int64_t, 3>;
+    double inv_cell = 1;
+    std::size_t buckets = 1;
+    std::vector<Cell> cell;             // per point
+    std::vector<std::uint32_t> start;   // per bucket: where its points begin in `points`; + end
+    std::vector<std::uint32_t> points;  // point indices, bucket by bucket
+    std::vector<std::uint32_t> bucket;  // per point (scratch)
+
+    Cell cell_of(const Vec3& p) const {
+        return {static_cast<std::int64_t>(std::floor(p[0] * inv_cell)),
+                static_cast<std::int64_t>(std::floor(p[1] * inv_cell)),
+                static_cast<std::int64_t>(std::floor(p[2] * inv_cell))};
+    }
+    std::size_t bucket_of(const Cell& c) const {
+        const std::uint64_t hsh = static_cast<std::uint64_t>(c[0]) * 73856093u ^
+                                  static_cast<std::uint64_t>(c[1]) * 19349663u ^
+                                  static_cast<std::uint64_t>(c[2]) * 83492791u;
+        return static_cast<std::size_t>(hsh & (buckets - 1));
+    }
+    // Hashes p[i] for every i with kept[i] (every i when `kept` is empty).
+    void build(const std::vector<Vec3>& p, double cell_size,
+               const std::vector<std::uint8_t>& kept = {}) {
+        const std::size_t n = p.size();
+        inv_cell = 1 / cell_size;
+        buckets = 1;
+        while (buckets < 2 * n) {
+            buckets <<= 1;
+        }
+        cell.resize(n);
+        bucket.resize(n);
+        start.assign(buckets + 1, 0);
+        const auto in = [&](std::size_t i) { return kept.empty() || kept[i]; };
+        for (std::size_t i = 0; i < n; ++i) {
+            if (in(i)) {
+                cell[i] = cell_of(p[i]);
+                bucket[i] = static_cast<std::uint32_t>(bucket_of(cell[i]));
+                ++start[bucket[i] + 1];
+            }
+        }
+        for (std::size_t b = 0; b < buckets; ++b) {
+            start[b + 1] += start[b];
+        }
+        points.resize(start[buckets]);
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (in(i)) {
+                points[fill[bucket[i]]++] = static_cast<std::uint32_t>(i);
+            }
+        }
+    }
+};
+
+}  // namespace internal
+
 /// XPBD cloth solver (see the header comment for the model, units and papers).
 class DrapeSolver {
 public:
@@ -239,9 +300,10 @@ private:
     std::vector<std::vector<SelfContact>> self_blocks_;
     std::vector<EdgeEdgeContact> edge_edge_contacts_;
     std::vector<std::vector<EdgeEdgeContact>> edge_edge_blocks_;
-    std::vector<std::uint32_t> edge_hash_start_, edge_hash_edges_;
-    std::vector<std::uint32_t> hash_start_, hash_vertices_;
-    std::vector<std::array<std::int64_t, 3>> vertex_cell_;
+    internal::PointHash vertex_hash_;  // predicted vertex positions, cell hash_cell_
+    internal::PointHash edge_hash_;    // predicted edge midpoints (edge–edge pairs)
+    std::vector<Vec3> edge_mid_;
+    std::vector<std::uint8_t> edge_kept_;
     double hash_cell_ = 1;
     std::size_t frame_ = 0;
     bool failed_ = false;
@@ -1277,42 +1339,8 @@ inline void DrapeSolver::update_tethers() {
 inline void DrapeSolver::detect_self_contacts() {
     using namespace tapeline::vec3;
     const std::size_t n = x_.size();
-    // Spatial hash of the predicted vertex positions (Teschner et al. 2003), counting-sorted so
-    // that each bucket lists its vertices in index order.
-    std::size_t buckets = 1;
-    while (buckets < 2 * n) {
-        buckets <<= 1;
-    }
-    const double inv_cell = 1 / hash_cell_;
-    auto cell_of = [&](const Vec3& p) {
-        return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(p[0] * inv_cell)),
-                                           static_cast<std::int64_t>(std::floor(p[1] * inv_cell)),
-                                           static_cast<std::int64_t>(std::floor(p[2] * inv_cell))};
-    };
-    auto bucket_of = [&](const std::array<std::int64_t, 3>& c) {
-        const std::uint64_t hsh = static_cast<std::uint64_t>(c[0]) * 73856093u ^
-                                  static_cast<std::uint64_t>(c[1]) * 19349663u ^
-                                  static_cast<std::uint64_t>(c[2]) * 83492791u;
-        return static_cast<std::size_t>(hsh & (buckets - 1));
-    };
-    std::vector<std::uint32_t> bucket(n);
-    vertex_cell_.resize(n);
-    hash_start_.assign(buckets + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        vertex_cell_[i] = cell_of(p_[i]);
-        bucket[i] = static_cast<std::uint32_t>(bucket_of(vertex_cell_[i]));
-        ++hash_start_[bucket[i] + 1];
-    }
-    for (std::size_t b = 0; b < buckets; ++b) {
-        hash_start_[b + 1] += hash_start_[b];
-    }
-    hash_vertices_.resize(n);
-    {
-        std::vector<std::uint32_t> fill(hash_start_.begin(), hash_start_.end() - 1);
-        for (std::size_t i = 0; i < n; ++i) {
-            hash_vertices_[fill[bucket[i]]++] = static_cast<std::uint32_t>(i);
-        }
-    }
+    vertex_hash_.build(p_, hash_cell_);
+    const internal::PointHash& hash = vertex_hash_;
     const double thickness = fabric_.thickness_mm;
     const std::size_t block = 1024;
     const std::size_t blocks = (tris_.size() + block - 1) / block;
@@ -1331,7 +1359,7 @@ inline void DrapeSolver::detect_self_contacts() {
                 lo[k] = std::min({a[k], b[k], c[k]}) - thickness;
                 hi[k] = std::max({a[k], b[k], c[k]}) + thickness;
             }
-            const auto clo = cell_of(lo), chi = cell_of(hi);
+            const auto clo = hash.cell_of(lo), chi = hash.cell_of(hi);
             if ((chi[0] - clo[0] + 1) * (chi[1] - clo[1] + 1) * (chi[2] - clo[2] + 1) > 64) {
                 continue;  // a wildly stretched triangle: leave it to the stretch constraints
             }
@@ -1342,12 +1370,12 @@ inline void DrapeSolver::detect_self_contacts() {
                 for (std::int64_t j = clo[1]; j <= chi[1]; ++j) {
                     for (std::int64_t k = clo[2]; k <= chi[2]; ++k) {
                         const std::array<std::int64_t, 3> cell{i, j, k};
-                        const std::size_t bk = bucket_of(cell);
-                        for (std::uint32_t q = hash_start_[bk]; q < hash_start_[bk + 1]; ++q) {
-                            const std::uint32_t v = hash_vertices_[q];
+                        const std::size_t bk = hash.bucket_of(cell);
+                        for (std::uint32_t q = hash.start[bk]; q < hash.start[bk + 1]; ++q) {
+                            const std::uint32_t v = hash.points[q];
                             const Vec3& pv = p_[v];
                             if (pv[0] < lo[0] || pv[1] < lo[1] || pv[2] < lo[2] || pv[0] > hi[0] ||
-                                pv[1] > hi[1] || pv[2] > hi[2] || vertex_cell_[v] != cell) {
+                                pv[1] > hi[1] || pv[2] > hi[2] || hash.cell[v] != cell) {
                                 continue;  // outside the box, or met through a hash collision
                             }
                             if (v == tv[0] || v == tv[1] || v == tv[2] ||
@@ -1428,53 +1456,16 @@ inline void DrapeSolver::detect_edge_edge_contacts() {
     const std::size_t m = edge_list_.size();
     const double thickness = fabric_.thickness_mm;
     const double longest_kept = 1.5 * hash_cell_;
-    std::vector<Vec3> mid(m);
-    std::vector<std::uint8_t> kept(m);
+    edge_mid_.resize(m);
+    edge_kept_.resize(m);
     for (std::size_t e = 0; e < m; ++e) {
         const Vec3& pa = p_[edge_list_[e].first];
         const Vec3& pb = p_[edge_list_[e].second];
-        const double len = norm(sub(pb, pa));
-        kept[e] = len <= longest_kept;
-        mid[e] = scale(add(pa, pb), 0.5);
+        edge_kept_[e] = norm(sub(pb, pa)) <= longest_kept;
+        edge_mid_[e] = scale(add(pa, pb), 0.5);
     }
-    const double inv_cell = 1 / (longest_kept + thickness);
-    std::size_t buckets = 1;
-    while (buckets < 2 * m) {
-        buckets <<= 1;
-    }
-    auto cell_of = [&](const Vec3& q) {
-        return std::array<std::int64_t, 3>{static_cast<std::int64_t>(std::floor(q[0] * inv_cell)),
-                                           static_cast<std::int64_t>(std::floor(q[1] * inv_cell)),
-                                           static_cast<std::int64_t>(std::floor(q[2] * inv_cell))};
-    };
-    auto bucket_of = [&](const std::array<std::int64_t, 3>& c) {
-        const std::uint64_t hsh = static_cast<std::uint64_t>(c[0]) * 73856093u ^
-                                  static_cast<std::uint64_t>(c[1]) * 19349663u ^
-                                  static_cast<std::uint64_t>(c[2]) * 83492791u;
-        return static_cast<std::size_t>(hsh & (buckets - 1));
-    };
-    std::vector<std::array<std::int64_t, 3>> cell(m);
-    std::vector<std::uint32_t> bucket(m);
-    edge_hash_start_.assign(buckets + 1, 0);
-    for (std::size_t e = 0; e < m; ++e) {
-        if (kept[e]) {
-            cell[e] = cell_of(mid[e]);
-            bucket[e] = static_cast<std::uint32_t>(bucket_of(cell[e]));
-            ++edge_hash_start_[bucket[e] + 1];
-        }
-    }
-    for (std::size_t bk = 0; bk < buckets; ++bk) {
-        edge_hash_start_[bk + 1] += edge_hash_start_[bk];
-    }
-    edge_hash_edges_.resize(edge_hash_start_[buckets]);
-    {
-        std::vector<std::uint32_t> fill(edge_hash_start_.begin(), edge_hash_start_.end() - 1);
-        for (std::size_t e = 0; e < m; ++e) {
-            if (kept[e]) {
-                edge_hash_edges_[fill[bucket[e]]++] = static_cast<std::uint32_t>(e);
-            }
-        }
-    }
+    edge_hash_.build(edge_mid_, longest_kept + thickness, edge_kept_);
+    const internal::PointHash& hash = edge_hash_;
     // A candidate pair: kept when closer than the thickness.
     auto test = [&](std::size_t e, std::uint32_t f, std::vector<EdgeEdgeContact>& out) {
         const auto [a, b] = edge_list_[e];
@@ -1515,7 +1506,7 @@ inline void DrapeSolver::detect_edge_edge_contacts() {
         out.clear();
         const std::size_t end = std::min(m, (bl + 1) * block);
         for (std::size_t e = bl * block; e < end; ++e) {
-            if (!kept[e]) {
+            if (!edge_kept_[e]) {
                 continue;
             }
             const auto [a, b] = edge_list_[e];
@@ -1524,16 +1515,15 @@ inline void DrapeSolver::detect_edge_edge_contacts() {
                 elo[k] = std::min(p_[a][k], p_[b][k]) - thickness;
                 ehi[k] = std::max(p_[a][k], p_[b][k]) + thickness;
             }
-            const auto& ce = cell[e];
+            const auto& ce = hash.cell[e];
             for (std::int64_t i = ce[0] - 1; i <= ce[0] + 1; ++i) {
                 for (std::int64_t j = ce[1] - 1; j <= ce[1] + 1; ++j) {
                     for (std::int64_t k = ce[2] - 1; k <= ce[2] + 1; ++k) {
                         const std::array<std::int64_t, 3> c3{i, j, k};
-                        const std::size_t bk = bucket_of(c3);
-                        for (std::uint32_t q = edge_hash_start_[bk]; q < edge_hash_start_[bk + 1];
-                             ++q) {
-                            const std::uint32_t f = edge_hash_edges_[q];
-                            if (f <= e || cell[f] != c3) {
+                        const std::size_t bk = hash.bucket_of(c3);
+                        for (std::uint32_t q = hash.start[bk]; q < hash.start[bk + 1]; ++q) {
+                            const std::uint32_t f = hash.points[q];
+                            if (f <= e || hash.cell[f] != c3) {
                                 continue;  // the pair's other visit, or a hash collision
                             }
                             const auto [c, d] = edge_list_[f];
