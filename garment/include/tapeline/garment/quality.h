@@ -4,7 +4,7 @@
 // edges crossing cloth triangles, and the principal stretches of every 3D triangle against its 2D
 // pattern triangle. Crossings are decided by exact predicates (CGAL's Epick kernel): with plain
 // double arithmetic an edge lying in the plane of a flat patch of cloth was counted as crossing
-// triangles it only lies beside (20 such false crossings on one placed shirt).
+// triangles it only lies beside (6 such false crossings on one placed shirt, 368 on a flat grid).
 #pragma once
 
 #include <tapeline/core/vec3.h>
