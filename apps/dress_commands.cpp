@@ -54,6 +54,7 @@ struct DressArgs {
     int substeps = tg::DressOptions{}.drape.substeps;
     bool no_self_collision = false;
     bool edge_edge = false;
+    bool no_untangle = false;
     bool no_relax = false;
     int relax_iterations = tg::RelaxOptions{}.max_iterations;
     bool strict = false;
@@ -108,6 +109,7 @@ void run_dress(const DressArgs& a) {
     o.drape.substeps = a.substeps;
     o.drape.self_collision = !a.no_self_collision;
     o.drape.edge_edge_collision = a.edge_edge;
+    o.drape.untangle = !a.no_untangle;
     o.relax = !a.no_relax;
     o.relax_options.max_iterations = a.relax_iterations;
     o.without_pieces = a.without;
@@ -271,6 +273,9 @@ void register_dress_commands(CLI::App& app) {
     cmd->add_flag("--no-self-collision", a->no_self_collision, "Skip cloth-cloth collisions");
     cmd->add_flag("--edge-edge", a->edge_edge,
                   "Cloth-cloth pairs of edges too, not only vertex-triangle (slower)");
+    cmd->add_flag("--no-untangle", a->no_untangle,
+                  "Keep cloth that has cut through cloth as it is (default: pull it back through "
+                  "every frame)");
     cmd->add_flag("--no-relax", a->no_relax,
                   "End with the drape's last frame instead of solving for the static equilibrium");
     cmd->add_option("--relax-iterations", a->relax_iterations,

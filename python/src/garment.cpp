@@ -168,6 +168,7 @@ void bind_garment(py::module_& parent) {
                        cxx_doc("DrapeOptions.self_collision"))
         .def_readwrite("edge_edge_collision", &tgm::DrapeOptions::edge_edge_collision,
                        cxx_doc("DrapeOptions.edge_edge_collision"))
+        .def_readwrite("untangle", &tgm::DrapeOptions::untangle, cxx_doc("DrapeOptions.untangle"))
         .def_readwrite("tether_stretch", &tgm::DrapeOptions::tether_stretch,
                        cxx_doc("DrapeOptions.tether_stretch"))
         .def_readwrite("threads", &tgm::DrapeOptions::threads, cxx_doc("DrapeOptions.threads"))

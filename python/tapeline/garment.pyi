@@ -30,6 +30,7 @@ class DrapeOptions:
     body_clearance_mm: float
     self_collision: bool
     edge_edge_collision: bool
+    untangle: bool
     tether_stretch: float
     threads: int
     max_speed_mm_s: float

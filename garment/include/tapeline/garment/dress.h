@@ -290,6 +290,9 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     rep.body_clearance_mm = drape_options.body_clearance_mm;
     DrapeOptions sew_options = drape_options;
     sew_options.gravity = {0, 0, 0};
+    // While the pieces are pulled together their seam edges cross each other by design (the
+    // sewing solver knows no stitch partners): untangling starts with the drape.
+    sew_options.untangle = false;
     StepReport last;
     std::size_t frames = 0;
     {
@@ -343,7 +346,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             last = drape.step();
             ++frames;
             progress.note("t " + std::to_string(last.simulated_seconds).substr(0, 5) +
-                          " s, moving " + std::to_string(int(100 * last.moving_fraction)) + " %");
+                          " s, moving " + std::to_string(int(100 * last.moving_fraction)) +
+                          " %, cloth crossings " + std::to_string(last.cloth_crossings));
             progress.advance();
             if (f + 1 >= n_settle && last.moving_fraction <= 0.01) {
                 break;
@@ -351,6 +355,10 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             if (f + 1 == n_settle) {
                 drape.set_damping(
                     std::max(o.drape.damping_per_second, o.sewing.settle_damping_per_second));
+                // The crossings the untangling could undo are undone within the settling time
+                // (on the shirt at 20 mm: 1541 at its start, 330 from the twelfth frame on); its
+                // moves on what is left would keep the cloth from coming to rest.
+                drape.set_untangle(false);
             }
         }
         simulated += double(drape.positions().empty() ? 0 : last.frame) * frame;

@@ -190,6 +190,7 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"iterations", o.drape.iterations},
                     {"self_collision", o.drape.self_collision},
                     {"edge_edge_collision", o.drape.edge_edge_collision},
+                    {"untangle", o.drape.untangle},
                     {"static_solve", o.relax},
                     {"sdf_cell_mm", o.sdf_cell_mm},
                     {"without", o.without_pieces},
