@@ -132,6 +132,24 @@ struct PointHash {
                                   static_cast<std::uint64_t>(c[2]) * 83492791u;
         return static_cast<std::size_t>(hsh & (buckets - 1));
     }
+    // Calls f(point, cell) for every point hashed in a cell from lo to hi (cell coordinates),
+    // cell by cell, each bucket in index order; points of other cells met in a bucket are skipped.
+    template <typename F>
+    void for_each_in_cells(const Cell& lo, const Cell& hi, F&& f) const {
+        for (std::int64_t i = lo[0]; i <= hi[0]; ++i) {
+            for (std::int64_t j = lo[1]; j <= hi[1]; ++j) {
+                for (std::int64_t k = lo[2]; k <= hi[2]; ++k) {
+                    const Cell c{i, j, k};
+                    const std::size_t bk = bucket_of(c);
+                    for (std::uint32_t q = start[bk]; q < start[bk + 1]; ++q) {
+                        if (cell[points[q]] == c) {
+                            f(points[q]);
+                        }
+                    }
+                }
+            }
+        }
+    }
     // Hashes p[i] for every i with kept[i] (every i when `kept` is empty).
     void build(const std::vector<Vec3>& p, double cell_size,
                const std::vector<std::uint8_t>& kept = {}) {
@@ -324,6 +342,17 @@ private:
 // ---------------------------------------------------------------------------------------------
 
 namespace internal {
+
+// The bounding box of a triangle grown by `margin` on every side.
+inline std::pair<Vec3, Vec3> triangle_box(const Vec3& a, const Vec3& b, const Vec3& c,
+                                          double margin) {
+    Vec3 lo, hi;
+    for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min({a[k], b[k], c[k]}) - margin;
+        hi[k] = std::max({a[k], b[k], c[k]}) + margin;
+    }
+    return {lo, hi};
+}
 
 inline bool finite3(const Vec3& p) {
     return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
@@ -1374,11 +1403,7 @@ inline void DrapeSolver::detect_self_contacts() {
             const Vec3& a = p_[tv[0]];
             const Vec3& b = p_[tv[1]];
             const Vec3& c = p_[tv[2]];
-            Vec3 lo, hi;
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = std::min({a[k], b[k], c[k]}) - thickness;
-                hi[k] = std::max({a[k], b[k], c[k]}) + thickness;
-            }
+            const auto [lo, hi] = internal::triangle_box(a, b, c, thickness);
             const auto clo = hash.cell_of(lo), chi = hash.cell_of(hi);
             if ((chi[0] - clo[0] + 1) * (chi[1] - clo[1] + 1) * (chi[2] - clo[2] + 1) > 64) {
                 continue;  // a wildly stretched triangle: leave it to the stretch constraints
@@ -1621,26 +1646,10 @@ inline std::vector<std::pair<std::uint32_t, std::uint32_t>> DrapeSolver::find_cr
             const Vec3& c0 = x_[tv[0]];
             const Vec3& c1 = x_[tv[1]];
             const Vec3& c2 = x_[tv[2]];
-            Vec3 lo, hi;
-            for (int k = 0; k < 3; ++k) {
-                lo[k] = std::min({c0[k], c1[k], c2[k]}) - 0.5 * longest;
-                hi[k] = std::max({c0[k], c1[k], c2[k]}) + 0.5 * longest;
-            }
+            const auto [lo, hi] = internal::triangle_box(c0, c1, c2, 0.5 * longest);
             const auto clo = hash.cell_of(lo), chi = hash.cell_of(hi);
             cand.clear();
-            for (std::int64_t i = clo[0]; i <= chi[0]; ++i) {
-                for (std::int64_t j = clo[1]; j <= chi[1]; ++j) {
-                    for (std::int64_t k = clo[2]; k <= chi[2]; ++k) {
-                        const std::array<std::int64_t, 3> cell{i, j, k};
-                        const std::size_t bk = hash.bucket_of(cell);
-                        for (std::uint32_t q = hash.start[bk]; q < hash.start[bk + 1]; ++q) {
-                            if (hash.cell[hash.points[q]] == cell) {
-                                cand.push_back(hash.points[q]);
-                            }
-                        }
-                    }
-                }
-            }
+            hash.for_each_in_cells(clo, chi, [&](std::uint32_t e) { cand.push_back(e); });
             std::sort(cand.begin(), cand.end());
             const Vec3 u = sub(c1, c0), w = sub(c2, c0);
             const Vec3 nrm = cross(u, w);
