@@ -1730,10 +1730,8 @@ inline std::vector<std::pair<std::uint32_t, std::uint32_t>> DrapeSolver::find_cr
 // step is the largest such half-distance among its crossings, capped at four thicknesses. Called
 // at the start of every frame; the contacts between vertices on crossings are left out for the
 // frame (detect_self_contacts), as Baraff, Witkin and Kass ("Untangling cloth", SIGGRAPH 2003)
-// leave out the repulsion inside intersection regions. A fixed step of one thickness a frame
-// untangles the same (the tests' bump: 75 frames instead of 24; on twelve drapes at 20 mm, 2414
-// crossings left instead of 2328); fixed steps of 8 thicknesses leave some drapes chaotic (a
-// shirt 36, but brian 4831 against 946 without untangling).
+// leave out the repulsion inside intersection regions. The step rule against fixed steps (one
+// thickness: slower; eight: chaotic on some drapes) is measured in docs/garment.md, "Untangling".
 // Crossings of an edge and a triangle whose ends are stitch partners are seams still being closed,
 // not tangles: left out. Serial and in a fixed order: the same result for any thread count.
 inline std::size_t DrapeSolver::untangle() {
@@ -1754,103 +1752,101 @@ inline std::size_t DrapeSolver::untangle() {
     // A vertex moves at most four thicknesses a frame: enough to take a fold of a few mm back
     // through within a frame, little enough that the cloth's own constraints smooth it out.
     const double cap = 4 * fabric_.thickness_mm;
-    {
-        std::vector<Crossing> found;
-        for (const auto& [e, t] : crossings) {
-            const auto [a, b] = edge_list_[e];
-            const Tri& tv = model_.triangles[t];
-            const Vec3 d = sub(x_[b], x_[a]);
-            Vec3 nn = cross(sub(x_[tv[1]], x_[tv[0]]), sub(x_[tv[2]], x_[tv[0]]));
-            const double len = norm(nn);
-            if (!(len > 1e-12)) {
-                continue;
-            }
-            nn = scale(nn, 1 / len);
-            const double nd = dot(nn, d);
-            if (std::abs(nd) < 1e-9 * norm(d)) {
-                continue;  // the edge lies in the triangle's plane: no crossing point
-            }
-            const double s = std::clamp(dot(nn, sub(x_[tv[0]], x_[a])) / nd, 0.0, 1.0);
-            Crossing c;
-            c.edge = e;
-            c.t = t;
-            c.s = s;
-            c.p = add(x_[a], scale(d, s));
-            const auto bary = internal::closest_barycentric(c.p, x_[tv[0]], x_[tv[1]], x_[tv[2]]);
-            for (int k = 0; k < 3; ++k) {
-                c.bary[k] = bary[k];
-            }
-            c.normal = nn;
-            c.d = d;
-            found.push_back(c);
+    std::vector<Crossing> found;
+    for (const auto& [e, t] : crossings) {
+        const auto [a, b] = edge_list_[e];
+        const Tri& tv = model_.triangles[t];
+        const Vec3 d = sub(x_[b], x_[a]);
+        Vec3 nn = cross(sub(x_[tv[1]], x_[tv[0]]), sub(x_[tv[2]], x_[tv[0]]));
+        const double len = norm(nn);
+        if (!(len > 1e-12)) {
+            continue;
         }
+        nn = scale(nn, 1 / len);
+        const double nd = dot(nn, d);
+        if (std::abs(nd) < 1e-9 * norm(d)) {
+            continue;  // the edge lies in the triangle's plane: no crossing point
+        }
+        const double s = std::clamp(dot(nn, sub(x_[tv[0]], x_[a])) / nd, 0.0, 1.0);
+        Crossing c;
+        c.edge = e;
+        c.t = t;
+        c.s = s;
+        c.p = add(x_[a], scale(d, s));
+        const auto bary = internal::closest_barycentric(c.p, x_[tv[0]], x_[tv[1]], x_[tv[2]]);
+        for (int k = 0; k < 3; ++k) {
+            c.bary[k] = bary[k];
+        }
+        c.normal = nn;
+        c.d = d;
+        found.push_back(c);
+    }
 
-        // The curve's segments: the crossing points of each pair of intersecting triangles (a
-        // triangle holding the crossing edge, the crossed triangle), in a fixed order.
-        std::vector<std::pair<std::uint64_t, std::uint32_t>> by_pair;
-        for (std::size_t i = 0; i < found.size(); ++i) {
-            for (const std::uint32_t f : edge_tris_[found[i].edge]) {
-                if (f != kNone) {
-                    const std::uint64_t lo = std::min(f, found[i].t), hi = std::max(f, found[i].t);
-                    by_pair.push_back({(lo << 32) | hi, static_cast<std::uint32_t>(i)});
-                }
+    // The curve's segments: the crossing points of each pair of intersecting triangles (a
+    // triangle holding the crossing edge, the crossed triangle), in a fixed order.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> by_pair;
+    for (std::size_t i = 0; i < found.size(); ++i) {
+        for (const std::uint32_t f : edge_tris_[found[i].edge]) {
+            if (f != kNone) {
+                const std::uint64_t lo = std::min(f, found[i].t), hi = std::max(f, found[i].t);
+                by_pair.push_back({(lo << 32) | hi, static_cast<std::uint32_t>(i)});
             }
         }
-        std::sort(by_pair.begin(), by_pair.end());
-        for (std::size_t k = 0; k < by_pair.size();) {
-            std::size_t e = k;
-            while (e < by_pair.size() && by_pair[e].first == by_pair[k].first) {
-                ++e;
-            }
-            if (e - k == 2) {
-                Crossing& p = found[by_pair[k].second];
-                Crossing& q = found[by_pair[k + 1].second];
-                const Vec3 pq = sub(q.p, p.p);
-                const double len = norm(pq);
-                if (len > 1e-12) {
-                    const Vec3 u = scale(pq, 1 / len);
-                    p.g = sub(p.g, u);
-                    q.g = add(q.g, u);
-                }
-            }
-            k = e;
+    }
+    std::sort(by_pair.begin(), by_pair.end());
+    for (std::size_t k = 0; k < by_pair.size();) {
+        std::size_t e = k;
+        while (e < by_pair.size() && by_pair[e].first == by_pair[k].first) {
+            ++e;
         }
-        std::vector<Vec3> move(n, Vec3{0, 0, 0});
-        std::vector<double> reach(n, 0.0);
-        for (const Crossing& c : found) {
-            const auto [a, b] = edge_list_[c.edge];
-            const Tri& tv = model_.triangles[c.t];
-            tangled_[a] = tangled_[b] = 1;
-            for (const std::uint32_t v : tv) {
-                tangled_[v] = 1;
-            }
-            const double slope = dot(c.g, c.normal) / 2 - dot(c.g, c.d) / dot(c.normal, c.d);
-            if (slope == 0) {
-                continue;
-            }
-            const double dir = slope > 0 ? -1.0 : 1.0;
-            const Vec3 r = scale(c.normal, dir);  // the edge's side, against t's
-            // How far the edge must go against the triangle for its end on the wrong side to
-            // reach the thickness on the right one; half of it on each side.
-            const Vec3& c0 = x_[tv[0]];
-            const double far = std::max(0.0, -std::min(dir * dot(c.normal, sub(x_[a], c0)),
-                                                       dir * dot(c.normal, sub(x_[b], c0))));
-            const double half = 0.5 * (far + fabric_.thickness_mm);
-            move[a] = add(move[a], scale(r, 1 - c.s));
-            move[b] = add(move[b], scale(r, c.s));
-            reach[a] = std::max(reach[a], half);
-            reach[b] = std::max(reach[b], half);
-            for (int k = 0; k < 3; ++k) {
-                move[tv[k]] = sub(move[tv[k]], scale(r, c.bary[k]));
-                reach[tv[k]] = std::max(reach[tv[k]], half);
+        if (e - k == 2) {
+            Crossing& p = found[by_pair[k].second];
+            Crossing& q = found[by_pair[k + 1].second];
+            const Vec3 pq = sub(q.p, p.p);
+            const double len = norm(pq);
+            if (len > 1e-12) {
+                const Vec3 u = scale(pq, 1 / len);
+                p.g = sub(p.g, u);
+                q.g = add(q.g, u);
             }
         }
-        for (std::size_t v = 0; v < n; ++v) {
-            const double len = norm(move[v]);
-            if (w_[v] > 0 && len > 0) {
-                const double m = std::min(reach[v], cap);
-                x_[v] = add(x_[v], scale(move[v], m / std::max(1.0, len)));
-            }
+        k = e;
+    }
+    std::vector<Vec3> move(n, Vec3{0, 0, 0});
+    std::vector<double> reach(n, 0.0);
+    for (const Crossing& c : found) {
+        const auto [a, b] = edge_list_[c.edge];
+        const Tri& tv = model_.triangles[c.t];
+        tangled_[a] = tangled_[b] = 1;
+        for (const std::uint32_t v : tv) {
+            tangled_[v] = 1;
+        }
+        const double slope = dot(c.g, c.normal) / 2 - dot(c.g, c.d) / dot(c.normal, c.d);
+        if (slope == 0) {
+            continue;
+        }
+        const double dir = slope > 0 ? -1.0 : 1.0;
+        const Vec3 r = scale(c.normal, dir);  // the edge's side, against t's
+        // How far the edge must go against the triangle for its end on the wrong side to
+        // reach the thickness on the right one; half of it on each side.
+        const Vec3& c0 = x_[tv[0]];
+        const double far = std::max(0.0, -std::min(dir * dot(c.normal, sub(x_[a], c0)),
+                                                   dir * dot(c.normal, sub(x_[b], c0))));
+        const double half = 0.5 * (far + fabric_.thickness_mm);
+        move[a] = add(move[a], scale(r, 1 - c.s));
+        move[b] = add(move[b], scale(r, c.s));
+        reach[a] = std::max(reach[a], half);
+        reach[b] = std::max(reach[b], half);
+        for (int k = 0; k < 3; ++k) {
+            move[tv[k]] = sub(move[tv[k]], scale(r, c.bary[k]));
+            reach[tv[k]] = std::max(reach[tv[k]], half);
+        }
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+        const double len = norm(move[v]);
+        if (w_[v] > 0 && len > 0) {
+            const double m = std::min(reach[v], cap);
+            x_[v] = add(x_[v], scale(move[v], m / std::max(1.0, len)));
         }
     }
     return crossings.size();
