@@ -4,8 +4,10 @@
     benchmarks/scripts/bench_report.py results.jsonl [more.jsonl ...] --out-dir docs/bench
                                        [--title T] [--reference METHOD] [--no-plots]
 
-Writes DIR/table.md (per-mesh table + "Scaling" table) and, unless --no-plots,
-DIR/query_time_vs_vertices.png, DIR/error_vs_vertices.png, DIR/memory_vs_vertices.png.
+Writes DIR/table.md (per-mesh table, "Scaling" and "Time/error front" tables) and, unless
+--no-plots, DIR/query_time_vs_vertices.png, DIR/error_vs_vertices.png,
+DIR/memory_vs_vertices.png, DIR/window_sweep.png and DIR/time_vs_error.png (the front: one panel
+per mesh, time against mean error for every method).
 Every output is rendered to a temporary name first and renamed only once all of them succeeded,
 so a failure never leaves a half-written file behind (DESIGN.md §4). See benchmarks/README.md.
 
@@ -34,7 +36,7 @@ NUMERIC_KEYS = (
 DASH = "\u2013"  # shown for a value that is missing (null, no ok run, no reference)
 TABLE_NAME = "table.md"
 PLOT_NAMES = ("query_time_vs_vertices.png", "error_vs_vertices.png", "memory_vs_vertices.png",
-              "window_sweep.png")
+              "window_sweep.png", "time_vs_error.png")
 
 
 class ReportError(Exception):
@@ -339,6 +341,31 @@ def build_report(records, reference_override=None):
     return Report(rows, scaling, failures, records, notes)
 
 
+def front(report):
+    """{mesh: [(method, mean error vs reference, median pre+query s, on the front), ...]} sorted by
+    time. The reference method has error 0. A method is on the front (Pareto optimal) when no other
+    method on the mesh is at least as fast and at least as accurate while better in one of them;
+    methods without a time or an error are left out."""
+    out = OrderedDict()
+    for r in report.rows:
+        if r.pre_query is None:
+            continue
+        is_ref = r.method == r.mesh_info.reference
+        err = 0.0 if is_ref else r.mean_err
+        if err is None:
+            continue
+        out.setdefault(r.mesh_info.mesh, []).append((r.method, err, r.pre_query))
+    result = OrderedDict()
+    for mesh, pts in out.items():
+        rows = []
+        for m, e, t in sorted(pts, key=lambda p: (p[2], p[1], p[0])):
+            dominated = any((t2 <= t and e2 <= e) and (t2 < t or e2 < e)
+                            for m2, e2, t2 in pts if m2 != m)
+            rows.append((m, e, t, not dominated))
+        result[mesh] = rows
+    return result
+
+
 # --------------------------------------------------------------------------------------------
 # Formatting
 
@@ -453,6 +480,25 @@ def render_table(report, title, command, inputs):
     else:
         out.append("No (family, method) with timings on at least two distinct vertex counts.")
 
+    out += ["", "## Time/error front", ""]
+    fr = front(report)
+    if fr:
+        out += [
+            "Per mesh, the methods by median pre+query time, with their mean relative error "
+            "against the reference (0 for the reference itself); \"front\" marks the methods no "
+            "other method beats on both (Pareto optimal). time_vs_error.png draws the same.",
+            "",
+        ]
+        frows = []
+        for mesh, pts in fr.items():
+            for m, e, t, on in pts:
+                frows.append([md_cell(mesh), md_cell(m), fmt_num(t), fmt_err(e),
+                              "front" if on else ""])
+        out += md_table(["mesh", "method", "pre+query s", "mean rel. error", "front"],
+                        ["l", "l", "r", "r", "l"], frows)
+    else:
+        out.append("No mesh with a time and an error for its methods.")
+
     out += ["", "## Provenance", ""]
     out.append("- inputs: " + ", ".join(f"`{md_cell(p)}` ({n} lines)" for p, n in inputs))
     for key, label in (("git", "git"), ("compiler_flags", "compiler flags"),
@@ -550,7 +596,7 @@ def window_series(report):
 
 def render_plots(report, title, plt, paths):
     colors, markers = _styles(report)
-    query_path, error_path, memory_path, window_path = paths
+    query_path, error_path, memory_path, window_path, front_path = paths
 
     def k_label(family, method):
         s = report.scaling_for(family, method)
@@ -607,6 +653,43 @@ def render_plots(report, title, plt, paths):
     fig.suptitle(f"{title}: error and time against the window")
     fig.tight_layout()
     fig.savefig(window_path, format="png", dpi=120)
+    plt.close(fig)
+
+    render_front(report, title, plt, front_path, colors)
+
+
+def render_front(report, title, plt, path, colors):
+    """One panel per mesh: median pre+query time against mean error, every method a point, the
+    front joined by a line; the reference (error 0) drawn at the panel's left edge."""
+    fr = front(report)
+    n = max(1, len(fr))
+    cols = min(3, n)
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(5.2 * cols, 4.4 * rows), squeeze=False)
+    for ax, (mesh, pts) in zip([a for row in axes for a in row], fr.items()):
+        errors = [e for _, e, _, _ in pts if e > 0]
+        floor = min(errors) / 10 if errors else 1e-16
+        for m, e, t, on in pts:
+            x = e if e > 0 else floor
+            ax.plot([x], [t], marker="o" if on else "x", linestyle="none",
+                    color=colors.get(m, "k"), label=m + (" (reference)" if e == 0 else ""))
+            ax.annotate(m, (x, t), textcoords="offset points", xytext=(4, 3), fontsize=7)
+        line = sorted((e if e > 0 else floor, t) for _, e, t, on in pts if on)
+        ax.plot([x for x, _ in line], [t for _, t in line], color="0.6", linewidth=1, zorder=0)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.set_title(mesh, fontsize=9)
+        ax.set_xlabel("mean relative error vs reference")
+        ax.set_ylabel("pre+query time, median [s]")
+    for ax in [a for row in axes for a in row][len(fr):]:
+        ax.axis("off")
+    if not fr:
+        axes[0][0].text(0.5, 0.5, "no mesh with times and errors", ha="center", va="center",
+                        transform=axes[0][0].transAxes)
+    fig.suptitle(f"{title}: time against error (o on the front, x dominated)")
+    fig.tight_layout()
+    fig.savefig(path, format="png", dpi=110)
     plt.close(fig)
 
 

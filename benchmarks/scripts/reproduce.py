@@ -1042,9 +1042,11 @@ def part_wrinkles(ctx, d):
 # (peer method, what it computes, our counterpart in `bench geodesic`)
 PEER_METHODS = [("gc-mmp", "MMP (exact polyhedral)", "exact-mmp"),
                 ("gc-heat", "heat method", "heat"),
-                ("gc-fmm", "fast marching", "dijkstra"),
+                ("gc-fmm", "fast marching", "fmm"),
                 ("gc-flipout", "FlipOut (edge flips)", "exact-mmp path"),
                 ("gc-pc-heat", "point-cloud heat", "gcf-points")]
+# Our surface methods beside the peers: their counterparts, and the rest of the time/error front.
+PEER_OURS_SURFACE = "exact-mmp,heat,heat-idt,dijkstra,fmm,gcf-window:8,gcf-window:8/faces"
 PEER_EXACT_RULE = 1e-12  # gc-mmp against exact-mmp: mean relative difference at most this
 PEER_SRC = os.path.join(ROOT, "benchmarks", "peers")
 
@@ -1191,7 +1193,7 @@ def part_peers(ctx, d):
     cache, runs, rows, plotdata, missing = {}, [], [], {}, []
     ours_all = []
     sets = [("surface", s["mmp_surfaces"], s["mmp_sources"], rep,
-             "exact-mmp,heat,dijkstra", ["gc-mmp", "gc-heat", "gc-fmm", "gc-flipout"]),
+             PEER_OURS_SURFACE, ["gc-mmp", "gc-heat", "gc-fmm", "gc-flipout"]),
             ("points", s["d_meshes"], s["d_sources"], 1, "exact-mmp,gcf-points",
              ["gc-pc-heat"])]
     for kind, names, nsources, repeat, ours_methods, peer_methods in sets:
@@ -1257,6 +1259,21 @@ def part_peers(ctx, d):
         raise PartError("no mesh available (missing: %s)" % ", ".join(missing))
     write_jsonl(os.path.join(d, "peers.jsonl"), runs)
     write_jsonl(os.path.join(d, "ours.jsonl"), ours_all)
+    # The time/error front on each surface mesh: our methods and the peers' distance fields.
+    front_lines = [r for r in ours_all if r.get("peer_set") == "surface"]
+    family = {r["mesh"]: r.get("family") for r in front_lines}
+    for r in runs:
+        if r["method"] in ("gc-mmp", "gc-heat", "gc-fmm"):
+            front_lines.append(dict(
+                method=r["method"], mesh=r["mesh"], family=family.get(r["mesh"]),
+                vertices=r["vertices"], status="ok",
+                reference="exact-mmp", source=r["source"], repetition=r["repetition"],
+                pre_seconds=r["pre_seconds"], query_seconds=r["query_seconds"],
+                mean_rel_error=r.get("mean_rel_error"), max_rel_error=r.get("max_rel_error"),
+                compiler_flags=r.get("compiler_flags")))
+    write_jsonl(os.path.join(d, "front.jsonl"), front_lines)
+    bench_report([os.path.join(d, "front.jsonl")], os.path.join(d, "front"),
+                 "Ours and geometry-central's: time against error")
     median = statistics.median
     exact_worst = None
     for peer, what, counterpart in PEER_METHODS:
@@ -1345,8 +1362,9 @@ def part_peers(ctx, d):
         "exact-mmp`, the source and its one-ring excluded (the formula of the bench lines' "
         "mean_rel_error). Times are pre + query seconds inside each program (loading excluded); "
         "gc-heat's pre is the solver set-up, gc-pc-heat's the first solve minus a second; the "
-        "query-only ratio compares the query seconds alone. gc-fmm is set against our dijkstra "
-        "(the tool has no fast marching). gc-flipout shortens a Dijkstra edge path from the "
+        "query-only ratio compares the query seconds alone. gc-fmm is set against our fmm "
+        "(both first-order fast marching; ours splits obtuse corners by unfolding, so on meshes "
+        "with obtuse faces its error is the lower). gc-flipout shortens a Dijkstra edge path from the "
         "source to the vertex farthest from it (near the cut locus, where geodesics of other "
         "classes are almost as short) into a locally shortest geodesic; its error is the "
         "relative difference of that path's length from the exact distance, its time is set "
@@ -1358,7 +1376,10 @@ def part_peers(ctx, d):
     return dict(table=table, plot="claim.png", verdict=verdict, figure=figure,
                 timing_figure="time ratio " + timing if timing else None, notes=notes,
                 links=[("peer runs (JSON lines)", "peers.jsonl"),
-                       ("our runs (JSON lines)", "ours.jsonl")])
+                       ("our runs (JSON lines)", "ours.jsonl"),
+                       ("time against error, ours and the peers' (one panel per mesh)",
+                        "front/time_vs_error.png"),
+                       ("the front's table", "front/table.md")])
 
 
 PARTS = [

@@ -412,7 +412,9 @@ void bind_geodesic(py::module_& parent) {
         py::arg("V"), py::arg("F"), py::arg("sources"), py::arg("method") = "exact-mmp",
         py::arg("window") = bench::default_window(), py::arg("with_report") = false,
         "Geodesic distance from `sources` to every vertex of the mesh (V, F), by a named method "
-        "(see methods(): exact-mmp, exact-cgal, heat, heat-idt, dijkstra, gcf-exact, gcf-window, "
+        "(see methods(): exact-mmp, exact-cgal, heat, heat-idt, dijkstra, fmm, fmm-no-unfold, "
+        "gcf-exact, "
+        "gcf-window, "
         "gcf-window-thesis, gcf-points; gcf methods take ':W' and '/faces'). sources: a vertex "
         "index, a sequence of them, or (face, (b0, b1, b2)) points of F's faces. Returns a "
         "float64 array with one distance per row of V (inf where unreachable or unused); with "

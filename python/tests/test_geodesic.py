@@ -43,7 +43,7 @@ def test_curvature_flow_path_on_a_plane(flat):
     np.testing.assert_allclose(points[-1], V[-1], atol=1e-9)
 
 
-@pytest.mark.parametrize("method", ["exact-mmp", "heat", "heat-idt", "dijkstra", "gcf-window:8"])
+@pytest.mark.parametrize("method", ["exact-mmp", "heat", "heat-idt", "dijkstra", "fmm", "gcf-window:8"])
 def test_distances_equal_the_command_line(spot, cli, tmp_path, method):
     path, V, F = spot
     out = tmp_path / "d.txt"

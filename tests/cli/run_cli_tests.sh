@@ -64,7 +64,7 @@ fi
 
 # --- distances by every method ------------------------------------------------------------------
 if in_section distances; then
-for m in exact-mmp exact-cgal heat heat-idt dijkstra; do
+for m in exact-mmp exact-cgal heat heat-idt dijkstra fmm; do
   expect_ok "distances $m on spot" "$bin" geodesic distances "$spot" --source 0 --method $m --out d_$m.txt
   if [ "$(wc -l <d_$m.txt)" -eq 2930 ] && [ "$(head -1 d_$m.txt)" = "0" ]; then ok "distances $m: 2930 lines, source at 0"
   else fail "distances $m: $(wc -l <d_$m.txt) lines, first '$(head -1 d_$m.txt)'"; fi
@@ -72,6 +72,9 @@ done
 # Dijkstra walks along edges, so it is never shorter than the exact polyhedral distance.
 if paste d_dijkstra.txt d_exact-cgal.txt | awk '{ if ($1 < $2 * (1 - 1e-12)) bad++ } END { exit bad > 0 }'; then
   ok "dijkstra >= exact-cgal on every vertex"; else fail "dijkstra shorter than exact somewhere"; fi
+# Fast marching takes every edge update Dijkstra takes: never above it, and well below on average.
+if paste d_fmm.txt d_dijkstra.txt d_exact-cgal.txt | awk '{ if ($1 > $2 * (1 + 1e-12)) bad++; f += ($1 - $3); g += ($2 - $3) } END { exit (bad > 0 || f * 2 > g) }'; then
+  ok "fmm <= dijkstra on every vertex, half its excess over exact-cgal or less"; else fail "fmm above dijkstra somewhere, or not closer to exact"; fi
 # Our exact method and CGAL's compute the same polyhedral distance.
 if paste d_exact-mmp.txt d_exact-cgal.txt | awk '{ e = $1 - $2; if (e < 0) e = -e; if (e > 1e-9 * ($2 + 1e-300)) bad++ } END { exit bad > 0 }'; then
   ok "exact-mmp = exact-cgal on every vertex (1e-9 relative)"; else fail "exact-mmp differs from exact-cgal"; fi

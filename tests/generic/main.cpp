@@ -54,6 +54,7 @@ void compare(const char* mesh, const Results& r, const Results& ref) {
     check(mesh, "exact-mmp", r.mmp, ref.mmp);
     check(mesh, "heat", r.heat, ref.heat);
     check(mesh, "dijkstra", r.dijkstra, ref.dijkstra);
+    check(mesh, "fmm", r.fmm, ref.fmm);
     check(mesh, "gcf-window", r.gcf, ref.gcf);
     check(mesh, "mmp path", r.mmp_path, ref.mmp_path);
     check(mesh, "gcf path", r.gcf_path, ref.gcf_path);

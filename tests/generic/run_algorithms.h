@@ -1,8 +1,8 @@
 // The main public algorithms run on one mesh type: exact MMP distances and path, heat, Dijkstra,
-// curvature-flow distances (gcf-window) and the two-point flow, unfolding. One source file per
-// mesh type instantiates run_algorithms: CGAL::Surface_mesh (generic_surface_mesh.cpp, the
-// reference), CGAL::Polyhedron_3 (generic_polyhedron.cpp) and the minimal mesh of minimal_mesh.h
-// (generic_minimal.cpp); main.cpp compares the results.
+// fast marching, curvature-flow distances (gcf-window) and the two-point flow, unfolding. One
+// source file per mesh type instantiates run_algorithms: CGAL::Surface_mesh
+// (generic_surface_mesh.cpp, the reference), CGAL::Polyhedron_3 (generic_polyhedron.cpp) and the
+// minimal mesh of minimal_mesh.h (generic_minimal.cpp); main.cpp compares the results.
 #pragma once
 
 #include <tapeline/surfaces/analytic_surface_types.h>
@@ -13,7 +13,7 @@
 namespace tapeline_test::generic {
 
 struct Results {
-    std::vector<double> mmp, heat, dijkstra, gcf;  // per vertex, in the order of vertices(tm)
+    std::vector<double> mmp, heat, dijkstra, fmm, gcf;  // per vertex, in the order of vertices(tm)
     double mmp_path = 0, gcf_path = 0, unfolded = 0;
 };
 
@@ -28,6 +28,7 @@ Results on_minimal_mesh(const tapeline::SurfaceSpec& spec, std::size_t source, s
 #include <tapeline/geodesic/curvature_flow.h>
 #include <tapeline/geodesic/dijkstra.h>
 #include <tapeline/geodesic/exact_mmp.h>
+#include <tapeline/geodesic/fast_marching.h>
 #include <tapeline/geodesic/heat.h>
 #include <tapeline/geodesic/unfold.h>
 
@@ -56,6 +57,7 @@ Results run_algorithms(const Mesh& tm, std::size_t source, std::size_t target) {
         tg::exact_mmp_path(tm, tg::SurfacePoint<Mesh>(s), tg::SurfacePoint<Mesh>(t)).length;
     tg::heat_distances(tm, s, field(r.heat));
     tg::dijkstra_distances(tm, s, field(r.dijkstra));
+    tg::fast_marching_distances(tm, s, field(r.fmm));
     tg::CurvatureFlowDistanceOptions gcf;
     gcf.window = 8;
     tg::gcf_distances(tm, s, field(r.gcf), gcf);

@@ -1,4 +1,4 @@
-// Behaviour shared by the three methods: generic mesh types, several components, isolated
+// Behaviour shared by the baseline methods: generic mesh types, several components, isolated
 // vertices, boundary, and every rejected input with its message (DESIGN.md §4, §6).
 #include <tapeline/core/errors.h>
 #include <tapeline_test/geodesic.h>
@@ -17,7 +17,7 @@ namespace tg = tapeline_test::geodesic;
 namespace {
 
 const tg::Method kAll[] = {tg::Method::exact, tg::Method::heat, tg::Method::heat_idt,
-                           tg::Method::dijkstra};
+                           tg::Method::dijkstra, tg::Method::fast_marching};
 
 using tapeline_test::contains;
 using tapeline_test::expect_error;
@@ -30,7 +30,9 @@ using tapeline_test::expect_error;
 // exact 1.9e-16, dijkstra 5.1e-16, heat 1.8e-14, heat_idt 8.9e-15). Paths to 1e-12.
 TEST(GeodesicGeneric, SurfaceMeshAndPolyhedronAgree) {
     auto tol = [](tg::Method m) {
-        return m == tg::Method::exact || m == tg::Method::dijkstra ? 1e-12 : 1e-9;
+        return m == tg::Method::exact || m == tg::Method::dijkstra || m == tg::Method::fast_marching
+                   ? 1e-12
+                   : 1e-9;
     };
     const tg::Soup soup = tg::surface("ellipsoid:1,1,0.5:3:0.2");
     tg::Sources sources;
@@ -132,7 +134,7 @@ TEST(GeodesicErrors, VertexNotInTheMesh) {
 TEST(GeodesicErrors, BadFaceLocation) {
     const tg::Soup soup = tg::surface("icosphere:1");  // 80 faces
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    for (auto m : {tg::Method::exact, tg::Method::dijkstra}) {
+    for (auto m : {tg::Method::exact, tg::Method::dijkstra, tg::Method::fast_marching}) {
         expect_error<tapeline::InvalidInput>(
             [&] {
                 tg::distances(soup, m, tg::Sources{{tg::SurfacePoint::face(500, {1, 0, 0})}});

@@ -23,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SCRIPT = ROOT / "benchmarks" / "scripts" / "bench_report.py"
 DASH = "\u2013"
 PLOTS = ("query_time_vs_vertices.png", "error_vs_vertices.png", "memory_vs_vertices.png",
-         "window_sweep.png")
+         "window_sweep.png", "time_vs_error.png")
 
 
 def load_module():
@@ -155,7 +155,7 @@ class TableTest(ScriptTestCase):
     def setUp(self):
         super().setUp()
         self.proc, self.text = self.report_ok(scaling_lines(), "--no-plots", "--title", "Synthetic")
-        self.main, self.scaling = parse_tables(self.text)
+        self.main, self.scaling, self.front = parse_tables(self.text)
 
     def row(self, method, vertices):
         matches = [r for r in self.main if r["method"] == method and r["|V|"] == str(vertices)]
@@ -271,6 +271,31 @@ class TableTest(ScriptTestCase):
         self.assertIn("`slow` on `sphere:100`: crash \u00d72", self.text)
         self.assertIn("signal 11", self.text)  # first occurrence only
         self.assertNotIn("second crash", self.text)
+
+    def test_time_error_front(self):
+        # ref: exact, slow; fast: quick and rough; mid: in between on both; worse: slower and
+        # rougher than mid (dominated); tie: as fast as fast but rougher (dominated).
+        lines = [line("ref", "m:1", 100, pre_seconds=0.0, query_seconds=1.0),
+                 line("fast", "m:1", 100, query_seconds=0.01, mean_rel_error=0.1),
+                 line("mid", "m:1", 100, query_seconds=0.1, mean_rel_error=0.01),
+                 line("worse", "m:1", 100, query_seconds=0.2, mean_rel_error=0.02),
+                 line("tie", "m:1", 100, query_seconds=0.01, mean_rel_error=0.2),
+                 line("noerr", "m:1", 100, query_seconds=0.05, mean_rel_error=None)]
+        module = load_module()
+        src = self.tmp / "results.jsonl"
+        write_jsonl(src, lines)
+        fr = module.front(module.build_report(module.read_records([str(src)])))
+        self.assertEqual(list(fr), ["m:1"])
+        got = {m: (e, t, on) for m, e, t, on in fr["m:1"]}
+        self.assertEqual(set(got), {"ref", "fast", "mid", "worse", "tie"})
+        self.assertEqual([m for m, _, _, on in fr["m:1"] if on], ["fast", "mid", "ref"])
+        self.assertEqual(got["ref"], (0.0, 1.0, True))
+        self.assertFalse(got["worse"][2])
+        self.assertFalse(got["tie"][2])
+        _, table = self.report_ok(lines, "--no-plots")
+        self.assertIn("## Time/error front", table)
+        self.assertRegex(table, r"\| m:1 \| mid \| 0\.100 \| 1\.00e-02 \| front \|")
+        self.assertRegex(table, r"\| m:1 \| worse \| 0\.200 \| 2\.00e-02 \| +\|")
 
     def test_stdout_lists_files_and_no_temporaries_left(self):
         self.assertEqual(self.proc.stdout.split(), [str(self.out / "table.md")])

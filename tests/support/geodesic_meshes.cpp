@@ -1,5 +1,6 @@
 // Test meshes, smooth truth and the soup -> CGAL mesh conversions of the geodesic tests.
 #define TAPELINE_TEST_GEODESIC_WITH_CGAL
+#include <tapeline_test/fast_marching.h>
 #include <tapeline_test/geodesic.h>
 
 #include <tapeline/surfaces/analytic_geodesics.h>
@@ -29,6 +30,8 @@ const char* name(Method m) {
             return "heat_idt";
         case Method::dijkstra:
             return "dijkstra";
+        case Method::fast_marching:
+            return "fast_marching";
     }
     return "?";
 }
@@ -45,6 +48,10 @@ Field distances(const Soup& soup, Method method, const Sources& sources, MeshKin
             return cgal::heat_field(soup, sources, kind, heat);
         case Method::dijkstra:
             return cgal::dijkstra_field(soup, sources, kind);
+        case Method::fast_marching: {
+            FastMarchingField f = fast_marching(soup, sources, {}, kind);
+            return Field{std::move(f.d), f.report};
+        }
     }
     throw std::logic_error("unknown method");
 }

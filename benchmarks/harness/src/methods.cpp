@@ -20,6 +20,21 @@ geodesic::HeatOptions heat_options(const MethodName& m) {
     return o;
 }
 
+geodesic::FastMarchingOptions fmm_options(const MethodName& m) {
+    geodesic::FastMarchingOptions o;
+    o.unfold_obtuse = m.base != "fmm-no-unfold";
+    return o;
+}
+
+MethodResult run_fmm_entry(const Mesh& mesh, const Sources& src, const MethodName& m,
+                           const MethodSettings&) {
+    return internal::run_fmm(mesh, src, fmm_options(m));
+}
+
+nlohmann::json fmm_json(const MethodName& m, const MethodSettings&) {
+    return nlohmann::json(fmm_options(m));
+}
+
 geodesic::CurvatureFlowDistanceOptions gcf_options(const MethodName& m) {
     const bool thesis = m.base == "gcf-window-thesis";
     geodesic::CurvatureFlowDistanceOptions o;
@@ -113,6 +128,8 @@ const std::vector<MethodEntry>& method_table() {
          [](const MethodName&, const MethodSettings&) {
              return nlohmann::json(DijkstraOptions{});
          }},
+        {"fmm", run_fmm_entry, fmm_json},
+        {"fmm-no-unfold", run_fmm_entry, fmm_json},
         {"gcf-exact", run_gcf_entry, gcf_json},
         {"gcf-window", run_gcf_entry, gcf_json},
         {"gcf-window-thesis", run_gcf_entry, gcf_json},

@@ -26,7 +26,7 @@ struct Soup {
     std::vector<std::vector<std::size_t>> faces;
 };
 
-enum class Method { exact, heat, heat_idt, dijkstra };
+enum class Method { exact, heat, heat_idt, dijkstra, fast_marching };
 const char* name(Method m);
 
 enum class MeshKind {
@@ -56,7 +56,8 @@ struct Field {
 };
 
 /// Runs one method through its one-shot free function. Options only matter for heat / heat_idt
-/// (heat_idt forces intrinsic_delaunay = true).
+/// (heat_idt forces intrinsic_delaunay = true); fast_marching runs with its default options
+/// (tapeline_test/fast_marching.h takes others and returns the whole report).
 Field distances(const Soup& soup, Method method, const Sources& sources,
                 MeshKind kind = MeshKind::surface_mesh, HeatOptions heat = {});
 

@@ -46,4 +46,19 @@ inline void to_json(nlohmann::json& j, const DijkstraOptions&) {
     j = nlohmann::json::object();
 }
 
+inline void to_json(nlohmann::json& j, const FastMarchingOptions& o) {
+    j = nlohmann::json::object();
+    j["unfold_obtuse"] = o.unfold_obtuse;
+    j["max_unfold_faces"] = o.max_unfold_faces;
+}
+
+inline void to_json(nlohmann::json& j, const FastMarchingReport& r) {
+    to_json(j, static_cast<const DistanceReport&>(r));
+    j["obtuse_corners"] = r.obtuse_corners;
+    j["virtual_edges"] = r.virtual_edges;
+    j["unsplit_obtuse"] = r.unsplit_obtuse;
+    j["face_updates"] = r.face_updates;
+    j["edge_updates"] = r.edge_updates;
+}
+
 }  // namespace tapeline::geodesic

@@ -1,4 +1,5 @@
-// Options and reports of the baseline geodesic methods (exact CGAL, heat, Dijkstra).
+// Options and reports of the baseline geodesic methods (exact CGAL, heat, Dijkstra, fast
+// marching).
 //
 // Light header without CGAL (DESIGN.md §3): loggers, benchmark drivers and test facades include it
 // to read and print what an algorithm did without paying for the CGAL templates.
@@ -72,6 +73,28 @@ struct HeatOptions {
 
 /// Dijkstra on the edge graph has no behavioural knob; see ExactCgalOptions.
 struct DijkstraOptions {};
+
+/// Fast marching on triangle meshes (Kimmel and Sethian 1998; fast_marching.h).
+struct FastMarchingOptions {
+    /// Split every obtuse corner by a virtual edge to a vertex found by unfolding the faces
+    /// beyond its opposite edge into the corner's plane, at an acute angle to both of the corner's
+    /// edges (Kimmel and Sethian, section 4). Without it an obtuse corner is updated from its own
+    /// face only, and the front can pass it before the values it needs are final (larger errors
+    /// on meshes with obtuse faces; kept as a knob to measure that).
+    bool unfold_obtuse = true;
+    /// At most this many faces are unfolded for one obtuse corner; a corner whose section holds
+    /// no vertex within them (or that meets the border first) keeps its own face's update.
+    std::size_t max_unfold_faces = 32;
+};
+
+/// DistanceReport plus what the fast marching did.
+struct FastMarchingReport : DistanceReport {
+    std::size_t obtuse_corners = 0;  ///< corners with an angle above 90 degrees
+    std::size_t virtual_edges = 0;   ///< obtuse corners split by a virtual edge
+    std::size_t unsplit_obtuse = 0;  ///< obtuse corners left without one (border, cap)
+    std::size_t face_updates = 0;    ///< two-vertex (plane-wave) updates that were accepted
+    std::size_t edge_updates = 0;    ///< one-vertex updates (along an edge) that were accepted
+};
 
 /// A shortest path on the surface: polyline from the start point to the end point.
 /// An unreachable end point is an empty polyline with length +infinity.

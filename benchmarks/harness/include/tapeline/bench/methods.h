@@ -126,6 +126,8 @@ MethodResult run_exact_cgal(const Mesh& mesh, const Sources& sources);
 MethodResult run_exact_mmp(const Mesh& mesh, const Sources& sources);
 MethodResult run_heat(const Mesh& mesh, const Sources& sources, const geodesic::HeatOptions& o);
 MethodResult run_dijkstra(const Mesh& mesh, const Sources& sources);
+MethodResult run_fmm(const Mesh& mesh, const Sources& sources,
+                     const geodesic::FastMarchingOptions& options);
 MethodResult run_gcf(const Mesh& mesh, const Sources& sources,
                      const geodesic::CurvatureFlowDistanceOptions& options);
 /// gcf-points: the vertices of `mesh` as a point cloud (with noise when settings.noise > 0).

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# The time/error front of the distance methods (docs/benchmarks.md, "Time against error"): every
+# distance method side by side in one run, single thread, two sources, medians of three, errors
+# against exact-mmp, on the meshes of the performance targets: the 41k-vertex icosphere and
+# jittered triaxial ellipsoid, three scanned shared meshes (armadillo, bunny, fertility), and the
+# 164k-vertex icosphere (one source, one repetition). bench_report.py writes the tables and
+# time_vs_error.png (one panel per mesh) beside the JSON lines.
+#   benchmarks/run_geodesic_front.sh [build/apps/tapeline] [out-dir]
+# geometry-central's methods (gc-mmp, gc-heat, gc-fmm) join ours on the front in the peers part
+# of benchmarks/reproduce.sh (--peers DIR).
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+bin=${1:-$root/build/apps/tapeline}
+out=${2:-$root/docs/bench_front}
+shared=$root/../shared/data/meshes
+mkdir -p "$out"
+jsonl="$out/front.jsonl"
+methods=exact-mmp,heat,heat-idt,dijkstra,fmm,fmm-no-unfold,gcf-window:8,gcf-window:8/faces
+common=(--timeout 900 --memory-limit 16 --seed 1 --reference exact-mmp --threads 1 --methods "$methods")
+
+meshes=(--surface icosphere:6 --surface ellipsoid:1,0.6,0.3:6:0.25)
+for m in armadillo.obj bunny_decimated.off fertility.off; do
+  if [ -f "$shared/$m" ]; then
+    meshes+=(--mesh "$shared/$m")
+  else
+    echo "run_geodesic_front: $shared/$m not found; left out" >&2
+  fi
+done
+"$bin" bench geodesic "${common[@]}" --sources 2 --repeat 3 "${meshes[@]}" --out "$jsonl"
+"$bin" bench geodesic "${common[@]}" --sources 1 --repeat 1 --append --surface icosphere:7 \
+  --out "$jsonl"
+/usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$jsonl" --out-dir "$out" \
+  --title "Distance methods: time against error"
