@@ -190,6 +190,60 @@ void run_distances(const DistancesArgs& args) {
               << '\n';
 }
 
+struct MatrixArgs {
+    MeshArgs mesh;
+    std::vector<long> sources;
+    unsigned threads = 0;
+    std::string out;
+};
+
+// Exact distances from each source to every vertex: one row per source, in the order given.
+void run_matrix(const MatrixArgs& args) {
+    if (extension_of(args.out) != ".txt") {
+        throw InvalidInput(args.out + ": the matrix is written as .txt (one row per source)");
+    }
+    InputMesh input = load(args.mesh);
+    for (const std::string& w : input.loaded.report.warnings) {
+        std::cerr << "tapeline: warning: " << w << '\n';
+    }
+    std::vector<Vertex> sources;
+    for (long id : args.sources) {
+        const std::vector<Vertex> copies = vertices_of(input, id, "--source");
+        if (copies.size() != 1) {
+            throw InvalidInput("--source " + std::to_string(id) + ": vertex " + std::to_string(id) +
+                               " of " + input.name + " stands for " +
+                               std::to_string(copies.size()) +
+                               " mesh vertices (split where the mesh is not manifold); a row "
+                               "needs one source: give another vertex");
+        }
+        sources.push_back(copies.front());
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::vector<std::vector<double>> rows =
+        bench::exact_mmp_matrix(input.loaded.mesh, sources, args.threads);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_file_atomically(args.out, [&](std::ostream& out) {
+        out.precision(17);
+        for (const auto& row : rows) {
+            const std::vector<double> in_order = input.loaded.to_input_order(row);
+            for (std::size_t i = 0; i < in_order.size(); ++i) {
+                out << (i ? " " : "");
+                if (std::isfinite(in_order[i])) {
+                    out << in_order[i];
+                } else {
+                    out << "inf";
+                }
+            }
+            out << '\n';
+        }
+    });
+    std::cout << "wrote " << args.out << ": exact-mmp distance matrix, " << rows.size()
+              << " sources x " << input.loaded.to_input_order(rows.front()).size()
+              << " vertices of " << input.name << ", " << args.threads << " threads"
+              << (args.threads == 0 ? " (every hardware thread)" : "") << ", " << seconds << " s\n";
+}
+
 struct PathArgs {
     MeshArgs mesh;
     long from = -1;
@@ -313,6 +367,28 @@ void register_geodesic_commands(CLI::App& app) {
             run_distances(*d);
         }
     });
+
+    auto mx = std::make_shared<MatrixArgs>();
+    CLI::App* matrix = geo->add_subcommand(
+        "matrix",
+        "Exact distances (exact-mmp) from each source to every vertex: one row per source, "
+        "rows computed in parallel");
+    add_mesh_args(matrix, mx->mesh);
+    matrix
+        ->add_option("--source", mx->sources,
+                     "Source vertex (index in the input file; one row "
+                     "each, in the order given; repeatable)")
+        ->required()
+        ->check(not_empty);
+    matrix->add_option("--threads", mx->threads, "Threads for the rows (0: every hardware thread)")
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
+    matrix
+        ->add_option("--out,-o", mx->out,
+                     "Output .txt: one row per source, one distance per input vertex, "
+                     "space-separated, inf if unreachable")
+        ->required();
+    matrix->callback([mx] { run_matrix(*mx); });
 
     auto p = std::make_shared<PathArgs>();
     CLI::App* path = geo->add_subcommand(

@@ -687,7 +687,7 @@ def render_front(report, title, plt, path, colors):
     if not fr:
         axes[0][0].text(0.5, 0.5, "no mesh with times and errors", ha="center", va="center",
                         transform=axes[0][0].transAxes)
-    fig.suptitle(f"{title}: time against error (o on the front, x dominated)")
+    fig.suptitle(f"{title} (o: on the front, x: dominated)")
     fig.tight_layout()
     fig.savefig(path, format="png", dpi=110)
     plt.close(fig)

@@ -90,6 +90,25 @@ expect_ok "dijkstra from the face point" "$bin" geodesic distances "$spot" --sou
 if paste multi.txt d_dijkstra.txt d100.txt dface.txt | awk '{ m = $2; if ($3 < m) m = $3; if ($4 < m) m = $4;
      e = $1 - m; if (e < 0) e = -e; if (e > 1e-12 * (m + 1)) bad++; n++ } END { exit !(n == 2930 && bad == 0) }'; then
   ok "several sources = minimum of the single-source fields"; else fail "multi-source field is not the minimum"; fi
+# The distance matrix: row s is the exact field from source s; the geodesic distance is symmetric;
+# the rows do not depend on how many threads computed them.
+expect_ok "matrix of 4 sources, 1 thread" "$bin" geodesic matrix "$spot" --source 0 --source 100 --source 700 \
+  --source 2100 --threads 1 --out m1.txt
+expect_ok "matrix of 4 sources, 2 threads" "$bin" geodesic matrix "$spot" --source 0 --source 100 --source 700 \
+  --source 2100 --threads 2 --out m2.txt
+if cmp -s m1.txt m2.txt; then ok "matrix: 1 and 2 threads give the same file"; else fail "matrix differs with the thread count"; fi
+if [ "$(wc -l <m1.txt)" -eq 4 ] && head -1 m1.txt | tr ' ' '\n' | paste - d_exact-mmp.txt |
+   awk '{ e = $1 - $2; if (e < 0) e = -e; if (e > 1e-12 * ($2 + 1e-300)) bad++; n++ } END { exit !(n == 2930 && bad == 0) }'; then
+  ok "matrix row 0 = geodesic distances --source 0"; else fail "matrix row 0 differs from the distance field"; fi
+if $py - m1.txt <<'PYEOF'
+import sys
+rows = [[float(x) for x in l.split()] for l in open(sys.argv[1])]
+src = [0, 100, 700, 2100]
+bad = [(i, j) for i in range(4) for j in range(4)
+       if abs(rows[i][src[j]] - rows[j][src[i]]) > 1e-12 * max(rows[i][src[j]], 1e-300)]
+sys.exit(1 if bad or any(rows[i][src[i]] != 0 for i in range(4)) else 0)
+PYEOF
+then ok "matrix: d(a, b) = d(b, a), 0 on the diagonal"; else fail "matrix not symmetric"; fi
 fi
 
 # --- bad input: one line, non-zero exit, nothing written ------------------------------------------
@@ -98,6 +117,9 @@ expect_fail "unknown method" "heatx" "$bin" geodesic distances "$spot" --source 
 expect_fail "vertex out of range" "99999" "$bin" geodesic distances "$spot" --source 99999 --out x.txt
 expect_fail "missing mesh file" "nope.off" "$bin" geodesic distances nope.off --source 0 --out x.txt
 expect_fail "unknown output format" "\.xyz" "$bin" geodesic distances "$spot" --source 0 --out x.xyz
+expect_fail "matrix: not .txt" "written as \.txt" "$bin" geodesic matrix "$spot" --source 0 --out m.csv
+expect_fail "matrix: vertex out of range" "99999" "$bin" geodesic matrix "$spot" --source 0 --source 99999 --out m.txt
+if [ ! -e m.txt ] && [ ! -e m.csv ]; then ok "matrix: nothing written on bad input"; else fail "matrix wrote a file on bad input"; fi
 expect_fail "bad face point" "source-point" "$bin" geodesic distances "$spot" --source-point 5:0.5,0.5 --out x.txt
 expect_fail "face point on a missing face" "face 999999" "$bin" geodesic distances "$spot" --source-point 999999:1,0,0 --out x.txt
 expect_fail "heat takes no face point" "face" "$bin" geodesic distances "$spot" --source-point 5:0.2,0.3,0.5 --method heat --out x.txt

@@ -117,6 +117,13 @@ struct PointCloudRun {
 PointCloudRun run_point_cloud_file(const std::string& path, std::size_t source,
                                    const geodesic::PointCloudDistanceOptions& options);
 
+/// Exact distances from every source to every vertex (row s: sources[s]; indexed by vertex
+/// index, +infinity where unreachable): geodesic::exact_mmp_distance_matrix, one propagation per
+/// row, the rows on `threads` threads (0: every hardware thread).
+std::vector<std::vector<double>> exact_mmp_matrix(const Mesh& mesh,
+                                                  const std::vector<Vertex>& sources,
+                                                  unsigned threads);
+
 /// Current resident set size of this process, in bytes (0 when unknown).
 std::size_t current_rss_bytes();
 
