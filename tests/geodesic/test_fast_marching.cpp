@@ -54,9 +54,7 @@ TEST(FastMarching, LinearFieldIsExactOnFlatMeshes) {
     // (Beyond x = 1 the distance is to the corner (1, 0): a point source, not checked here.)
     {
         const std::size_t n = 24;
-        tg::Soup soup = tg::flat_grid(n, 1.0, /*alternate_diagonals=*/false);
-        for (auto& p : soup.points)
-            p[0] += 2.0 * p[1];
+        const tg::Soup soup = tg::sheared_grid(n);
         tg::Sources row;
         for (std::size_t i = 0; i <= n; ++i)
             row.points.push_back(tg::SurfacePoint::vertex(i));
@@ -176,9 +174,7 @@ TEST(FastMarching, UnfoldingObtuseCornersLowersTheError) {
 // (the plane waves through them and the edges themselves as paths), 0.53 without, as bad as
 // Dijkstra's; the heat method with the intrinsic Delaunay Laplacian measured 2.3e-2 here.
 TEST(FastMarching, ShearedGridNeedsTheVirtualEdges) {
-    tg::Soup soup = tg::flat_grid(24, 1.0, /*alternate_diagonals=*/false);
-    for (auto& p : soup.points)
-        p[0] += 2.0 * p[1];
+    const tg::Soup soup = tg::sheared_grid(24);
     const std::size_t source = 312;  // the centre vertex (12, 12)
     std::vector<double> truth(soup.points.size());
     for (std::size_t v = 0; v < truth.size(); ++v)

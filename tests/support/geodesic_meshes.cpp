@@ -116,6 +116,13 @@ Soup flat_grid(std::size_t n, double size, bool alternate_diagonals) {
     return out;
 }
 
+Soup sheared_grid(std::size_t n) {
+    Soup out = flat_grid(n, 1.0, /*alternate_diagonals=*/false);
+    for (auto& p : out.points)
+        p[0] += 2.0 * p[1];
+    return out;
+}
+
 std::vector<double> analytic_distances(const std::string& spec, const Soup& soup,
                                        std::size_t source) {
     return tapeline::analytic_distances(tapeline::SurfaceSpec::parse(spec), soup.points, source);

@@ -90,6 +90,10 @@ bool shared_mesh(const std::string& relative_path, Soup& out);
 /// Flat square [0, size]^2 in the z = 0 plane, (n+1)^2 vertices; vertex (i, j) is j*(n+1)+i.
 /// Diagonals alternate, or all go from (i, j) to (i+1, j+1).
 Soup flat_grid(std::size_t n, double size, bool alternate_diagonals = true);
+/// flat_grid(n, 1) with every cell cut along the same diagonal, then sheared by x += 2y: convex
+/// (a parallelogram, so distances are Euclidean) with every face's corners at 8, 18 and 153
+/// degrees.
+Soup sheared_grid(std::size_t n);
 /// Smooth truth from tapeline::analytic_distances; empty when the surface has none.
 std::vector<double> analytic_distances(const std::string& spec, const Soup& soup,
                                        std::size_t source);

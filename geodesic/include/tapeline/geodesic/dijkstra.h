@@ -70,34 +70,9 @@ DistanceReport dijkstra_distances(const TriangleMesh& tm, const SourceSet<Triang
         const double dz = CGAL::to_double(p.z()) - CGAL::to_double(q.z());
         return std::sqrt(dx * dx + dy * dy + dz * dz);
     };
-    // Seeds: vertex sources at 0, face-location sources at their straight-line distance to the
-    // corners of their face (checked before any work).
-    for (auto v : sources.vertices)
-        d[index.checked(v, "source vertex")] = 0.0;
-    for (const auto& l : sources.locations) {
-        const auto clean = index.checked(l, "source face location");
-        const auto fv = internal::face_vertices(clean.first, tm);
-        double xyz[3] = {0, 0, 0};
-        for (int k = 0; k < 3; ++k) {
-            const auto& p = get(vpm, fv[k]);
-            xyz[0] += clean.second[k] * CGAL::to_double(p.x());
-            xyz[1] += clean.second[k] * CGAL::to_double(p.y());
-            xyz[2] += clean.second[k] * CGAL::to_double(p.z());
-        }
-        struct Xyz {
-            double a, b, c;
-            double x() const { return a; }
-            double y() const { return b; }
-            double z() const { return c; }
-        } point{xyz[0], xyz[1], xyz[2]};
-        for (int k = 0; k < 3; ++k) {
-            double& dk = d[index.index(fv[k])];
-            // A location on a corner seeds exactly 0 there (clean coordinates are exact).
-            const double seed =
-                clean.second[k] == 1.0 ? 0.0 : point_distance(point, get(vpm, fv[k]));
-            dk = std::min(dk, seed);
-        }
-    }
+    // Seeds (checked before any work): vertex sources at 0, face-location sources at their
+    // straight-line distance to the corners of their face.
+    internal::seed_corners(tm, vpm, index, sources, d);
 
     const auto t0 = internal::Clock::now();
     const internal::Components components = internal::connected_components(tm, index);

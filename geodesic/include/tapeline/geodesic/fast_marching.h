@@ -96,26 +96,8 @@ public:
                                  VertexDistanceMap distances) const {
         if (sources.empty())
             throw InvalidInput(std::string(kWhere) + ": the source set is empty");
-        const std::size_t n = index_.vertex_count();
-        std::vector<double> d(n, internal::kInfinity);
-        for (auto v : sources.vertices)
-            d[index_.checked(v, "source vertex")] = 0.0;
-        for (const auto& l : sources.locations) {
-            const auto clean = index_.checked(l, "source face location");
-            const auto fv = internal::face_vertices(clean.first, tm_);
-            std::array<double, 3> at{0, 0, 0};
-            for (int k = 0; k < 3; ++k)
-                for (int c = 0; c < 3; ++c)
-                    at[c] += clean.second[k] * coordinate(fv[k], c);
-            for (int k = 0; k < 3; ++k) {
-                double dist = 0;
-                for (int c = 0; c < 3; ++c)
-                    dist += (coordinate(fv[k], c) - at[c]) * (coordinate(fv[k], c) - at[c]);
-                // A location on a corner seeds exactly 0 there (clean coordinates are exact).
-                double& dk = d[index_.index(fv[k])];
-                dk = std::min(dk, clean.second[k] == 1.0 ? 0.0 : std::sqrt(dist));
-            }
-        }
+        std::vector<double> d(index_.vertex_count(), internal::kInfinity);
+        internal::seed_corners(tm_, vpm_, index_, sources, d);
         const auto t0 = internal::Clock::now();
         const internal::fmm::RunStats stats = internal::fmm::run(*mesh_, d);
         FastMarchingReport report = report_;
@@ -140,11 +122,6 @@ public:
     const FastMarchingOptions& options() const { return options_; }
 
 private:
-    double coordinate(vertex_descriptor v, int c) const {
-        const auto& p = get(vpm_, v);
-        return CGAL::to_double(c == 0 ? p.x() : c == 1 ? p.y() : p.z());
-    }
-
     const TriangleMesh& tm_;
     typename P::VertexPointMap vpm_;
     Index index_;

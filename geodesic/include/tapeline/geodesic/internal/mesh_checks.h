@@ -281,6 +281,39 @@ double relative_slack(typename boost::graph_traits<TriangleMesh>::face_descripto
     return slack / perimeter;
 }
 
+/// Seeds the distances `d` (per vertex index, +infinity elsewhere) of the methods that start from
+/// vertex values (Dijkstra, fast marching): 0 at a vertex source; a face location gives the
+/// corners of its face their straight-line distance from it (exact within the face; exactly 0 at
+/// a location on a corner). Checks every source (InvalidInput naming it).
+template <class TriangleMesh, class VertexPointMap, class MeshIndexT>
+void seed_corners(const TriangleMesh& tm, VertexPointMap vpm, const MeshIndexT& index,
+                  const SourceSet<TriangleMesh>& sources, std::vector<double>& d) {
+    auto coordinates = [&](typename boost::graph_traits<TriangleMesh>::vertex_descriptor v) {
+        const auto& p = get(vpm, v);
+        return std::array<double, 3>{CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                     CGAL::to_double(p.z())};
+    };
+    for (auto v : sources.vertices)
+        d[index.checked(v, "source vertex")] = 0.0;
+    for (const auto& l : sources.locations) {
+        const auto clean = index.checked(l, "source face location");
+        const auto fv = face_vertices(clean.first, tm);
+        std::array<double, 3> at{0, 0, 0};
+        for (int k = 0; k < 3; ++k) {
+            const auto p = coordinates(fv[k]);
+            for (int c = 0; c < 3; ++c)
+                at[c] += clean.second[k] * p[c];
+        }
+        for (int k = 0; k < 3; ++k) {
+            const auto p = coordinates(fv[k]);
+            const double dx = at[0] - p[0], dy = at[1] - p[1], dz = at[2] - p[2];
+            double& dk = d[index.index(fv[k])];
+            dk =
+                std::min(dk, clean.second[k] == 1.0 ? 0.0 : std::sqrt(dx * dx + dy * dy + dz * dz));
+        }
+    }
+}
+
 /// Writes the distances and checks them: NaN is a SolverFailure, +inf is counted as unreachable.
 template <class MeshIndexT, class VertexDistanceMap>
 std::size_t write_distances(const std::vector<double>& d, const MeshIndexT& index,
