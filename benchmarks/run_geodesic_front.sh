@@ -4,7 +4,8 @@
 # against exact-mmp, on the meshes of the performance targets: the 41k-vertex icosphere and
 # jittered triaxial ellipsoid, three scanned shared meshes (armadillo, bunny, fertility), and the
 # 164k-vertex icosphere (one source, one repetition). bench_report.py writes the tables and
-# time_vs_error.png (one panel per mesh) beside the JSON lines.
+# time_vs_error.png (one panel per mesh) beside the JSON lines; repair_share.py writes repair.md,
+# the curvature-flow field's repair share and flow work on every shared mesh.
 #   benchmarks/run_geodesic_front.sh [build/apps/tapeline] [out-dir]
 # geometry-central's methods (gc-mmp, gc-heat, gc-fmm) join ours on the front in the peers part
 # of benchmarks/reproduce.sh (--peers DIR).
@@ -31,3 +32,14 @@ done
   --out "$jsonl"
 /usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$jsonl" --out-dir "$out" \
   --title "Distance methods: time against error"
+# Where the curvature-flow field's time goes on every shared mesh up to 43k vertices (bob_loop3,
+# 342k, left out): gcf-window:8/faces beside exact-mmp, one source, one repetition.
+repair="$out/repair.jsonl"
+all=()
+for m in spot.obj bob_tri.obj blub_triangulated.obj kitten.off fandisk.obj decimated-knight.off \
+  3holes.off bunny_decimated.off fertility.off elephant.obj rocker-arm.obj armadillo.obj; do
+  [ -f "$shared/$m" ] && all+=(--mesh "$shared/$m")
+done
+"$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference exact-mmp --threads 1 \
+  --methods exact-mmp,gcf-window:8/faces --sources 1 --repeat 1 "${all[@]}" --out "$repair"
+/usr/bin/python3 "$root/benchmarks/scripts/repair_share.py" "$repair" "$out/repair.md"

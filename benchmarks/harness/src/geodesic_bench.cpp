@@ -248,8 +248,9 @@ std::size_t run_geodesic_bench(const GeodesicBenchConfig& args) {
                         line[key] = outcome.fields.contains(key) ? outcome.fields[key]
                                                                  : nlohmann::json(nullptr);
                     }
-                    for (const char* key : {"epsilon", "max_faces", "error_bound", "obtuse_corners",
-                                            "virtual_edges", "unsplit_obtuse"}) {
+                    for (const char* key :
+                         {"epsilon", "max_faces", "error_bound", "flows", "flow_iterations",
+                          "repair_seconds", "obtuse_corners", "virtual_edges", "unsplit_obtuse"}) {
                         if (outcome.fields.contains(key)) {  // the method's own (MethodResult)
                             line[key] = outcome.fields[key];
                         }

@@ -31,8 +31,12 @@ MethodResult run_gcf(const Mesh& mesh, const Sources& sources,
     const geodesic::CurvatureFlowDistanceReport r = geodesic::gcf_distances(
         mesh, sources.vertices.front(), CGAL::make_property_map(result.distances), options);
     result.report = r;
-    result.extra = {
-        {"epsilon", r.epsilon}, {"max_faces", r.max_faces}, {"error_bound", r.error_bound}};
+    result.extra = {{"epsilon", r.epsilon},
+                    {"max_faces", r.max_faces},
+                    {"error_bound", r.error_bound},
+                    {"flows", r.flows},
+                    {"flow_iterations", r.iterations},
+                    {"repair_seconds", r.repair_seconds}};
     return result;
 }
 
