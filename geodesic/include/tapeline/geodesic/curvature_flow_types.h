@@ -269,7 +269,7 @@ struct CurvatureFlowDistanceOptions : FlowPropagationOptions {
 /// status: "ok" when every flow converged or stalled, "max_iterations" when some flow hit the
 /// limit, "solver_failure" when some linear solve failed). Times are wall-clock seconds.
 struct CurvatureFlowDistanceReport : DistanceReport {
-    std::size_t reached = 0;          ///< vertices with a finite distance (source included)
+    std::size_t reached = 0;  ///< vertices with a finite distance (source included)
     /// flows run past the 1-ring: a vertex's window is flowed once per candidate parent and again
     /// after each anchor slide (measured 2.5-4.5 per vertex on the shared meshes)
     std::size_t flows = 0;
