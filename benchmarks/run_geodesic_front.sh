@@ -5,7 +5,8 @@
 # jittered triaxial ellipsoid, three scanned shared meshes (armadillo, bunny, fertility), and the
 # 164k-vertex icosphere (one source, one repetition). bench_report.py writes the tables and
 # time_vs_error.png (one panel per mesh) beside the JSON lines; repair_share.py writes repair.md,
-# the curvature-flow field's repair share and flow work on every shared mesh.
+# the curvature-flow field's repair share and flow work on every shared mesh; scaling/ the time
+# exponents and memory of fmm, dijkstra and heat from 10k to 655k vertices.
 #   benchmarks/run_geodesic_front.sh [build/apps/tapeline] [out-dir]
 # geometry-central's methods (gc-mmp, gc-heat, gc-fmm) join ours on the front in the peers part
 # of benchmarks/reproduce.sh (--peers DIR).
@@ -43,3 +44,11 @@ done
 "$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference exact-mmp --threads 1 \
   --methods exact-mmp,gcf-window:8/faces --sources 1 --repeat 1 "${all[@]}" --out "$repair"
 /usr/bin/python3 "$root/benchmarks/scripts/repair_share.py" "$repair" "$out/repair.md"
+# Scaling of the fast methods, 10k -> 655k vertices (icospheres 5-8), errors against the great
+# circle: time exponents and memory per vertex.
+mkdir -p "$out/scaling"
+"$bin" bench geodesic --timeout 900 --memory-limit 16 --seed 1 --reference none --threads 1 \
+  --methods fmm,dijkstra,heat --sources 1 --repeat 3 --surface icosphere:5 --surface icosphere:6 \
+  --surface icosphere:7 --surface icosphere:8 --out "$out/scaling/scaling.jsonl"
+/usr/bin/python3 "$root/benchmarks/scripts/bench_report.py" "$out/scaling/scaling.jsonl" \
+  --out-dir "$out/scaling" --title "Fast marching, Dijkstra and heat: 10k to 655k vertices"
