@@ -378,6 +378,55 @@ void bind_geodesic(py::module_& parent) {
                        cxx_doc("PointCloudDistanceOptions.anchor_slides"))
         .def("to_dict", &options_dict<tg::PointCloudDistanceOptions>);
 
+    m.def(
+        "distance_matrix",
+        [](const py::object& V, const py::object& F, const py::object& sources, unsigned threads) {
+            const auto mesh = mesh_from_arrays(V, F, "distance_matrix");
+            std::vector<Vertex> rows;
+            const py::object list = py::isinstance<py::int_>(sources)
+                                        ? py::object(py::make_tuple(sources))
+                                        : py::reinterpret_borrow<py::object>(sources);
+            for (const py::handle& p : list) {
+                const auto s = surface_point(p, *mesh, "distance_matrix sources");
+                if (!std::holds_alternative<Vertex>(s)) {
+                    throw py::value_error(
+                        "distance_matrix sources: a row needs a vertex index, got " +
+                        py::repr(p).cast<std::string>());
+                }
+                const auto copies =
+                    mesh->loaded.mesh_vertices_of(static_cast<std::size_t>(p.cast<long long>()));
+                if (copies.size() != 1) {
+                    throw py::value_error("distance_matrix sources: vertex " +
+                                          py::repr(p).cast<std::string>() + " stands for " +
+                                          std::to_string(copies.size()) +
+                                          " mesh vertices (split where the mesh is not manifold)");
+                }
+                rows.push_back(copies.front());
+            }
+            if (rows.empty()) {
+                throw py::value_error("distance_matrix: no source given");
+            }
+            std::vector<std::vector<double>> m;
+            {
+                InterruptGuard interrupt_guard;
+                py::gil_scoped_release release;
+                m = bench::exact_mmp_matrix(mesh->loaded.mesh, rows, threads);
+            }
+            const std::size_t n = mesh->loaded.to_input_order(m.front()).size();
+            py::array_t<double> out(
+                {static_cast<py::ssize_t>(m.size()), static_cast<py::ssize_t>(n)});
+            for (std::size_t r = 0; r < m.size(); ++r) {
+                const std::vector<double> in = mesh->loaded.to_input_order(m[r]);
+                std::copy(in.begin(), in.end(), out.mutable_data() + r * n);
+            }
+            return out;
+        },
+        py::arg("V"), py::arg("F"), py::arg("sources"), py::arg("threads") = 0,
+        "Exact distances (exact-mmp) from each source vertex to every row of V: a float64 array "
+        "of shape (len(sources), len(V)), row s from sources[s], inf where unreachable or "
+        "unused. The rows are computed in parallel on `threads` threads (0: every hardware "
+        "thread); the result does not depend on it.");
+
     m.def("methods", &bench::distance_methods,
           "The names `distances` takes (as `tapeline geodesic distances --method`).");
     m.def(

@@ -2,6 +2,7 @@
 from ._tapeline import geodesic as _g
 
 distances = _g.distances
+distance_matrix = _g.distance_matrix
 methods = _g.methods
 ExactMmpSolver = _g.ExactMmpSolver
 HeatSolver = _g.HeatSolver
@@ -18,6 +19,7 @@ CurvatureFlowSolver = _g.CurvatureFlowSolver
 
 __all__ = [
     "distances",
+    "distance_matrix",
     "methods",
     "ExactMmpSolver",
     "HeatSolver",

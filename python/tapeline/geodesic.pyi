@@ -24,6 +24,12 @@ def distances(
     """Distance from the sources to every row of V by a named method (see methods()); with
     with_report, (distances, report dict)."""
 
+def distance_matrix(
+    V: npt.ArrayLike, F: npt.ArrayLike, sources: Sequence[int], threads: int = 0
+) -> npt.NDArray[np.float64]:
+    """Exact distances from each source vertex to every row of V, shape (len(sources), len(V));
+    rows computed in parallel on `threads` threads (0: all)."""
+
 class HeatMultiSource(Enum):
     min_of_single_sources = ...
     cgal_joint = ...

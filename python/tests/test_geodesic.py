@@ -66,6 +66,24 @@ def test_exact_path_equals_the_command_line(spot, cli, tmp_path):
     np.testing.assert_array_equal(points, np.array(expected["points"]))
 
 
+def test_distance_matrix_rows_are_the_fields_and_symmetric(spot):
+    _, V, F = spot
+    src = [0, 100, 700, 2100]
+    m1 = g.distance_matrix(V, F, src, threads=1)
+    m2 = g.distance_matrix(V, F, src, threads=2)
+    assert m1.shape == (4, len(V)) and m1.dtype == np.float64
+    np.testing.assert_array_equal(m1, m2)
+    for r, s in enumerate(src):
+        np.testing.assert_allclose(m1[r], g.distances(V, F, s), rtol=1e-12, atol=0)
+    sub = m1[:, src]
+    np.testing.assert_allclose(sub, sub.T, rtol=1e-12, atol=0)
+    assert (np.diag(sub) == 0).all()
+    with pytest.raises(ValueError, match="a row needs a vertex index"):
+        g.distance_matrix(V, F, [(3, (0.2, 0.3, 0.5))])
+    with pytest.raises(ValueError, match="no source given"):
+        g.distance_matrix(V, F, [])
+
+
 def test_solvers_equal_the_one_shot_call(spot):
     _, V, F = spot
     np.testing.assert_array_equal(g.ExactMmpSolver(V, F).distances(11), g.distances(V, F, 11))
