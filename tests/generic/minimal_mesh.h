@@ -20,8 +20,9 @@
 //    boost::dijkstra_shortest_paths_no_init (its heap index map) in geodesic::dijkstra_distances.
 //  - EdgeListGraph: edges(g), edge_iterator. geodesic::internal::connected_components
 //    (mesh_checks.h), called by dijkstra_distances, exact_mmp_distances, exact_mmp_path,
-//    heat_distances, fast_marching_distances, gcf_distances, geodesic_path and unfold_path. num_edges(g), edges_size_type
-//    and the traversal tags complete the two concepts; no call uses them.
+//    heat_distances, fast_marching_distances, gcf_distances, geodesic_path and unfold_path.
+//    num_edges(g), edges_size_type and the traversal tags complete the two concepts; no call uses
+//    them.
 // Nothing else: no operator< on descriptors, no in_edges, no index maps. (copy_of reads a
 // Surface_mesh to build the arrays; the algorithms see only the functions below.)
 // One semantic requirement the types do not show: an edge descriptor keeps the halfedge it was
