@@ -141,11 +141,8 @@ void run_point_cloud_distances(const DistancesArgs& args, bool method_given) {
     write_file_atomically(args.out, [&](std::ostream& out) {
         out.precision(17);
         for (double d : run.distances) {
-            if (std::isfinite(d)) {
-                out << d << '\n';
-            } else {
-                out << "inf\n";
-            }
+            write_distance(out, d);
+            out << '\n';
         }
     });
     const auto& r = run.report;
@@ -229,11 +226,7 @@ void run_matrix(const MatrixArgs& args) {
             const std::vector<double> in_order = input.loaded.to_input_order(row);
             for (std::size_t i = 0; i < in_order.size(); ++i) {
                 out << (i ? " " : "");
-                if (std::isfinite(in_order[i])) {
-                    out << in_order[i];
-                } else {
-                    out << "inf";
-                }
+                write_distance(out, in_order[i]);
             }
             out << '\n';
         }

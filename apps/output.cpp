@@ -20,6 +20,14 @@ std::string extension_of(const std::string& path) {
     return ext;
 }
 
+void write_distance(std::ostream& out, double d) {
+    if (std::isfinite(d)) {
+        out << d;
+    } else {
+        out << "inf";
+    }
+}
+
 void write_distances(const std::string& path, const Mesh& mesh,
                      const std::vector<double>& per_mesh_vertex,
                      const std::vector<double>& per_input_vertex) {
@@ -28,11 +36,8 @@ void write_distances(const std::string& path, const Mesh& mesh,
         write_file_atomically(path, [&](std::ostream& out) {
             out << std::setprecision(17);
             for (double d : per_input_vertex) {
-                if (std::isfinite(d)) {
-                    out << d << '\n';
-                } else {
-                    out << "inf\n";
-                }
+                write_distance(out, d);
+                out << '\n';
             }
         });
     } else if (ext == ".ply") {

@@ -5,12 +5,16 @@
 #include "app_types.h"
 
 #include <array>
+#include <ostream>
 #include <string>
 #include <vector>
 
 namespace tapeline::app {
 
 /// `per_mesh_vertex` is indexed by mesh vertex, `per_input_vertex` by input-file vertex.
+/// Writes one distance as the .txt outputs do: the number at the stream's precision, or "inf".
+void write_distance(std::ostream& out, double d);
+
 void write_distances(const std::string& path, const Mesh& mesh,
                      const std::vector<double>& per_mesh_vertex,
                      const std::vector<double>& per_input_vertex);

@@ -204,9 +204,7 @@ std::size_t run_geodesic_bench(const GeodesicBenchConfig& args) {
                             fields["pre_seconds"] = r.report.prepare_seconds;
                             fields["query_seconds"] = r.report.query_seconds;
                             fields["unreachable"] = r.report.unreachable;
-                            for (const auto& [key, value] : r.extra.items()) {
-                                fields[key] = value;
-                            }
+                            fields["method_extra"] = r.extra;
                             if (!reference.empty()) {
                                 const ErrorStats e =
                                     relative_errors(r.distances, reference, excluded);
@@ -248,11 +246,9 @@ std::size_t run_geodesic_bench(const GeodesicBenchConfig& args) {
                         line[key] = outcome.fields.contains(key) ? outcome.fields[key]
                                                                  : nlohmann::json(nullptr);
                     }
-                    for (const char* key :
-                         {"epsilon", "max_faces", "error_bound", "flows", "flow_iterations",
-                          "repair_seconds", "obtuse_corners", "virtual_edges", "unsplit_obtuse"}) {
-                        if (outcome.fields.contains(key)) {  // the method's own (MethodResult)
-                            line[key] = outcome.fields[key];
+                    if (outcome.fields.contains("method_extra")) {  // the method's own figures
+                        for (const auto& [key, value] : outcome.fields["method_extra"].items()) {
+                            line[key] = value;
                         }
                     }
                     line["peak_rss_bytes"] = outcome.peak_rss_bytes;
