@@ -383,9 +383,13 @@ void bind_geodesic(py::module_& parent) {
         [](const py::object& V, const py::object& F, const py::object& sources, unsigned threads) {
             const auto mesh = mesh_from_arrays(V, F, "distance_matrix");
             std::vector<Vertex> rows;
-            const py::object list = py::isinstance<py::int_>(sources)
-                                        ? py::object(py::make_tuple(sources))
-                                        : py::reinterpret_borrow<py::object>(sources);
+            // One index (a Python or numpy integer) or a sequence / array of them.
+            const bool many =
+                (py::isinstance<py::sequence>(sources) && !py::isinstance<py::str>(sources)) ||
+                (py::isinstance<py::array>(sources) &&
+                 py::reinterpret_borrow<py::array>(sources).ndim() > 0);
+            const py::object list = many ? py::reinterpret_borrow<py::object>(sources)
+                                         : py::object(py::make_tuple(sources));
             for (const py::handle& p : list) {
                 const auto s = surface_point(p, *mesh, "distance_matrix sources");
                 if (!std::holds_alternative<Vertex>(s)) {

@@ -78,6 +78,8 @@ def test_distance_matrix_rows_are_the_fields_and_symmetric(spot):
     sub = m1[:, src]
     np.testing.assert_allclose(sub, sub.T, rtol=1e-12, atol=0)
     assert (np.diag(sub) == 0).all()
+    np.testing.assert_array_equal(g.distance_matrix(V, F, np.int64(100)), m1[1:2])
+    np.testing.assert_array_equal(g.distance_matrix(V, F, np.array(src[:2])), m1[:2])
     with pytest.raises(ValueError, match="a row needs a vertex index"):
         g.distance_matrix(V, F, [(3, (0.2, 0.3, 0.5))])
     with pytest.raises(ValueError, match="no source given"):
