@@ -403,6 +403,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         g.triangles.push_back({w.weld_map[t[0]], w.weld_map[t[1]], w.weld_map[t[2]]});
     }
     g.uv = cloth.rest_uv;
+    g.grain = cloth.grain;
     g.triangle_piece = tri_piece;
     for (const auto& p : pattern.pieces) {
         g.piece_names.push_back(p.name);

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <tapeline/core/atomic_write.h>
+#include <tapeline/core/errors.h>
 #include <tapeline/garment/garment_types.h>
 #include <tapeline/garment/quality.h>
 
@@ -12,8 +13,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <functional>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,7 +26,9 @@ namespace tapeline::garment {
 /// Maps a garment position (canonical mm) to the coordinates written.
 using PositionMap = std::function<Vec3(const Vec3&)>;
 
-/// OBJ: `v` per welded vertex, `vt` per triangle corner (pattern mm), `g` per piece, `f v/vt`.
+/// OBJ: `v` per welded vertex, `vt` per triangle corner (pattern mm), `g` per piece followed by
+/// the comment `# grain gx gy` (the piece's unit warp direction in its pattern coordinates; every
+/// OBJ reader skips it, read_garment_obj() reads it), `f v/vt`.
 inline void write_garment_obj(std::ostream& out, const GarmentMesh& g, const PositionMap& map) {
     char buf[160];
     out << "# Tapeline draped garment: v in the body's coordinates, vt = pattern coordinates "
@@ -47,6 +53,10 @@ inline void write_garment_obj(std::ostream& out, const GarmentMesh& g, const Pos
                 c = (c == ' ' || c == '\t' || c == '\n' || c == '\r') ? '_' : c;
             }
             out << "g " << name << '\n';
+            if (f < g.grain.size()) {
+                std::snprintf(buf, sizeof buf, "# grain %.9g %.9g\n", g.grain[f][0], g.grain[f][1]);
+                out << buf;
+            }
         }
         const Tri& t = g.triangles[f];
         out << "f";
@@ -55,6 +65,124 @@ inline void write_garment_obj(std::ostream& out, const GarmentMesh& g, const Pos
         }
         out << '\n';
     }
+}
+
+/// Reads a garment OBJ as write_garment_obj() writes it: `v` positions (returned as read, in the
+/// file's unit), `vt` pattern coordinates (mm), `g` pieces with their `# grain gx gy` comment
+/// (absent: +y), triangles `f v/vt v/vt v/vt` (1-based or negative, relative indices; normals
+/// after a second slash are ignored). Other lines (`vn`, `o`, `s`, `usemtl`, comments) are
+/// skipped. Throws InvalidInput naming the file and line: a face that is not a triangle or has
+/// no `vt`, an index out of range, a number that does not parse or is not finite, a grain of
+/// zero length, no faces at all.
+inline GarmentMesh read_garment_obj(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) {
+        throw InvalidInput(path + ": cannot open the garment OBJ");
+    }
+    GarmentMesh g;
+    std::vector<UV> vt;
+    UV grain{0, 1};
+    bool grouped = false;
+    std::string line;
+    std::size_t line_no = 0;
+    auto fail = [&](const std::string& what) {
+        throw InvalidInput(path + ":" + std::to_string(line_no) + ": " + what);
+    };
+    auto number = [&](std::istringstream& ls, const char* what) {
+        std::string tok;
+        if (!(ls >> tok)) {
+            fail(std::string("missing ") + what);
+        }
+        char* end = nullptr;
+        const double v = std::strtod(tok.c_str(), &end);
+        if (end == tok.c_str() || *end != '\0' || !std::isfinite(v)) {
+            fail(std::string(what) + " '" + tok + "' is not a finite number");
+        }
+        return v;
+    };
+    auto index = [&](const std::string& tok, std::size_t count, const char* what) {
+        char* end = nullptr;
+        const long k = std::strtol(tok.c_str(), &end, 10);
+        if (end == tok.c_str() || *end != '\0' || k == 0) {
+            fail(std::string("bad ") + what + " index '" + tok + "'");
+        }
+        const long i = k > 0 ? k - 1 : long(count) + k;
+        if (i < 0 || std::size_t(i) >= count) {
+            fail(std::string(what) + " index " + tok + " out of range (" + std::to_string(count) +
+                 " so far)");
+        }
+        return std::uint32_t(i);
+    };
+    while (std::getline(in, line)) {
+        ++line_no;
+        std::istringstream ls(line);
+        std::string key;
+        if (!(ls >> key)) {
+            continue;
+        }
+        if (key == "v") {
+            const double x = number(ls, "x"), y = number(ls, "y"), z = number(ls, "z");
+            g.positions.push_back({x, y, z});
+        } else if (key == "vt") {
+            const double u = number(ls, "u"), v = number(ls, "v");
+            vt.push_back({u, v});
+        } else if (key == "g") {
+            std::string name;
+            std::getline(ls >> std::ws, name);
+            g.piece_names.push_back(name.empty() ? "piece" : name);
+            grain = {0, 1};
+            grouped = true;
+        } else if (key == "#") {
+            std::string what;
+            if (ls >> what && what == "grain") {
+                const double gx = number(ls, "grain x"), gy = number(ls, "grain y");
+                const double gl = std::hypot(gx, gy);
+                if (!(gl > 1e-12)) {
+                    fail("grain direction of zero length");
+                }
+                grain = {gx / gl, gy / gl};
+            }
+        } else if (key == "f") {
+            std::vector<std::string> corners;
+            for (std::string c; ls >> c;) {
+                corners.push_back(c);
+            }
+            if (corners.size() != 3) {
+                fail("face with " + std::to_string(corners.size()) +
+                     " corners (a garment OBJ holds triangles)");
+            }
+            Tri t{};
+            std::array<UV, 3> uv{};
+            for (int k = 0; k < 3; ++k) {
+                const std::string& c = corners[std::size_t(k)];
+                const std::size_t slash = c.find('/');
+                if (slash == std::string::npos || slash + 1 >= c.size() || c[slash + 1] == '/') {
+                    fail("face corner '" + c +
+                         "' has no pattern coordinate (vt): not a garment "
+                         "OBJ with pattern coordinates");
+                }
+                const std::size_t slash2 = c.find('/', slash + 1);
+                t[std::size_t(k)] = index(c.substr(0, slash), g.positions.size(), "vertex");
+                uv[std::size_t(k)] =
+                    vt[index(c.substr(slash + 1, slash2 == std::string::npos ? std::string::npos
+                                                                             : slash2 - slash - 1),
+                             vt.size(), "vt")];
+            }
+            if (!grouped) {
+                g.piece_names.push_back("piece");
+                grouped = true;
+            }
+            g.triangles.push_back(t);
+            g.uv.push_back(uv);
+            g.grain.push_back(grain);
+            g.triangle_piece.push_back(std::uint32_t(g.piece_names.size() - 1));
+        }
+    }
+    if (g.triangles.empty()) {
+        line_no = 0;
+        throw InvalidInput(path + ": no triangles (not a garment OBJ)");
+    }
+    return g;
 }
 
 /// ASCII PLY: x y z (body coordinates) and `stretch` per vertex (the largest principal stretch of

@@ -219,6 +219,9 @@ struct GarmentMesh {
     std::vector<std::array<UV, 3>> uv;          ///< per corner, pattern mm
     std::vector<std::uint32_t> triangle_piece;  ///< piece index of each triangle
     std::vector<std::string> piece_names;       ///< per piece
+    /// Per triangle: unit warp direction in its pattern coordinates (the piece's grainline;
+    /// empty: the pattern's +y axis everywhere).
+    std::vector<UV> grain;
 };
 
 }  // namespace tapeline::garment

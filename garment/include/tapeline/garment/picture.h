@@ -35,14 +35,16 @@ inline draw::Rgb stretch_class_colour(double s) {
     return {0.9, 0.2, 0.2};
 }
 
-/// The picture (see the file comment) at `pixels_per_mm` on a page where 1 mm of the body is
-/// `scale` mm of picture. `seams`: polylines (canonical mm) drawn over the garment.
-inline draw::RgbaImage dressed_picture(const std::vector<Vec3>& body_points,
-                                       const std::vector<Tri>& body_tris, const GarmentMesh& g,
-                                       const std::vector<double>& triangle_stretch,
-                                       const std::vector<std::vector<Vec3>>& seams,
-                                       const std::string& title, double scale = 0.12,
-                                       double pixels_per_mm = 5) {
+/// Front, left side and back views of `body` (may be empty) and the garment `g`, each garment
+/// triangle shaded in `colours[triangle_class[f]]` (a class outside `colours`, or a triangle
+/// beyond `triangle_class`, in the first colour), `seams` (polylines, canonical mm) drawn over
+/// the garment where they are seen. At `pixels_per_mm` on a page where 1 mm of the body is
+/// `scale` mm of picture.
+inline draw::RgbaImage garment_views_picture(
+    const std::vector<Vec3>& body_points, const std::vector<Tri>& body_tris, const GarmentMesh& g,
+    const std::vector<int>& triangle_class, const std::vector<draw::Rgb>& colours,
+    const std::vector<std::vector<Vec3>>& seams, const std::string& title, double scale = 0.12,
+    double pixels_per_mm = 5) {
     std::vector<draw::OrthoView> views(3);
     views[1] = draw::left_side_view();
     views[2].right = {-1, 0, 0};
@@ -77,13 +79,12 @@ inline draw::RgbaImage dressed_picture(const std::vector<Vec3>& body_points,
     draw::Canvas canvas(page, pixels_per_mm);
     canvas.text(title, {margin, margin + 5}, 4.5, draw::TextAnchor::start, {0.1, 0.1, 0.1});
     // Garment triangles grouped by colour class: one render per class.
-    std::vector<draw::MeshTriangles> classes(5);
+    std::vector<draw::MeshTriangles> classes(std::max<std::size_t>(1, colours.size()));
     for (std::size_t f = 0; f < g.triangles.size(); ++f) {
-        const double s = f < triangle_stretch.size() ? triangle_stretch[f] : 1.0;
-        const int c = s <= 1.01 ? 0 : s <= 1.03 ? 1 : s <= 1.05 ? 2 : s <= 1.10 ? 3 : 4;
-        classes[std::size_t(c)].push_back(g.triangles[f]);
+        const int c = f < triangle_class.size() ? triangle_class[f] : 0;
+        classes[c >= 0 && std::size_t(c) < classes.size() ? std::size_t(c) : 0].push_back(
+            g.triangles[f]);
     }
-    const double class_stretch[5] = {1.0, 1.02, 1.04, 1.08, 1.2};
     const auto body_normals = draw::vertex_normals(body_points, body_tris);
     const auto cloth_normals = draw::vertex_normals(g.positions, g.triangles);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -100,7 +101,7 @@ inline draw::RgbaImage dressed_picture(const std::vector<Vec3>& body_points,
                 continue;
             }
             draw::MeshShading cloth;
-            cloth.colour = stretch_class_colour(class_stretch[c]);
+            cloth.colour = c < colours.size() ? colours[c] : draw::Rgb{0.6, 0.6, 0.6};
             layers.push_back(draw::render_mesh(local, size[k].first, size[k].second, pixels_per_mm,
                                                g.positions, classes[c], cloth_normals, cloth));
         }
@@ -133,6 +134,29 @@ inline draw::RgbaImage dressed_picture(const std::vector<Vec3>& body_points,
         }
     }
     return page;
+}
+
+/// The dressed body (see the file comment) at `pixels_per_mm` on a page where 1 mm of the body
+/// is `scale` mm of picture; the garment coloured by `triangle_stretch` (stretch_class_colour).
+/// `seams`: polylines (canonical mm) drawn over the garment.
+inline draw::RgbaImage dressed_picture(const std::vector<Vec3>& body_points,
+                                       const std::vector<Tri>& body_tris, const GarmentMesh& g,
+                                       const std::vector<double>& triangle_stretch,
+                                       const std::vector<std::vector<Vec3>>& seams,
+                                       const std::string& title, double scale = 0.12,
+                                       double pixels_per_mm = 5) {
+    const double class_stretch[5] = {1.0, 1.02, 1.04, 1.08, 1.2};
+    std::vector<draw::Rgb> colours;
+    for (double s : class_stretch) {
+        colours.push_back(stretch_class_colour(s));
+    }
+    std::vector<int> cls(g.triangles.size(), 0);
+    for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+        const double s = f < triangle_stretch.size() ? triangle_stretch[f] : 1.0;
+        cls[f] = s <= 1.01 ? 0 : s <= 1.03 ? 1 : s <= 1.05 ? 2 : s <= 1.10 ? 3 : 4;
+    }
+    return garment_views_picture(body_points, body_tris, g, cls, colours, seams, title, scale,
+                                 pixels_per_mm);
 }
 
 }  // namespace tapeline::garment

@@ -9,6 +9,7 @@
 
 #include <tapeline/core/vec3.h>
 #include <tapeline/garment/crossings.h>
+#include <tapeline/garment/deformation.h>
 #include <tapeline/garment/garment_types.h>
 
 #include <CGAL/AABB_traits.h>
@@ -28,23 +29,15 @@
 namespace tapeline::garment {
 
 /// Largest principal stretch of each triangle: the larger singular value of the map from its
-/// pattern triangle to its 3D triangle (1: unstretched).
+/// pattern triangle to its 3D triangle (1: unstretched; 1 for a degenerate pattern triangle).
 inline std::vector<double> triangle_stretch(const std::vector<Vec3>& x, const std::vector<Tri>& t,
                                             const std::vector<std::array<UV, 3>>& uv) {
     std::vector<double> out(t.size(), 1.0);
     for (std::size_t f = 0; f < t.size(); ++f) {
-        const auto& u = uv[f];
-        const double a = u[1][0] - u[0][0], b = u[2][0] - u[0][0];
-        const double c = u[1][1] - u[0][1], d = u[2][1] - u[0][1];
-        const double det = a * d - b * c;
-        if (std::abs(det) < 1e-12) {
+        Vec3 f1, f2;
+        if (!deformation_gradient(x[t[f][0]], x[t[f][1]], x[t[f][2]], uv[f], f1, f2)) {
             continue;
         }
-        // Dm = [[a b][c d]]; F = Ds·Dm⁻¹ (3×2).
-        const double ia = d / det, ib = -b / det, ic = -c / det, id = a / det;
-        const Vec3 e1 = vec3::sub(x[t[f][1]], x[t[f][0]]), e2 = vec3::sub(x[t[f][2]], x[t[f][0]]);
-        const Vec3 f1 = vec3::add(vec3::scale(e1, ia), vec3::scale(e2, ic));
-        const Vec3 f2 = vec3::add(vec3::scale(e1, ib), vec3::scale(e2, id));
         // Singular values of F: square roots of the eigenvalues of FᵀF.
         const double p = vec3::dot(f1, f1), q = vec3::dot(f1, f2), r = vec3::dot(f2, f2);
         const double mean = 0.5 * (p + r), dev = std::sqrt(0.25 * (p - r) * (p - r) + q * q);
