@@ -145,7 +145,8 @@ TEST(OptionsJson, CurvatureFlowDistances) {
                        FIELD(o, anchor),
                        FIELD(o, near_source_samples),
                        FIELD(o, anchor_slides),
-                       FIELD(o, flow)};
+                       FIELD(o, flow),
+                       FIELD(o, window_max_iterations)};
     // The base (FlowPropagationOptions) counts as one member of the aggregate; its fields are in
     // fo.
     EXPECT_EQ(tapeline::test::field_count<CurvatureFlowDistanceOptions>() - 1 +

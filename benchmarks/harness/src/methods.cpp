@@ -45,6 +45,9 @@ geodesic::CurvatureFlowDistanceOptions gcf_options(const MethodName& m) {
     if (!m.repair) {
         o.repair_tolerance = -1;
     }
+    if (m.window_steps > 0) {
+        o.window_max_iterations = m.window_steps;
+    }
     return o;
 }
 
@@ -190,6 +193,21 @@ const std::vector<std::string>& distance_methods() {
 MethodName parse_method_name(const std::string& given, std::size_t window) {
     MethodName out{given, window, false, true};
     std::string text = given;
+    const std::size_t steps_at = text.rfind("/steps:");
+    if (steps_at != std::string::npos) {
+        const std::string n = text.substr(steps_at + 7);
+        char* end = nullptr;
+        const unsigned long long value = std::strtoull(n.c_str(), &end, 10);
+        if (text.rfind("gcf-window", 0) != 0 || n.empty() || *end != '\0' || value == 0 ||
+            value > 100000) {
+            throw InvalidInput("bad method '" + given +
+                               "': '/steps:N' (flow steps of one window, N from 1 to 100000) "
+                               "goes last on gcf-window and gcf-window-thesis");
+        }
+        out.window_steps = static_cast<std::size_t>(value);
+        text.resize(steps_at);
+        out.base = text;
+    }
     const std::string raw = "/raw";
     if (text.size() > raw.size() && text.compare(text.size() - raw.size(), raw.size(), raw) == 0) {
         text.resize(text.size() - raw.size());

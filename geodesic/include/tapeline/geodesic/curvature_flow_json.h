@@ -85,6 +85,7 @@ inline void to_json(nlohmann::json& j, const CurvatureFlowDistanceOptions& o) {
     j["repair_graph_margin"] = o.repair_graph_margin;
     j["anchor"] = o.anchor;
     j["flow"] = o.flow;
+    j["window_max_iterations"] = o.window_max_iterations;
 }
 
 inline void to_json(nlohmann::json& j, const CurvatureFlowDistanceReport& r) {

@@ -262,6 +262,15 @@ struct CurvatureFlowDistanceOptions : FlowPropagationOptions {
         o.tolerance = 1e-7;
         return o;
     }();
+    /// Algorithm 2 (window > 0): flow steps of one window at most (the smaller of this and
+    /// flow.max_iterations; 0: flow.max_iterations). A window that has not converged within 20
+    /// steps creeps while its length hardly changes (measured on the scans at W = 8 with 200
+    /// steps: 9 % of the flows ran to the limit and took three quarters of all flow steps); the
+    /// repair re-solves whatever is left too long. Algorithm 1 flows whole paths, which need
+    /// their steps: the cap does not apply. Figures against 200 steps: docs/bench_front/cap.md.
+    /// A window stopped by it counts in the report's max_iterations, whose status is then
+    /// "max_iterations": some windows were left unconverged, no distance is missing.
+    std::size_t window_max_iterations = 20;
 };
 
 /// What gcf_distances did, beyond DistanceReport (prepare_seconds: mesh arrays and checks;

@@ -82,20 +82,24 @@ geodesic::PointCloudProjection parse_projection(const std::string& text, const s
 /// The distance methods, in the order they are listed in --help.
 const std::vector<std::string>& distance_methods();
 
-/// A method name as given ("gcf-window:16", "gcf-exact/faces", "gcf-window:8/faces/raw"): the
-/// method, its window, whether a curvature-flow method reports the length of its samples on the
-/// faces (like for like with exact polyhedral) instead of the Phong-lifted length (towards the
-/// smooth surface), and whether the on-face field gets its repair pass (not with "/raw"; see
-/// CurvatureFlowDistanceOptions::repair_tolerance).
+/// A method name as given ("gcf-window:16", "gcf-exact/faces", "gcf-window:8/faces/raw",
+/// "gcf-window:8/faces/steps:200"): the method, its window, whether a curvature-flow method
+/// reports the length of its samples on the faces (like for like with exact polyhedral) instead
+/// of the Phong-lifted length (towards the smooth surface), whether the on-face field gets its
+/// repair pass (not with "/raw"; see CurvatureFlowDistanceOptions::repair_tolerance), and the
+/// flow steps of one window ("/steps:N", CurvatureFlowDistanceOptions::window_max_iterations;
+/// 0: the library's default).
 struct MethodName {
     std::string base;
     std::size_t window;
     bool on_faces;
     bool repair;
+    std::size_t window_steps = 0;
 };
-/// Splits "gcf-window:W" / "gcf-window-thesis:W" and a trailing "/faces" or "/faces/raw" on gcf-*
-/// methods; other names are returned whole with `window`. InvalidInput for a ':W' or '/faces' on
-/// another method, a '/raw' without '/faces' or a W that is not a positive integer.
+/// Splits "gcf-window:W" / "gcf-window-thesis:W", a trailing "/steps:N" on those, and a trailing
+/// "/faces" or "/faces/raw" on gcf-* methods; other names are returned whole with `window`.
+/// InvalidInput for a ':W', '/steps:N' or '/faces' on another method, a '/raw' without '/faces'
+/// or a W or N that is not a positive integer.
 MethodName parse_method_name(const std::string& text, std::size_t window = default_window());
 
 /// InvalidInput naming `option` unless `method` names a known method.
