@@ -23,6 +23,9 @@ void register_measure_commands(CLI::App& app);
 void register_dress_commands(CLI::App& app);
 void register_fabric_commands(CLI::App& app);
 void register_batch_commands(CLI::App& app);
+void register_wrinkles_commands(CLI::App& app);
+/// `tapeline wrinkles buckling`, under the `wrinkles` family (defined in wrinkles_buckling.cpp).
+void register_wrinkles_buckling(CLI::App& wrinkles);
 
 /// --projection (mls or plane) of gcf-points into `options`, its default shown from `options`.
 void add_projection_option(CLI::App* cmd, geodesic::PointCloudDistanceOptions& options,

@@ -122,6 +122,7 @@ int main(int argc, char** argv) {
     tapeline::app::register_dress_commands(app);
     tapeline::app::register_fabric_commands(app);
     tapeline::app::register_batch_commands(app);
+    tapeline::app::register_wrinkles_commands(app);
     check_option_values(app);
     try {
         check_command_words(app, argc, argv);

@@ -275,13 +275,17 @@ expect_fail "bench window on another method" "only gcf-window" "$bin" bench geod
 expect_fail "bench window not a number" "gcf-window:x" "$bin" bench geodesic --surface icosphere:1 --methods gcf-window:x --out b2.jsonl
 expect_fail "bench /raw without /faces" "goes after '/faces' on a gcf" "$bin" bench geodesic --surface icosphere:1 --methods gcf-window:4/raw --out b2.jsonl
 expect_fail "bench /raw on another method" "distance methods take '/faces'" "$bin" bench geodesic --surface icosphere:1 --methods dijkstra/faces/raw --out b2.jsonl
-expect_ok "bench window sweep" "$bin" bench geodesic --surface icosphere:2 --methods gcf-window:2,gcf-window:6,gcf-window:4/faces,gcf-window:4/faces/raw \
+expect_fail "bench /steps on another method" "goes last on gcf-window" "$bin" bench geodesic --surface icosphere:1 --methods gcf-exact/steps:20 --out b2.jsonl
+expect_fail "bench /steps not a number" "'/steps:N'" "$bin" bench geodesic --surface icosphere:1 --methods gcf-window:4/steps:0 --out b2.jsonl
+expect_ok "bench window sweep" "$bin" bench geodesic --surface icosphere:2 --methods gcf-window:2,gcf-window:6,gcf-window:4/faces,gcf-window:4/faces/raw,gcf-window:4/faces/steps:200 \
   --reference gcf-exact --threads 2 --out sweep.jsonl
 if $py - <<'PY'
 import json
 lines = [json.loads(l) for l in open("sweep.jsonl")]
 w = {l["method"]: l for l in lines}
-assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6", "gcf-window:4/faces", "gcf-window:4/faces/raw"}, set(w)
+assert set(w) == {"gcf-exact", "gcf-window:2", "gcf-window:6", "gcf-window:4/faces", "gcf-window:4/faces/raw", "gcf-window:4/faces/steps:200"}, set(w)
+assert w["gcf-window:4/faces"]["options"]["window_max_iterations"] == 20
+assert w["gcf-window:4/faces/steps:200"]["options"]["window_max_iterations"] == 200
 # "options" is the library's Options as run (every field), plus the method name's length/repair.
 def opt(m, *keys): return {k: w[m]["options"].get(k) for k in keys}
 assert opt("gcf-window:2", "window", "anchor", "length", "smooth_length") == {"window": 2, "anchor": "field", "length": "smooth", "smooth_length": True}
@@ -1543,6 +1547,75 @@ expect_fail "simplify: too few vertices" "cannot simplify 2562 vertices to 3" "$
 expect_fail "simplify: not fewer vertices" "cannot simplify 2562 vertices to 2562" "$bin" mesh simplify ico4.off --vertices 2562 --out x.off
 expect_fail "simplify: missing directory" "nodir.*does not exist" "$bin" mesh simplify ico4.off --vertices 100 --out nodir/x.off
 if ls x.* nodir >/dev/null 2>&1; then fail "a refused remesh or simplify wrote: $(ls x.* nodir 2>/dev/null)"; else ok "refused remesh and simplify wrote nothing"; fi
+fi
+
+# --- wrinkles: classes of a draped garment, the buckling experiment -----------------------------
+if in_section wrinkles; then
+# A 10 x 10 grid of 10 mm cells wrapped on a cylinder of radius 80 mm (axis along y), written in
+# dm the way `tapeline dress` writes a garment on a body in dm: shortened 5 % along the warp (y)
+# everywhere, the right half also pulled 3 % around (tension), the left half not (compression).
+$py - <<'PY'
+import math
+R = 80.0
+with open("g.obj", "w") as f:
+    f.write("g panel\n# grain 0 1\n")
+    for j in range(11):
+        for i in range(11):
+            u, v = 10.0 * i, 10.0 * j
+            s = u if i <= 5 else 50 + 1.03 * (u - 50)   # arc length around the cylinder
+            x, z = R * math.sin(s / R), R * (1 - math.cos(s / R))
+            f.write("v %.9g %.9g %.9g\n" % (x / 100, 0.95 * v / 100, z / 100))
+    for j in range(11):
+        for i in range(11):
+            f.write("vt %g %g\n" % (10.0 * i, 10.0 * j))
+    for j in range(10):
+        for i in range(10):
+            a, b, c, d = j * 11 + i + 1, j * 11 + i + 2, (j + 1) * 11 + i + 2, (j + 1) * 11 + i + 1
+            f.write("f %d/%d %d/%d %d/%d\n" % (a, a, b, b, c, c))
+            f.write("f %d/%d %d/%d %d/%d\n" % (a, a, c, c, d, d))
+PY
+"$bin" fabric show denim > denim.json
+expect_ok "wrinkles classify" "$bin" wrinkles classify g.obj --fabric denim --report w.json --triangles t.json --picture w.png
+grep -q "positions in dm" out.txt && ok "wrinkles classify: the unit found (dm)" || fail "wrinkles classify unit: $(head -c 300 out.txt)"
+$py - <<'PY' && ok "wrinkles classify: classes and wavelengths" || fail "wrinkles classify: $(head -c 400 w.json)"
+import json, math
+r = json.load(open("w.json"))
+t = json.load(open("t.json"))
+c = r["report"]["classes"]
+assert r["units"] == "dm" and r["fabric"] == "denim", r
+assert sum(c[k]["triangles"] for k in c) == r["report"]["triangles"] == 200 == len(t["class"])
+# The sheared triangles straddle the joint; away from it the halves have their classes.
+cls = t["class"]
+left = [cls[2 * (10 * j + i) + k] for j in range(10) for i in range(0, 4) for k in range(2)]
+right = [cls[2 * (10 * j + i) + k] for j in range(10) for i in range(6, 10) for k in range(2)]
+assert all(x == "compression" for x in left), left
+assert all(x == "tension" for x in right), right
+# Right half, away from the joint and the border: T = k_weft * 0.03 around, kappa = 1/R along the
+# crests, waves along the warp: lambda = 2 pi (B_warp R^2 / T)^(1/4), A = lambda / pi sqrt(0.05).
+f = json.load(open("denim.json"))
+T, B, R = f["stretch_weft_n_m"] * 0.03, f["bending_un_m"] * 1e-6, 0.080
+expect = 2 * math.pi * (B * R * R / T) ** 0.25 * 1e3
+inner = [2 * (10 * j + i) + k for j in range(1, 9) for i in range(7, 9) for k in range(2)]
+for n in inner:
+    assert abs(t["wavelength_mm"][n] - expect) < 0.03 * expect, (n, t["wavelength_mm"][n], expect)
+    assert abs(t["amplitude_mm"][n] - expect / math.pi * math.sqrt(0.05)) < 0.03 * expect, n
+# The left half has no tension along its crests: no wavelength.
+assert all(t["wavelength_mm"][n] is None for n in range(len(cls)) if cls[n] == "compression")
+assert c["tension"]["median_wavelength_mm"] is not None and c["compression"]["median_wavelength_mm"] is None
+PY
+[ -s w.png ] && ok "wrinkles classify: picture" || fail "wrinkles classify: no picture"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' > novt.obj
+expect_fail "wrinkles classify: no vt" "novt.obj:4: face corner '1' has no pattern coordinate" "$bin" wrinkles classify novt.obj --report x.json
+printf 'v 0 0 0\nv 3 0 0\nv 0 3 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n' > odd.obj
+expect_fail "wrinkles classify: unit not found" "odd.obj: cannot tell the unit" "$bin" wrinkles classify odd.obj --report x.json
+expect_ok "wrinkles classify: unit given" "$bin" wrinkles classify odd.obj --units mm
+expect_fail "wrinkles classify: bad unit" "--units inch: expected auto" "$bin" wrinkles classify g.obj --units inch
+expect_fail "wrinkles classify: bad threshold" "compression_threshold must lie in" "$bin" wrinkles classify g.obj --compression-threshold 0 --report x.json
+expect_fail "wrinkles classify: unknown fabric" "unknown fabric 'tweed'" "$bin" wrinkles classify g.obj --fabric tweed --report x.json
+expect_fail "wrinkles classify: missing file" "nothere.obj: cannot open" "$bin" wrinkles classify nothere.obj --report x.json
+expect_fail "wrinkles buckling: one rigidity" "give two or more rigidities" "$bin" wrinkles buckling --test foundation --bending 1 --report x.json
+expect_fail "wrinkles buckling: unknown test" "expected foundation or cylinder" "$bin" wrinkles buckling --test drum --bending 1,2 --report x.json
+if ls x.* >/dev/null 2>&1; then fail "a refused wrinkles command wrote: $(ls x.*)"; else ok "refused wrinkles commands wrote nothing"; fi
 fi
 
 if [ $sections_run -eq 0 ]; then fail "no section named '$section'"; fi

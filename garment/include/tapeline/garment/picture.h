@@ -39,12 +39,13 @@ inline draw::Rgb stretch_class_colour(double s) {
 /// triangle shaded in `colours[triangle_class[f]]` (a class outside `colours`, or a triangle
 /// beyond `triangle_class`, in the first colour), `seams` (polylines, canonical mm) drawn over
 /// the garment where they are seen. At `pixels_per_mm` on a page where 1 mm of the body is
-/// `scale` mm of picture.
+/// `scale` mm of picture. `legend`: a label per colour, drawn as a row of swatches under the
+/// views (empty: none).
 inline draw::RgbaImage garment_views_picture(
     const std::vector<Vec3>& body_points, const std::vector<Tri>& body_tris, const GarmentMesh& g,
     const std::vector<int>& triangle_class, const std::vector<draw::Rgb>& colours,
     const std::vector<std::vector<Vec3>>& seams, const std::string& title, double scale = 0.12,
-    double pixels_per_mm = 5) {
+    double pixels_per_mm = 5, const std::vector<std::string>& legend = {}) {
     std::vector<draw::OrthoView> views(3);
     views[1] = draw::left_side_view();
     views[2].right = {-1, 0, 0};
@@ -72,12 +73,20 @@ inline draw::RgbaImage garment_views_picture(
         page_h = std::max(page_h, size[k].second);
     }
     const double page_w = x;
-    page_h += 2 * margin + title_h;
+    const double legend_h = legend.empty() ? 0 : 8;
+    page_h += 2 * margin + title_h + legend_h;
     draw::RgbaImage page =
         draw::RgbaImage::filled(std::size_t(std::ceil(page_w * pixels_per_mm)),
                                 std::size_t(std::ceil(page_h * pixels_per_mm)), 255);
     draw::Canvas canvas(page, pixels_per_mm);
     canvas.text(title, {margin, margin + 5}, 4.5, draw::TextAnchor::start, {0.1, 0.1, 0.1});
+    double lx = margin;
+    const double ly = page_h - margin - 4;
+    for (std::size_t k = 0; k < legend.size() && k < colours.size(); ++k) {
+        canvas.fill_rect({lx, ly}, {lx + 4, ly + 4}, colours[k]);
+        canvas.text(legend[k], {lx + 5.5, ly + 3.5}, 3.5, draw::TextAnchor::start, {0.1, 0.1, 0.1});
+        lx += 8 + 2.2 * double(legend[k].size());
+    }
     // Garment triangles grouped by colour class: one render per class.
     std::vector<draw::MeshTriangles> classes(std::max<std::size_t>(1, colours.size()));
     for (std::size_t f = 0; f < g.triangles.size(); ++f) {

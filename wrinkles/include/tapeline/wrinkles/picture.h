@@ -22,10 +22,12 @@ inline draw::RgbaImage wrinkle_picture(const garment::GarmentMesh& g, const Wrin
     for (std::size_t f = 0; f < cls.size() && f < field.triangles.size(); ++f) {
         cls[f] = int(field.triangles[f].cls);
     }
-    return garment::garment_views_picture(
-        body_points, body_tris, g, cls, wrinkle_class_colours(), {},
-        title + " (orange: tension, violet: shear, red: compression, grey: none)", scale,
-        pixels_per_mm);
+    std::vector<std::string> legend;
+    for (std::size_t c = 0; c < kWrinkleClasses; ++c) {
+        legend.push_back(to_string(WrinkleClass(c)));
+    }
+    return garment::garment_views_picture(body_points, body_tris, g, cls, wrinkle_class_colours(),
+                                          {}, title, scale, pixels_per_mm, legend);
 }
 
 }  // namespace tapeline::wrinkles

@@ -1,0 +1,195 @@
+// `tapeline wrinkles classify GARMENT.obj --fabric NAME|fabric.json [--units auto|mm|cm|dm|m]
+// [--report r.json] [--triangles t.json] [--picture p.png]`: the wrinkle class of every triangle
+// of a draped garment (as `tapeline dress` writes it: positions in the body's unit, pattern
+// coordinates in mm, the grain per piece) and the wavelength and amplitude the buckling law
+// predicts there (wrinkles/classify.h). The `buckling` experiments are in wrinkles_buckling.cpp.
+#include "commands.h"
+#include "output.h"
+
+#include <tapeline/core/errors.h>
+#include <tapeline/core/units.h>
+#include <tapeline/draw/png.h>
+#include <tapeline/garment/fabric.h>
+#include <tapeline/garment/garment_io.h>
+#include <tapeline/wrinkles/classify.h>
+#include <tapeline/wrinkles/picture.h>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace tapeline::app {
+namespace {
+
+namespace tg = tapeline::garment;
+namespace tw = tapeline::wrinkles;
+
+struct ClassifyArgs {
+    std::string garment, fabric = "cotton_jersey", units = "auto", report, triangles, picture;
+    tw::ClassifyOptions options;
+};
+
+/// The file's unit from the median size ratio of its triangles to their pattern triangles (mm):
+/// a draped cloth is within a few percent of its pattern, so the ratio sits near 1 (mm), 0.1
+/// (cm), 0.01 (dm) or 0.001 (m). Refuses a ratio that is not within a factor 1.5 of one of them.
+LengthUnit garment_unit(const tg::GarmentMesh& g, const std::string& path) {
+    std::vector<double> r;
+    for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+        const auto& t = g.triangles[f];
+        const auto& u = g.uv[f];
+        const double a3 =
+            0.5 * vec3::norm(vec3::cross(vec3::sub(g.positions[t[1]], g.positions[t[0]]),
+                                         vec3::sub(g.positions[t[2]], g.positions[t[0]])));
+        const double a2 = 0.5 * std::abs((u[1][0] - u[0][0]) * (u[2][1] - u[0][1]) -
+                                         (u[2][0] - u[0][0]) * (u[1][1] - u[0][1]));
+        if (a2 > 0 && a3 > 0) {
+            r.push_back(std::sqrt(a3 / a2));
+        }
+    }
+    if (r.empty()) {
+        throw InvalidInput(path + ": every triangle or its pattern triangle has zero area");
+    }
+    std::nth_element(r.begin(), r.begin() + std::ptrdiff_t(r.size() / 2), r.end());
+    const double ratio = r[r.size() / 2];
+    for (LengthUnit u : {LengthUnit::mm, LengthUnit::cm, LengthUnit::dm, LengthUnit::m}) {
+        if (std::abs(std::log(ratio * millimetres_per(u))) < std::log(1.5)) {
+            return u;
+        }
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.4g", ratio);
+    throw InvalidInput(path +
+                       ": cannot tell the unit of the positions (median size against the "
+                       "pattern, in mm, is " +
+                       std::string(buf) + "); give --units");
+}
+
+void run_classify(const ClassifyArgs& a) {
+    if (!a.report.empty() && extension_of(a.report) != ".json") {
+        throw InvalidInput("--report " + a.report + ": expected a .json file");
+    }
+    if (!a.triangles.empty() && extension_of(a.triangles) != ".json") {
+        throw InvalidInput("--triangles " + a.triangles + ": expected a .json file");
+    }
+    if (!a.picture.empty() && extension_of(a.picture) != ".png") {
+        throw InvalidInput("--picture " + a.picture + ": expected a .png file");
+    }
+    LengthUnit unit = LengthUnit::mm;
+    if (a.units != "auto") {
+        const auto u = length_unit(a.units);
+        if (!u || *u == LengthUnit::inch) {
+            throw InvalidInput("--units " + a.units + ": expected auto, mm, cm, dm or m");
+        }
+        unit = *u;
+    }
+    OutputFiles outputs({a.report, a.triangles, a.picture});
+    const tg::FabricParams fabric = tg::fabric_from(a.fabric);
+    tg::GarmentMesh g = tg::read_garment_obj(a.garment);
+    if (a.units == "auto") {
+        unit = garment_unit(g, a.garment);
+    }
+    const double mm = millimetres_per(unit);
+    for (tg::Vec3& p : g.positions) {
+        p = vec3::scale(p, mm);
+    }
+    const tw::WrinkleField w = tw::classify_wrinkles(g, fabric, a.options);
+    const tw::WrinkleReport& r = w.report;
+    std::printf("%s: %zu triangles, positions in %s, fabric %s\n", a.garment.c_str(), r.triangles,
+                to_string(unit), fabric.name.c_str());
+    std::printf("%-12s %9s %7s %12s %12s\n", "class", "triangles", "area_%", "lambda_mm",
+                "amplitude_mm");
+    for (std::size_t c = 0; c < tw::kWrinkleClasses; ++c) {
+        auto cell = [](double v) {
+            char buf[32];
+            if (std::isfinite(v)) {
+                std::snprintf(buf, sizeof buf, "%12.1f", v);
+            } else {
+                std::snprintf(buf, sizeof buf, "%12s", "-");
+            }
+            return std::string(buf);
+        };
+        std::printf("%-12s %9zu %7.1f %s %s\n", tw::to_string(tw::WrinkleClass(c)), r.count[c],
+                    r.area_percent[c], cell(r.median_wavelength_mm[c]).c_str(),
+                    cell(r.median_amplitude_mm[c]).c_str());
+    }
+    if (r.no_foundation > 0) {
+        std::printf(
+            "%zu compressed triangles have no foundation (no tension along the crests, or "
+            "a flat surface): no wavelength predicted\n",
+            r.no_foundation);
+    }
+    if (!a.report.empty()) {
+        nlohmann::ordered_json j;
+        j["garment"] = a.garment;
+        j["units"] = to_string(unit);
+        j["fabric"] = fabric.name;
+        j["options"] = {{"compression_threshold", a.options.compression_threshold},
+                        {"tension_threshold", a.options.tension_threshold},
+                        {"shear_threshold_deg", a.options.shear_threshold_deg},
+                        {"bias_window_deg", a.options.bias_window_deg},
+                        {"tension_length_mm", a.options.tension_length_mm}};
+        j["report"] = tw::wrinkle_report_json(r);
+        outputs.write(a.report, [&](std::ostream& out) { out << j.dump(1) << '\n'; });
+    }
+    if (!a.triangles.empty()) {
+        outputs.write(a.triangles, [&](std::ostream& out) {
+            out << tw::wrinkle_triangles_json(w).dump() << '\n';
+        });
+    }
+    if (!a.picture.empty()) {
+        const std::string name = a.garment.substr(a.garment.find_last_of('/') + 1);
+        const draw::RgbaImage img =
+            tw::wrinkle_picture(g, w, name + ": wrinkle classes (" + fabric.name + ")");
+        outputs.write(
+            a.picture, [&](std::ostream& out) { draw::write_png(out, img, 5); }, true);
+    }
+    outputs.commit();
+}
+
+}  // namespace
+
+void register_wrinkles_commands(CLI::App& app) {
+    CLI::App* wr = app.add_subcommand(
+        "wrinkles", "Wrinkles on a draped garment: classes, predicted wavelengths, experiments");
+    wr->require_subcommand(1);
+    CLI::App* cl = wr->add_subcommand(
+        "classify",
+        "Wrinkle class (tension, shear, compression, none) of every triangle of a draped garment "
+        "OBJ (tapeline dress) and the wavelength and amplitude the buckling law predicts");
+    auto ca = std::make_shared<ClassifyArgs>();
+    cl->add_option("GARMENT", ca->garment, "Draped garment OBJ with pattern coordinates (vt, mm)")
+        ->required();
+    cl->add_option("--fabric", ca->fabric, "Library fabric name or a .json fabric file")
+        ->capture_default_str();
+    cl->add_option("--units", ca->units,
+                   "Unit of the OBJ positions: auto (from the pattern coordinates), mm, cm, dm, m")
+        ->capture_default_str();
+    cl->add_option("--report", ca->report, "Report (JSON): classes, areas, median wavelengths");
+    cl->add_option(
+        "--triangles", ca->triangles,
+        "Per-triangle JSON: class, wavelength, amplitude, stretches, tension, curvature");
+    cl->add_option("--picture", ca->picture, "Picture (PNG): the garment coloured by class");
+    cl->add_option("--compression-threshold", ca->options.compression_threshold,
+                   "Compressed when the smallest stretch is below 1 - this")
+        ->capture_default_str();
+    cl->add_option("--tension-threshold", ca->options.tension_threshold,
+                   "Tension wrinkles when the largest stretch is above 1 + this")
+        ->capture_default_str();
+    cl->add_option("--shear-threshold", ca->options.shear_threshold_deg,
+                   "Shear wrinkles above this shear angle, degrees")
+        ->capture_default_str();
+    cl->add_option("--tension-length", ca->options.tension_length_mm,
+                   "Length L of the tension term T(pi/L)^2 of the foundation, mm (0: off)")
+        ->capture_default_str();
+    cl->callback([ca] { run_classify(*ca); });
+    register_wrinkles_buckling(*wr);
+}
+
+}  // namespace tapeline::app
