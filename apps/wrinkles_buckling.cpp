@@ -132,6 +132,8 @@ void run_buckling(const BucklingArgs& a) {
         p["onset_strain"] = r.onset_strain;
         p["onset_wavelength_mm"] = r.onset_wavelength_mm;
         p["pattern"] = r.pattern;
+        p["lines"] = r.lines;
+        p["lines_at_record_limit"] = r.lines_at_record_limit;
         if (tube) {
             p["generator_wavelengths_mm"] = r.generator_wavelengths_mm;
             p["axisymmetric_share"] = r.axisymmetric_share;
@@ -152,6 +154,9 @@ void run_buckling(const BucklingArgs& a) {
                   << (tube ? " (axisymmetric share " + num("%.2f", r.axisymmetric_share) + ", " +
                                  num("%.1f", r.circumferential_lobes) + " lobes)"
                            : std::string())
+                  << (2 * r.lines_at_record_limit > r.lines
+                          ? "; peak at the record's longest wavelength: a dent, no period"
+                          : "")
                   << " |\n";
     }
     j["points"] = pts;

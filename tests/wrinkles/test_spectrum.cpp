@@ -41,8 +41,22 @@ TEST(Spectrum, SinesOfKnownWavelength) {
             EXPECT_GT(s.peak_share, 0.95);
             EXPECT_NEAR(s.amplitude, 2.0, 0.1);
             EXPECT_EQ(s.samples, n);
+            EXPECT_FALSE(s.at_record_limit);
         }
     }
+}
+
+// One bump (a Gaussian dent in the middle of a flat record) has no period: its peak is the
+// longest wavelength the record resolves, and the spectrum says so.
+TEST(Spectrum, SingleBumpIsAtTheRecordLimit) {
+    std::vector<double> h(300);
+    for (std::size_t i = 0; i < h.size(); ++i) {
+        const double x = (double(i) - 150) / 25;
+        h[i] = -11 * std::exp(-x * x);
+    }
+    const auto s = dominant_wavelength(h, 0.5);
+    EXPECT_TRUE(s.at_record_limit);
+    EXPECT_NEAR(s.wavelength, 75, 4);  // about half the 150-unit record (the first whole bin)
 }
 
 // A constant offset and a linear trend do not move the peak much (the mean is removed; a

@@ -121,6 +121,11 @@ struct BucklingResult {
     double axisymmetric_wavelength_mm = 0;  ///< tube: dominant wavelength of the ring means
     double circumferential_lobes = 0;       ///< tube: 2πR / circumferential wavelength
     std::string pattern;  ///< tube: "axisymmetric", "non-axisymmetric"; strip: "wrinkles"/"flat"
+    /// Lines measured (strip: 1, tube: its generators) whose spectral peak is the longest
+    /// wavelength the record resolves (Spectrum::at_record_limit): a dent, not a wave train. When
+    /// most are, measured_wavelength_mm is the record's limit, not a wavelength.
+    std::size_t lines_at_record_limit = 0;
+    std::size_t lines = 0;  ///< lines measured
     std::size_t vertices = 0, triangles = 0;
     double resolution_mm = 0;
     int relax_iterations = 0;     ///< Newton iterations over all stages
@@ -342,6 +347,8 @@ inline BucklingResult foundation_test(const FabricParams& fabric, double bending
         }
     }
     last = measure(pos, o.strain, &r.profile);
+    r.lines = 1;
+    r.lines_at_record_limit = last.at_record_limit ? 1 : 0;
     r.measured_wavelength_mm = last.wavelength;
     r.peak_share = last.peak_share;
     r.amplitude_mm = last.amplitude;
@@ -496,6 +503,8 @@ inline BucklingResult cylinder_test(const FabricParams& fabric, double bending_u
     for (int g = 0; g < o.generators; ++g) {
         const Spectrum s = generator(pos, g, o.strain, g == 0 ? &r.profile : nullptr);
         r.generator_wavelengths_mm.push_back(s.wavelength);
+        ++r.lines;
+        r.lines_at_record_limit += s.at_record_limit ? 1 : 0;
         shares.push_back(s.peak_share);
         amps.push_back(s.amplitude);
     }

@@ -40,6 +40,10 @@ struct Spectrum {
     double peak_share = 0;
     double amplitude = 0;  ///< amplitude of a sine with the peak's energy, unit of the heights
     std::size_t samples = 0;
+    /// The peak is the longest wavelength the record resolves (half the record): the profile may
+    /// hold a single bump and no period at all, and `wavelength` is then the record's limit, not
+    /// a wavelength of the profile.
+    bool at_record_limit = false;
 };
 
 namespace internal {
@@ -118,6 +122,7 @@ inline Spectrum dominant_wavelength(const std::vector<double>& heights, double s
             delta = std::clamp(0.5 * (a - c) / denom, -0.5, 0.5);
         }
     }
+    out.at_record_limit = peak == first;
     const double freq = (double(peak) + delta) / (double(padded) * spacing);
     out.wavelength = 1 / freq;
     const std::size_t lobe = 2 * pad;
