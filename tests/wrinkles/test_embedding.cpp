@@ -1,0 +1,150 @@
+// The embedding of a fine drape in a coarse one through the pattern coordinates: known heights
+// come back on a plane, pieces do not see each other, a fine outline outside the coarse one is
+// measured, bad inputs are named.
+#include <tapeline/wrinkles/embedding.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <string>
+
+namespace tg = tapeline::garment;
+namespace tw = tapeline::wrinkles;
+using tw::Vec3;
+
+namespace {
+
+/// nx × ny cells of `cell` mm from (u0, v0) in the pattern, on piece `piece`, placed by `place`.
+void add_grid(tg::GarmentMesh& g, int nx, int ny, double cell, double u0, double v0,
+              std::uint32_t piece, const std::function<Vec3(double, double)>& place) {
+    const auto base = std::uint32_t(g.positions.size());
+    auto id = [&](int i, int j) { return base + std::uint32_t(j * (nx + 1) + i); };
+    for (int j = 0; j <= ny; ++j) {
+        for (int i = 0; i <= nx; ++i) {
+            g.positions.push_back(place(u0 + i * cell, v0 + j * cell));
+        }
+    }
+    auto uv = [&](int i, int j) { return tg::UV{u0 + i * cell, v0 + j * cell}; };
+    for (int j = 0; j < ny; ++j) {
+        for (int i = 0; i < nx; ++i) {
+            g.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            g.uv.push_back({uv(i, j), uv(i + 1, j), uv(i + 1, j + 1)});
+            g.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+            g.uv.push_back({uv(i, j), uv(i + 1, j + 1), uv(i, j + 1)});
+            g.triangle_piece.push_back(piece);
+            g.triangle_piece.push_back(piece);
+        }
+    }
+}
+
+// A tilted plane: (u, v) -> o + u·a + v·b with a, b orthonormal; normal a × b.
+const Vec3 kA = tapeline::vec3::normalized({1, 0.2, 0.1});
+const Vec3 kB =
+    tapeline::vec3::normalized(tapeline::vec3::cross(tapeline::vec3::cross(kA, Vec3{0, 1, 0}), kA));
+const Vec3 kN = tapeline::vec3::cross(kA, kB);
+
+Vec3 on_plane(double u, double v, double h = 0) {
+    return {5 + u * kA[0] + v * kB[0] + h * kN[0], -3 + u * kA[1] + v * kB[1] + h * kN[1],
+            2 + u * kA[2] + v * kB[2] + h * kN[2]};
+}
+
+}  // namespace
+
+TEST(Embedding, HeightsOfAFineWaveOverACoarsePlaneComeBack) {
+    // Coarse: 20 mm cells; fine: 4 mm cells of the same 200 × 100 mm pattern, lifted along the
+    // normal by a wave of 37 mm wavelength and 2 mm amplitude.
+    tg::GarmentMesh coarse, fine;
+    add_grid(coarse, 10, 5, 20, 0, 0, 0, [](double u, double v) { return on_plane(u, v); });
+    auto wave = [](double v) { return 2.0 * std::sin(2 * M_PI * v / 37); };
+    add_grid(fine, 50, 25, 4, 0, 0, 0, [&](double u, double v) { return on_plane(u, v, wave(v)); });
+    const tw::Embedding e = tw::embed_fine_in_coarse(coarse, fine);
+    ASSERT_EQ(e.used, fine.positions.size());
+    for (std::size_t k = 0; k < fine.positions.size(); ++k) {
+        const double v = 4.0 * double(k / 51);
+        EXPECT_NEAR(e.vertices[k].height_mm, wave(v), 1e-9) << k;
+        EXPECT_NEAR(e.vertices[k].tangential_mm, 0, 1e-9) << k;
+        EXPECT_NEAR(e.vertices[k].outside_mm, 0, 1e-9) << k;
+        const auto& b = e.vertices[k].barycentric;
+        EXPECT_NEAR(b[0] + b[1] + b[2], 1, 1e-12);
+        for (double x : b) {
+            EXPECT_GE(x, -1e-9);
+        }
+    }
+    EXPECT_NEAR(e.rms_height_mm, std::sqrt(2.0), 0.05);  // 2/√2 over whole-ish periods
+    EXPECT_NEAR(e.max_abs_height_mm, 2, 0.01);
+}
+
+TEST(Embedding, PiecesDoNotSeeEachOther) {
+    // Two pieces with the same pattern coordinates, placed 300 mm apart: each fine vertex lands
+    // on its own piece's coarse surface (height 0), not on the other's (300 mm away).
+    tg::GarmentMesh coarse, fine;
+    for (std::uint32_t p = 0; p < 2; ++p) {
+        const double off = 300.0 * p;
+        add_grid(coarse, 4, 4, 25, 0, 0, p, [&](double u, double v) { return Vec3{u, v, off}; });
+        add_grid(fine, 20, 20, 5, 0, 0, p, [&](double u, double v) { return Vec3{u, v, off}; });
+    }
+    const tw::Embedding e = tw::embed_fine_in_coarse(coarse, fine);
+    EXPECT_NEAR(e.max_abs_height_mm, 0, 1e-9);
+    EXPECT_NEAR(e.rms_tangential_mm, 0, 1e-9);
+    for (std::size_t k = 0; k < fine.positions.size(); ++k) {
+        const std::uint32_t piece = k < 441 ? 0 : 1;
+        EXPECT_EQ(coarse.triangle_piece[e.vertices[k].coarse_triangle], piece) << k;
+    }
+}
+
+TEST(Embedding, FineOutlineOutsideTheCoarseOneIsMeasured) {
+    // The fine pattern reaches 3 mm beyond the coarse one on its right: those vertices are
+    // 3 mm outside, located on the coarse outline, and their height is still measured.
+    tg::GarmentMesh coarse, fine;
+    add_grid(coarse, 5, 5, 20, 0, 0, 0, [](double u, double v) { return on_plane(u, v); });
+    add_grid(fine, 26, 25, 4, 0, 0, 0,
+             [](double u, double v) { return on_plane(u, v, 1.5); });  // 104 × 100 mm
+    const tw::Embedding e = tw::embed_fine_in_coarse(coarse, fine);
+    EXPECT_NEAR(e.max_outside_mm, 4, 1e-9);
+    EXPECT_NEAR(e.max_abs_height_mm, 1.5, 1e-9);
+    // Beyond the outline the point is pulled back along u: its displacement gains that 4 mm as
+    // a tangential part.
+    EXPECT_GT(e.rms_tangential_mm, 0.1);
+}
+
+TEST(Embedding, BadInputsAreNamed) {
+    tg::GarmentMesh coarse, fine;
+    add_grid(coarse, 2, 2, 10, 0, 0, 0, [](double u, double v) { return Vec3{u, v, 0}; });
+    add_grid(fine, 4, 4, 5, 0, 0, 0, [](double u, double v) { return Vec3{u, v, 0}; });
+    auto error_of = [](const std::function<void()>& f) -> std::string {
+        try {
+            f();
+        } catch (const tapeline::InvalidInput& e) {
+            return e.what();
+        }
+        return "(no InvalidInput)";
+    };
+    auto bad = fine;
+    bad.triangle_piece[7] = 3;
+    EXPECT_NE(error_of([&] {
+                  tw::embed_fine_in_coarse(coarse, bad);
+              }).find("fine triangle 7 lies on piece 3, the coarse mesh has 1"),
+              std::string::npos);
+    bad = fine;
+    bad.positions[4][2] = NAN;
+    EXPECT_NE(error_of([&] { tw::embed_fine_in_coarse(coarse, bad); }).find("fine mesh: vertex 4"),
+              std::string::npos);
+    auto badc = coarse;
+    badc.uv.pop_back();
+    EXPECT_NE(
+        error_of([&] { tw::embed_fine_in_coarse(badc, fine); }).find("coarse mesh: 8 triangles"),
+        std::string::npos);
+    badc = coarse;
+    badc.triangles[2][0] = 40;
+    EXPECT_NE(error_of([&] {
+                  tw::embed_fine_in_coarse(badc, fine);
+              }).find("coarse mesh: triangle 2 names vertex 40"),
+              std::string::npos);
+    badc = coarse;
+    for (auto& t : badc.uv) {
+        t[1] = t[0];
+    }
+    EXPECT_NE(error_of([&] { tw::embed_fine_in_coarse(badc, fine); }).find("non-zero area"),
+              std::string::npos);
+}
