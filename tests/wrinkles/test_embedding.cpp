@@ -148,3 +148,46 @@ TEST(Embedding, BadInputsAreNamed) {
     EXPECT_NE(error_of([&] { tw::embed_fine_in_coarse(badc, fine); }).find("non-zero area"),
               std::string::npos);
 }
+
+#include <tapeline/wrinkles/compare.h>
+
+TEST(WrinkleComparison, AFineWaveOfKnownWavelengthIsMeasuredAgainstThePrediction) {
+    // A flat 300 × 300 mm panel pulled 3 % along u (weft) and shortened 5 % along v (warp):
+    // tension wrinkles predicted with the tension term over L = 300 mm. The fine drape (3 mm)
+    // carries a wave along the warp of 1.1 times the predicted wavelength (draped length) and
+    // 2 mm amplitude: the comparison finds the ratio 1.1 and the amplitude.
+    tg::FabricParams fabric;
+    fabric.bending_un_m = 2;
+    tw::ClassifyOptions co;
+    co.tension_length_mm = 300;
+    tg::GarmentMesh coarse;
+    add_grid(coarse, 15, 15, 20, 0, 0, 0,
+             [](double u, double v) { return on_plane(1.03 * u, 0.95 * v); });
+    const tw::WrinkleField field = tw::classify_wrinkles(coarse, fabric, co);
+    const double predicted = field.triangles[0].wavelength_mm;
+    ASSERT_TRUE(std::isfinite(predicted));
+    ASSERT_EQ(field.report.count[std::size_t(tw::WrinkleClass::tension)], coarse.triangles.size());
+    const double lambda = 1.1 * predicted, amp = 2;
+    tg::GarmentMesh fine;
+    add_grid(fine, 100, 100, 3, 0, 0, 0, [&](double u, double v) {
+        return on_plane(1.03 * u, 0.95 * v, amp * std::sin(2 * M_PI * 0.95 * v / lambda));
+    });
+    const tw::Comparison c = tw::compare_wrinkles(coarse, field, fine);
+    EXPECT_EQ(c.report.windows, coarse.triangles.size());
+    EXPECT_GT(c.report.measured, c.report.windows / 2);
+    EXPECT_NEAR(c.report.median_wavelength_ratio, 1.1, 0.02);
+    EXPECT_NEAR(c.report.median_wavelength_error_percent_all, 10, 2);
+    const double amp_err = 100 * std::abs(amp / field.triangles[0].amplitude_mm - 1);
+    EXPECT_NEAR(c.report.median_amplitude_error_percent_all, amp_err, 5);
+    for (const auto& w : c.windows) {
+        if (w.measured) {
+            EXPECT_NEAR(w.measured_wavelength_mm / w.predicted_wavelength_mm, 1.1, 0.06)
+                << w.triangle;
+        }
+    }
+    // A flat fine drape shows no wavelength anywhere.
+    tg::GarmentMesh flat;
+    add_grid(flat, 100, 100, 3, 0, 0, 0,
+             [&](double u, double v) { return on_plane(1.03 * u, 0.95 * v); });
+    EXPECT_EQ(tw::compare_wrinkles(coarse, field, flat).report.measured, 0u);
+}

@@ -1,0 +1,263 @@
+// The wrinkles of a fine drape against the prediction on a coarse drape of the same garment:
+// for every compressed coarse triangle with a predicted wavelength, the dominant wavelength and
+// amplitude of the fine drape's height field (embedding.h) over a window around it.
+//
+// Window. In the pattern plane of the triangle's piece: centred on its centroid, `periods`
+// predicted wavelengths long along its compression axis (the waves' direction, TriangleStrain::
+// rest_min) and `width_fraction` of a predicted wavelength wide along the crests. The fine
+// vertices inside it (a CGAL kd-tree range query) are binned along the axis at a quarter of the
+// fine mesh's mean pattern edge, the mean height of each bin is taken, empty bins are filled by
+// linear interpolation, and the profile goes to dominant_wavelength() (spectrum.h); its
+// wavelength, a length of pattern, times the triangle's s_min is the draped wavelength. A window
+// counts as measured when its profile has a dominant wavelength (peak share at least
+// `min_peak_share`) that is not the longest the window resolves (Spectrum::at_record_limit), an
+// amplitude of at least `min_amplitude_mm`, and at least 16 fine vertices.
+#pragma once
+
+#include <tapeline/core/errors.h>
+#include <tapeline/garment/garment_types.h>
+#include <tapeline/wrinkles/classify.h>
+#include <tapeline/wrinkles/embedding.h>
+#include <tapeline/wrinkles/spectrum.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fuzzy_iso_box.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/property_map.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace tapeline::wrinkles {
+
+/// How the windows are cut (see the file comment).
+struct CompareOptions {
+    double periods = 4;             ///< window length in predicted wavelengths (>= 2)
+    double width_fraction = 0.5;    ///< window width in predicted wavelengths (> 0)
+    double min_peak_share = 0.3;    ///< a dominant wavelength needs this share (0–1)
+    double min_amplitude_mm = 0.1;  ///< and this amplitude (>= 0): smaller is no visible wave
+};
+
+/// One compressed coarse triangle: what was predicted and what the fine drape shows there.
+struct WindowComparison {
+    std::uint32_t triangle = 0;
+    WrinkleClass cls = WrinkleClass::none;
+    double predicted_wavelength_mm = 0, predicted_amplitude_mm = 0;
+    double measured_wavelength_mm = 0, measured_amplitude_mm = 0;
+    double peak_share = 0;
+    std::size_t fine_vertices = 0;  ///< in the window
+    bool measured = false;          ///< see the file comment
+};
+
+/// Totals over the windows.
+struct ComparisonReport {
+    std::size_t windows = 0;   ///< compressed coarse triangles with a predicted wavelength
+    std::size_t measured = 0;  ///< of them, windows with a dominant wavelength in the fine drape
+    /// Per class: measured windows and the median of |measured / predicted − 1| of wavelength and
+    /// amplitude, % (NaN: none measured).
+    ///@{
+    std::array<std::size_t, kWrinkleClasses> measured_per_class{};
+    std::array<double, kWrinkleClasses> median_wavelength_error_percent{},
+        median_amplitude_error_percent{};
+    ///@}
+    /// The same over every measured window.
+    ///@{
+    double median_wavelength_error_percent_all = std::numeric_limits<double>::quiet_NaN();
+    double median_amplitude_error_percent_all = std::numeric_limits<double>::quiet_NaN();
+    ///@}
+    /// Median of measured / predicted wavelength over the measured windows (1: unbiased).
+    double median_wavelength_ratio = std::numeric_limits<double>::quiet_NaN();
+    double rms_height_mm = 0;   ///< of the whole fine drape over the coarse one (embedding)
+    double max_outside_mm = 0;  ///< embedding: fine outline beyond the coarse one, pattern mm
+};
+
+struct Comparison {
+    std::vector<WindowComparison> windows;
+    ComparisonReport report;
+    Embedding embedding;
+};
+
+/// Compares the fine drape `fine` with the classification `field` of the coarse drape `coarse`
+/// (both GarmentMesh of one pattern, mm).
+///
+/// \throws InvalidInput as embed_fine_in_coarse(), for a `field` of another size than `coarse`'s
+///         triangles, or options out of range.
+inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const WrinkleField& field,
+                                   const garment::GarmentMesh& fine, const CompareOptions& o = {}) {
+    if (!(o.periods >= 2 && std::isfinite(o.periods))) {
+        throw InvalidInput("wrinkle comparison: periods must be >= 2 (got " +
+                           std::to_string(o.periods) + ")");
+    }
+    if (!(o.width_fraction > 0 && std::isfinite(o.width_fraction))) {
+        throw InvalidInput("wrinkle comparison: width_fraction must be > 0 (got " +
+                           std::to_string(o.width_fraction) + ")");
+    }
+    if (!(o.min_amplitude_mm >= 0 && std::isfinite(o.min_amplitude_mm))) {
+        throw InvalidInput("wrinkle comparison: min_amplitude_mm must be finite and >= 0 (got " +
+                           std::to_string(o.min_amplitude_mm) + ")");
+    }
+    if (!(o.min_peak_share >= 0 && o.min_peak_share <= 1)) {
+        throw InvalidInput("wrinkle comparison: min_peak_share must lie in [0, 1] (got " +
+                           std::to_string(o.min_peak_share) + ")");
+    }
+    if (field.triangles.size() != coarse.triangles.size()) {
+        throw InvalidInput("wrinkle comparison: " + std::to_string(field.triangles.size()) +
+                           " classified triangles for a coarse mesh of " +
+                           std::to_string(coarse.triangles.size()));
+    }
+    Comparison out;
+    out.embedding = embed_fine_in_coarse(coarse, fine);
+    const Embedding& e = out.embedding;
+
+    // Fine vertices in the pattern plane, pieces lifted apart (as in embedding.h).
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    using Point = K::Point_3;
+    using Entry = std::tuple<Point, std::uint32_t>;
+    using Traits = CGAL::Search_traits_adapter<Entry, CGAL::Nth_of_tuple_property_map<0, Entry>,
+                                               CGAL::Search_traits_3<K>>;
+    using Tree = CGAL::Kd_tree<Traits>;
+    using Box = CGAL::Fuzzy_iso_box<Traits>;
+    constexpr double kPieceGap = 1e7;
+    std::vector<Entry> entries;
+    std::vector<garment::UV> where(fine.positions.size());
+    std::vector<std::uint8_t> seen(fine.positions.size(), 0);
+    double edge_sum = 0;
+    std::size_t edges = 0;
+    for (std::size_t f = 0; f < fine.triangles.size(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const garment::UV& a = fine.uv[f][std::size_t(k)];
+            const garment::UV& b = fine.uv[f][std::size_t((k + 1) % 3)];
+            edge_sum += std::hypot(a[0] - b[0], a[1] - b[1]);
+            ++edges;
+            const std::uint32_t v = fine.triangles[f][std::size_t(k)];
+            if (!seen[v]) {
+                seen[v] = 1;
+                where[v] = a;
+                entries.emplace_back(Point(a[0], a[1], kPieceGap * double(fine.triangle_piece[f])),
+                                     v);
+            }
+        }
+    }
+    const double bin = edges > 0 ? 0.25 * edge_sum / double(edges) : 1;
+    Tree tree(entries.begin(), entries.end());
+
+    std::array<std::vector<double>, kWrinkleClasses> lam_err, amp_err;
+    std::vector<double> all_lam, all_amp, ratios;
+    ComparisonReport& r = out.report;
+    for (std::size_t t = 0; t < coarse.triangles.size(); ++t) {
+        const TriangleWrinkles& w = field.triangles[t];
+        if (w.cls == WrinkleClass::none || !std::isfinite(w.wavelength_mm)) {
+            continue;
+        }
+        ++r.windows;
+        WindowComparison c;
+        c.triangle = std::uint32_t(t);
+        c.cls = w.cls;
+        c.predicted_wavelength_mm = w.wavelength_mm;
+        c.predicted_amplitude_mm = w.amplitude_mm;
+        const auto& u = coarse.uv[t];
+        const garment::UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3,
+                                 (u[0][1] + u[1][1] + u[2][1]) / 3};
+        const garment::UV axis = w.strain.rest_min, crest = w.strain.rest_max;
+        const double half_len = 0.5 * o.periods * w.wavelength_mm;
+        const double half_wid = 0.5 * o.width_fraction * w.wavelength_mm;
+        const double reach = std::hypot(half_len, half_wid);
+        const double z = kPieceGap * double(coarse.triangle_piece[t]);
+        std::vector<Entry> found;
+        tree.search(std::back_inserter(found),
+                    Box(Point(centre[0] - reach, centre[1] - reach, z - 1),
+                        Point(centre[0] + reach, centre[1] + reach, z + 1)));
+        const auto nbins = static_cast<std::size_t>(std::ceil(2 * half_len / bin));
+        std::vector<double> sum(nbins, 0.0);
+        std::vector<std::size_t> count(nbins, 0);
+        for (const Entry& en : found) {
+            const std::uint32_t v = std::get<1>(en);
+            const double du = where[v][0] - centre[0], dv = where[v][1] - centre[1];
+            const double s = du * axis[0] + dv * axis[1];
+            const double q = du * crest[0] + dv * crest[1];
+            if (std::abs(s) > half_len || std::abs(q) > half_wid) {
+                continue;
+            }
+            const auto b = std::min(nbins - 1, static_cast<std::size_t>((s + half_len) / bin));
+            sum[b] += e.vertices[v].height_mm;
+            ++count[b];
+            ++c.fine_vertices;
+        }
+        // Bin means, empty bins filled linearly between their filled neighbours; the ends are
+        // cut to the first and last filled bin.
+        std::vector<double> s_of, h_of;
+        for (std::size_t b = 0; b < nbins; ++b) {
+            if (count[b] > 0) {
+                s_of.push_back((double(b) + 0.5) * bin);
+                h_of.push_back(sum[b] / double(count[b]));
+            }
+        }
+        if (c.fine_vertices >= 16 && s_of.size() >= 8 && s_of.back() - s_of.front() >= 8 * bin) {
+            const Spectrum sp = dominant_wavelength(resample_uniform(s_of, h_of, bin), bin);
+            // Pattern length to draped length: the waves' direction is shortened by s_min.
+            c.measured_wavelength_mm = sp.wavelength * w.strain.s_min;
+            c.measured_amplitude_mm = sp.amplitude;
+            c.peak_share = sp.peak_share;
+            c.measured = sp.wavelength > 0 && !sp.at_record_limit &&
+                         sp.peak_share >= o.min_peak_share && sp.amplitude >= o.min_amplitude_mm;
+        }
+        if (c.measured) {
+            ++r.measured;
+            ++r.measured_per_class[std::size_t(c.cls)];
+            const double le =
+                100 * std::abs(c.measured_wavelength_mm / c.predicted_wavelength_mm - 1);
+            const double ae =
+                100 * std::abs(c.measured_amplitude_mm / c.predicted_amplitude_mm - 1);
+            lam_err[std::size_t(c.cls)].push_back(le);
+            amp_err[std::size_t(c.cls)].push_back(ae);
+            all_lam.push_back(le);
+            all_amp.push_back(ae);
+            ratios.push_back(c.measured_wavelength_mm / c.predicted_wavelength_mm);
+        }
+        out.windows.push_back(c);
+    }
+    for (std::size_t k = 0; k < kWrinkleClasses; ++k) {
+        r.median_wavelength_error_percent[k] = internal::median(lam_err[k]);
+        r.median_amplitude_error_percent[k] = internal::median(amp_err[k]);
+    }
+    r.median_wavelength_error_percent_all = internal::median(all_lam);
+    r.median_amplitude_error_percent_all = internal::median(all_amp);
+    r.median_wavelength_ratio = internal::median(ratios);
+    r.rms_height_mm = e.rms_height_mm;
+    r.max_outside_mm = e.max_outside_mm;
+    return out;
+}
+
+/// The report as JSON (%, mm; a NaN median is null).
+inline nlohmann::ordered_json comparison_report_json(const ComparisonReport& r) {
+    auto num = [](double v) {
+        return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+    };
+    nlohmann::ordered_json j;
+    j["windows"] = r.windows;
+    j["measured"] = r.measured;
+    nlohmann::ordered_json classes = nlohmann::ordered_json::object();
+    for (std::size_t k = 1; k < kWrinkleClasses; ++k) {
+        classes[to_string(WrinkleClass(k))] = {
+            {"measured", r.measured_per_class[k]},
+            {"median_wavelength_error_percent", num(r.median_wavelength_error_percent[k])},
+            {"median_amplitude_error_percent", num(r.median_amplitude_error_percent[k])}};
+    }
+    j["classes"] = classes;
+    j["median_wavelength_error_percent"] = num(r.median_wavelength_error_percent_all);
+    j["median_amplitude_error_percent"] = num(r.median_amplitude_error_percent_all);
+    j["median_wavelength_ratio"] = num(r.median_wavelength_ratio);
+    j["rms_height_mm"] = r.rms_height_mm;
+    j["max_outside_mm"] = r.max_outside_mm;
+    return j;
+}
+
+}  // namespace tapeline::wrinkles
