@@ -17,7 +17,10 @@ out=${2:-$root/docs/bench_front}
 shared=$root/../shared/data/meshes
 mkdir -p "$out"
 jsonl="$out/front.jsonl"
+# gcf-window:8/faces/steps:200: the curvature-flow field with the window flows' former step limit
+# (CurvatureFlowDistanceOptions::window_max_iterations), beside today's 20.
 methods=exact-mmp,heat,heat-idt,dijkstra,fmm,fmm-no-unfold,gcf-window:8,gcf-window:8/faces
+methods+=,gcf-window:8/faces/steps:200
 common=(--timeout 900 --memory-limit 16 --seed 1 --reference exact-mmp --threads 1 --methods "$methods")
 
 meshes=(--surface icosphere:6 --surface ellipsoid:1,0.6,0.3:6:0.25)
