@@ -1,8 +1,10 @@
 // `tapeline wrinkles classify GARMENT.obj --fabric NAME|fabric.json [--units auto|mm|cm|dm|m]
-// [--report r.json] [--triangles t.json] [--picture p.png]`: the wrinkle class of every triangle
-// of a draped garment (as `tapeline dress` writes it: positions in the body's unit, pattern
-// coordinates in mm, the grain per piece) and the wavelength and amplitude the buckling law
-// predicts there (wrinkles/classify.h). The `buckling` experiments are in wrinkles_buckling.cpp.
+// [--report r.json] [--triangles t.json] [--picture p.png]` and `tapeline wrinkles compare
+// COARSE.obj FINE.obj [--fabric ...] [--report r.json] [--windows w.json]` (compare.h): the wrinkle
+// class of every triangle of a draped garment (as `tapeline dress` writes it: positions in the
+// body's unit, pattern coordinates in mm, the grain per piece) and the wavelength and amplitude the
+// buckling law predicts there (wrinkles/classify.h). The `buckling` experiments are in
+// wrinkles_buckling.cpp.
 #include "commands.h"
 #include "output.h"
 
@@ -12,16 +14,19 @@
 #include <tapeline/garment/fabric.h>
 #include <tapeline/garment/garment_io.h>
 #include <tapeline/wrinkles/classify.h>
+#include <tapeline/wrinkles/compare.h>
 #include <tapeline/wrinkles/picture.h>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,6 +35,17 @@ namespace {
 
 namespace tg = tapeline::garment;
 namespace tw = tapeline::wrinkles;
+
+/// A figure right-aligned in 12 (or `width`) columns with one decimal, "-" when not finite.
+std::string cell(double v, int width = 12) {
+    char buf[48];
+    if (std::isfinite(v)) {
+        std::snprintf(buf, sizeof buf, "%*.1f", width, v);
+    } else {
+        std::snprintf(buf, sizeof buf, "%*s", width, "-");
+    }
+    return buf;
+}
 
 struct ClassifyArgs {
     std::string garment, fabric = "cotton_jersey", units = "auto", report, triangles, picture;
@@ -71,6 +87,29 @@ LengthUnit garment_unit(const tg::GarmentMesh& g, const std::string& path) {
                        std::string(buf) + "); give --units");
 }
 
+/// --units: nullopt for auto, else the unit (InvalidInput for anything but mm, cm, dm, m).
+std::optional<LengthUnit> units_option(const std::string& units) {
+    if (units == "auto") {
+        return std::nullopt;
+    }
+    const auto u = length_unit(units);
+    if (!u || *u == LengthUnit::inch) {
+        throw InvalidInput("--units " + units + ": expected auto, mm, cm, dm or m");
+    }
+    return u;
+}
+
+/// Reads a garment OBJ and scales it to mm; `found` is the unit given or found.
+tg::GarmentMesh garment_in_mm(const std::string& path, std::optional<LengthUnit> given,
+                              LengthUnit& found) {
+    tg::GarmentMesh g = tg::read_garment_obj(path);
+    found = given ? *given : garment_unit(g, path);
+    for (tg::Vec3& p : g.positions) {
+        p = vec3::scale(p, millimetres_per(found));
+    }
+    return g;
+}
+
 void run_classify(const ClassifyArgs& a) {
     if (!a.report.empty() && extension_of(a.report) != ".json") {
         throw InvalidInput("--report " + a.report + ": expected a .json file");
@@ -81,24 +120,11 @@ void run_classify(const ClassifyArgs& a) {
     if (!a.picture.empty() && extension_of(a.picture) != ".png") {
         throw InvalidInput("--picture " + a.picture + ": expected a .png file");
     }
-    LengthUnit unit = LengthUnit::mm;
-    if (a.units != "auto") {
-        const auto u = length_unit(a.units);
-        if (!u || *u == LengthUnit::inch) {
-            throw InvalidInput("--units " + a.units + ": expected auto, mm, cm, dm or m");
-        }
-        unit = *u;
-    }
+    const std::optional<LengthUnit> given = units_option(a.units);
     OutputFiles outputs({a.report, a.triangles, a.picture});
     const tg::FabricParams fabric = tg::fabric_from(a.fabric);
-    tg::GarmentMesh g = tg::read_garment_obj(a.garment);
-    if (a.units == "auto") {
-        unit = garment_unit(g, a.garment);
-    }
-    const double mm = millimetres_per(unit);
-    for (tg::Vec3& p : g.positions) {
-        p = vec3::scale(p, mm);
-    }
+    LengthUnit unit = LengthUnit::mm;
+    const tg::GarmentMesh g = garment_in_mm(a.garment, given, unit);
     const tw::WrinkleField w = tw::classify_wrinkles(g, fabric, a.options);
     const tw::WrinkleReport& r = w.report;
     std::printf("%s: %zu triangles, positions in %s, fabric %s\n", a.garment.c_str(), r.triangles,
@@ -106,15 +132,6 @@ void run_classify(const ClassifyArgs& a) {
     std::printf("%-12s %9s %7s %12s %12s\n", "class", "triangles", "area_%", "lambda_mm",
                 "amplitude_mm");
     for (std::size_t c = 0; c < tw::kWrinkleClasses; ++c) {
-        auto cell = [](double v) {
-            char buf[32];
-            if (std::isfinite(v)) {
-                std::snprintf(buf, sizeof buf, "%12.1f", v);
-            } else {
-                std::snprintf(buf, sizeof buf, "%12s", "-");
-            }
-            return std::string(buf);
-        };
         std::printf("%-12s %9zu %7.1f %s %s\n", tw::to_string(tw::WrinkleClass(c)), r.count[c],
                     r.area_percent[c], cell(r.median_wavelength_mm[c]).c_str(),
                     cell(r.median_amplitude_mm[c]).c_str());
@@ -149,6 +166,77 @@ void run_classify(const ClassifyArgs& a) {
             tw::wrinkle_picture(g, w, name + ": wrinkle classes (" + fabric.name + ")");
         outputs.write(
             a.picture, [&](std::ostream& out) { draw::write_png(out, img, 5); }, true);
+    }
+    outputs.commit();
+}
+
+struct CompareArgs {
+    std::string coarse, fine, fabric = "cotton_jersey", units = "auto", report, windows;
+    tw::ClassifyOptions classify;
+    tw::CompareOptions compare;
+};
+
+void run_compare(const CompareArgs& a) {
+    for (const std::string* f : {&a.report, &a.windows}) {
+        if (!f->empty() && extension_of(*f) != ".json") {
+            throw InvalidInput(*f + ": expected a .json file");
+        }
+    }
+    const std::optional<LengthUnit> given = units_option(a.units);
+    OutputFiles outputs({a.report, a.windows});
+    const tg::FabricParams fabric = tg::fabric_from(a.fabric);
+    LengthUnit uc = LengthUnit::mm, uf = LengthUnit::mm;
+    const tg::GarmentMesh coarse = garment_in_mm(a.coarse, given, uc);
+    const tg::GarmentMesh fine = garment_in_mm(a.fine, given, uf);
+    const tw::WrinkleField field = tw::classify_wrinkles(coarse, fabric, a.classify);
+    const tw::Comparison c = tw::compare_wrinkles(coarse, field, fine, a.compare);
+    const tw::ComparisonReport& r = c.report;
+    std::printf("coarse %s (%zu triangles, %s), fine %s (%zu triangles, %s), fabric %s\n",
+                a.coarse.c_str(), coarse.triangles.size(), to_string(uc), a.fine.c_str(),
+                fine.triangles.size(), to_string(uf), fabric.name.c_str());
+    std::printf("fine over coarse: rms height %.2f mm, fine outline up to %.2f mm outside\n",
+                r.rms_height_mm, r.max_outside_mm);
+    std::printf("%-12s %8s %9s %16s %16s\n", "class", "windows", "measured", "lambda_err_%",
+                "amplitude_err_%");
+    std::array<std::size_t, tw::kWrinkleClasses> windows{};
+    for (const auto& w : c.windows) {
+        ++windows[std::size_t(w.cls)];
+    }
+    for (std::size_t k = 1; k < tw::kWrinkleClasses; ++k) {
+        std::printf("%-12s %8zu %9zu %s %s\n", tw::to_string(tw::WrinkleClass(k)), windows[k],
+                    r.measured_per_class[k], cell(r.median_wavelength_error_percent[k], 16).c_str(),
+                    cell(r.median_amplitude_error_percent[k], 16).c_str());
+    }
+    std::printf("%-12s %8zu %9zu %s %s\n", "all", r.windows, r.measured,
+                cell(r.median_wavelength_error_percent_all, 16).c_str(),
+                cell(r.median_amplitude_error_percent_all, 16).c_str());
+    std::printf("median measured / predicted wavelength: %s\n",
+                std::isfinite(r.median_wavelength_ratio)
+                    ? std::to_string(r.median_wavelength_ratio).c_str()
+                    : "- (no window measured)");
+    if (!a.report.empty()) {
+        nlohmann::ordered_json j;
+        j["coarse"] = a.coarse;
+        j["fine"] = a.fine;
+        j["fabric"] = fabric.name;
+        j["classes"] = tw::wrinkle_report_json(field.report);
+        j["comparison"] = tw::comparison_report_json(r);
+        outputs.write(a.report, [&](std::ostream& out) { out << j.dump(1) << '\n'; });
+    }
+    if (!a.windows.empty()) {
+        nlohmann::ordered_json arr = nlohmann::ordered_json::array();
+        for (const auto& w : c.windows) {
+            arr.push_back({{"triangle", w.triangle},
+                           {"class", tw::to_string(w.cls)},
+                           {"predicted_wavelength_mm", w.predicted_wavelength_mm},
+                           {"measured_wavelength_mm", w.measured_wavelength_mm},
+                           {"predicted_amplitude_mm", w.predicted_amplitude_mm},
+                           {"measured_amplitude_mm", w.measured_amplitude_mm},
+                           {"peak_share", w.peak_share},
+                           {"fine_vertices", w.fine_vertices},
+                           {"measured", w.measured}});
+        }
+        outputs.write(a.windows, [&](std::ostream& out) { out << arr.dump() << '\n'; });
     }
     outputs.commit();
 }
@@ -189,6 +277,27 @@ void register_wrinkles_commands(CLI::App& app) {
                    "Length L of the tension term T(pi/L)^2 of the foundation, mm (0: off)")
         ->capture_default_str();
     cl->callback([ca] { run_classify(*ca); });
+
+    CLI::App* cmp = wr->add_subcommand(
+        "compare",
+        "A fine drape against the wrinkles predicted on a coarse drape of the same pattern: "
+        "dominant wavelength and amplitude of the fine height field around every compressed "
+        "coarse triangle");
+    auto ka = std::make_shared<CompareArgs>();
+    cmp->add_option("COARSE", ka->coarse, "Coarse drape OBJ (tapeline dress)")->required();
+    cmp->add_option("FINE", ka->fine, "Fine drape OBJ of the same pattern")->required();
+    cmp->add_option("--fabric", ka->fabric, "Library fabric name or a .json fabric file")
+        ->capture_default_str();
+    cmp->add_option("--units", ka->units, "Unit of both OBJs' positions: auto, mm, cm, dm, m")
+        ->capture_default_str();
+    cmp->add_option("--report", ka->report, "Report (JSON): classes and errors per class");
+    cmp->add_option("--windows", ka->windows, "Per-window JSON: predicted and measured");
+    cmp->add_option("--periods", ka->compare.periods, "Window length in predicted wavelengths")
+        ->capture_default_str();
+    cmp->add_option("--tension-length", ka->classify.tension_length_mm,
+                    "Length L of the tension term T(pi/L)^2 of the foundation, mm (0: off)")
+        ->capture_default_str();
+    cmp->callback([ka] { run_compare(*ka); });
     register_wrinkles_buckling(*wr);
 }
 

@@ -1613,6 +1613,44 @@ expect_fail "wrinkles classify: bad unit" "--units inch: expected auto" "$bin" w
 expect_fail "wrinkles classify: bad threshold" "compression_threshold must lie in" "$bin" wrinkles classify g.obj --compression-threshold 0 --report x.json
 expect_fail "wrinkles classify: unknown fabric" "unknown fabric 'tweed'" "$bin" wrinkles classify g.obj --fabric tweed --report x.json
 expect_fail "wrinkles classify: missing file" "nothere.obj: cannot open" "$bin" wrinkles classify nothere.obj --report x.json
+# compare: a flat panel (pattern 300 x 300 mm) pulled 3 % across and shortened 5 % along the
+# warp, coarse at 20 mm, fine at 3 mm with a wave along the warp of 1.1 times the wavelength the
+# law predicts with the tension term over 300 mm: the tool measures the ratio.
+$py - <<'PY'
+import json, math
+f = json.load(open("denim.json"))
+T, B, q = f["stretch_weft_n_m"] * 0.03, f["bending_un_m"] * 1e-6, math.pi / 0.3
+lam = 1.1 * 2 * math.pi * (B / (T * q * q)) ** 0.25 * 1e3
+def grid(path, n, cell, wave):
+    with open(path, "w") as o:
+        o.write("g panel\n# grain 0 1\n")
+        for j in range(n + 1):
+            for i in range(n + 1):
+                u, v = cell * i, cell * j
+                h = 2 * math.sin(2 * math.pi * 0.95 * v / lam) if wave else 0
+                o.write("v %.9g %.9g %.9g\n" % (1.03 * u, 0.95 * v, h))
+        for j in range(n + 1):
+            for i in range(n + 1):
+                o.write("vt %g %g\n" % (cell * i, cell * j))
+        for j in range(n):
+            for i in range(n):
+                a, b, c, d = j * (n + 1) + i + 1, j * (n + 1) + i + 2, (j + 1) * (n + 1) + i + 2, (j + 1) * (n + 1) + i + 1
+                o.write("f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n" % (a, a, b, b, c, c, a, a, c, c, d, d))
+grid("coarse.obj", 15, 20.0, False)
+grid("fine.obj", 100, 3.0, True)
+PY
+expect_ok "wrinkles compare" "$bin" wrinkles compare coarse.obj fine.obj --fabric denim --tension-length 300 --report cmp.json --windows win.json
+$py - <<'PY' && ok "wrinkles compare: the fine wave's wavelength against the prediction" || fail "wrinkles compare: $(head -c 600 cmp.json)"
+import json
+c = json.load(open("cmp.json"))["comparison"]
+w = json.load(open("win.json"))
+assert c["windows"] == 450 == len(w), c
+assert c["measured"] > 225, c
+assert abs(c["median_wavelength_ratio"] - 1.1) < 0.02, c
+assert abs(c["classes"]["tension"]["median_wavelength_error_percent"] - 10) < 2, c
+PY
+printf 'g a\ng b\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n' > twopiece.obj
+expect_fail "wrinkles compare: fine mesh of other pieces" "fine triangle 0 lies on piece 1" "$bin" wrinkles compare coarse.obj twopiece.obj --units mm --report x.json
 expect_fail "wrinkles buckling: one rigidity" "give two or more rigidities" "$bin" wrinkles buckling --test foundation --bending 1 --report x.json
 expect_fail "wrinkles buckling: unknown test" "expected foundation or cylinder" "$bin" wrinkles buckling --test drum --bending 1,2 --report x.json
 if ls x.* >/dev/null 2>&1; then fail "a refused wrinkles command wrote: $(ls x.*)"; else ok "refused wrinkles commands wrote nothing"; fi
