@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "invalid_input.h"
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -92,15 +94,7 @@ TEST(Buckling, LogLogFit) {
     EXPECT_NEAR(c, 2, 1e-12);
 }
 
-template <typename F>
-void expect_invalid(F&& f, const std::string& needle) {
-    try {
-        f();
-        ADD_FAILURE() << "no exception, expected one naming '" << needle << "'";
-    } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-    }
-}
+using tapeline::test::expect_invalid;
 
 TEST(Buckling, BadInputsAreNamed) {
     const FabricParams f;

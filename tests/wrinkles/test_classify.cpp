@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "invalid_input.h"
+
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -18,6 +20,8 @@ namespace tw = tapeline::wrinkles;
 namespace tg = tapeline::garment;
 using tw::UV;
 using tw::Vec3;
+
+using tapeline::test::error_of;
 
 namespace {
 
@@ -67,15 +71,6 @@ Vec3 rotate(const Vec3& p, const Vec3& k, double angle) {
     return {p[0] * c + kxp[0] * s + k[0] * kp * (1 - c),
             p[1] * c + kxp[1] * s + k[1] * kp * (1 - c),
             p[2] * c + kxp[2] * s + k[2] * kp * (1 - c)};
-}
-
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const tapeline::InvalidInput& e) {
-        return e.what();
-    }
-    return "(no InvalidInput)";
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "invalid_input.h"
+
 #include <cmath>
 #include <functional>
 #include <string>
@@ -12,6 +14,8 @@
 namespace tg = tapeline::garment;
 namespace tw = tapeline::wrinkles;
 using tw::Vec3;
+
+using tapeline::test::error_of;
 
 namespace {
 
@@ -112,14 +116,6 @@ TEST(Embedding, BadInputsAreNamed) {
     tg::GarmentMesh coarse, fine;
     add_grid(coarse, 2, 2, 10, 0, 0, 0, [](double u, double v) { return Vec3{u, v, 0}; });
     add_grid(fine, 4, 4, 5, 0, 0, 0, [](double u, double v) { return Vec3{u, v, 0}; });
-    auto error_of = [](const std::function<void()>& f) -> std::string {
-        try {
-            f();
-        } catch (const tapeline::InvalidInput& e) {
-            return e.what();
-        }
-        return "(no InvalidInput)";
-    };
     auto bad = fine;
     bad.triangle_piece[7] = 3;
     EXPECT_NE(error_of([&] {

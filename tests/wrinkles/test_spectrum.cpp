@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "invalid_input.h"
+
 #include <cmath>
 #include <random>
 #include <string>
@@ -127,15 +129,7 @@ TEST(Spectrum, ResampledScatteredSamples) {
     EXPECT_NEAR(dominant_wavelength(grid, 0.5).wavelength, 27.0, 0.1);
 }
 
-template <typename F>
-void expect_invalid(F&& f, const std::string& needle) {
-    try {
-        f();
-        ADD_FAILURE() << "no exception, expected one naming '" << needle << "'";
-    } catch (const InvalidInput& e) {
-        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-    }
-}
+using tapeline::test::expect_invalid;
 
 TEST(Spectrum, BadInputsAreNamed) {
     expect_invalid([] { dominant_wavelength(std::vector<double>(7, 0.0), 1.0); },

@@ -221,6 +221,18 @@ inline std::string fmt(const char* f, double v) {
     return buf;
 }
 
+/// One relax() round of `o.iterations_per_round` Newton iterations to 1e-4 mm, its iterations
+/// and convergence written into `r`; true when it converged.
+inline bool relax_round(garment::DrapeSolver& solver, const BucklingOptions& o, BucklingResult& r) {
+    garment::RelaxOptions ro;
+    ro.max_iterations = o.iterations_per_round;
+    ro.tolerance_mm = 1e-4;
+    const garment::RelaxReport rr = solver.relax(ro);
+    r.relax_iterations += rr.iterations;
+    r.last_converged = rr.converged;
+    return rr.converged;
+}
+
 }  // namespace internal
 
 /// The strip on a Winkler foundation (see the file comment). `fabric` gives the membrane, shear
@@ -321,13 +333,7 @@ inline BucklingResult foundation_test(const FabricParams& fabric, double bending
                     {static_cast<std::uint32_t>(v), {p[0], eta[v], p[2]}, compliance[v]});
             }
             solver.set_attachments(std::move(springs));
-            RelaxOptions ro;
-            ro.max_iterations = o.iterations_per_round;
-            ro.tolerance_mm = 1e-4;
-            const RelaxReport rr = solver.relax(ro);
-            r.relax_iterations += rr.iterations;
-            r.last_converged = rr.converged;
-            if (rr.converged) {
+            if (internal::relax_round(solver, o, r)) {
                 break;
             }
         }
@@ -475,13 +481,7 @@ inline BucklingResult cylinder_test(const FabricParams& fabric, double bending_u
         }
         solver.set_attachments(std::move(top));
         for (int round = 0; round < o.rounds_per_stage; ++round) {
-            RelaxOptions ro;
-            ro.max_iterations = o.iterations_per_round;
-            ro.tolerance_mm = 1e-4;
-            const RelaxReport rr = solver.relax(ro);
-            r.relax_iterations += rr.iterations;
-            r.last_converged = rr.converged;
-            if (rr.converged) {
+            if (internal::relax_round(solver, o, r)) {
                 break;
             }
         }
