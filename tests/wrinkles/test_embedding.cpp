@@ -187,3 +187,34 @@ TEST(WrinkleComparison, AFineWaveOfKnownWavelengthIsMeasuredAgainstThePrediction
              [&](double u, double v) { return on_plane(1.03 * u, 0.95 * v); });
     EXPECT_EQ(tw::compare_wrinkles(coarse, field, flat).report.measured, 0u);
 }
+
+#include <tapeline/wrinkles/picture.h>
+
+TEST(WrinkleComparison, PictureShowsCrestsAndTroughs) {
+    // A panel on a cylinder (so that the views see it) and its fine copy with a 4 mm wave:
+    // the lower half of the picture holds red (crests) and blue (troughs).
+    const double R = 150;
+    auto on_cylinder = [&](double u, double v, double h) {
+        const double a = u / R;
+        return Vec3{(R + h) * std::sin(a), v, (R + h) * std::cos(a)};
+    };
+    tg::GarmentMesh coarse, fine;
+    add_grid(coarse, 10, 10, 20, 0, 0, 0,
+             [&](double u, double v) { return on_cylinder(u - 100, v, 0); });
+    add_grid(fine, 50, 50, 4, 0, 0, 0, [&](double u, double v) {
+        return on_cylinder(u - 100, v, 4 * std::sin(2 * M_PI * v / 40));
+    });
+    const tw::WrinkleField field = tw::classify_wrinkles(coarse, tg::FabricParams{});
+    const tw::Embedding e = tw::embed_fine_in_coarse(coarse, fine);
+    const auto img = tw::comparison_picture(coarse, field, fine, e, "wave");
+    std::size_t red = 0, blue = 0;
+    for (std::size_t y = img.height / 2; y < img.height; ++y) {
+        for (std::size_t x = 0; x < img.width; ++x) {
+            const std::uint8_t* p = img.pixel(x, y);
+            red += p[0] > 150 && p[1] < 110 && p[2] < 110;
+            blue += p[2] > 150 && p[0] < 110;
+        }
+    }
+    EXPECT_GT(red, 300u);
+    EXPECT_GT(blue, 300u);
+}

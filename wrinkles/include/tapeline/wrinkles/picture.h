@@ -5,7 +5,9 @@
 
 #include <tapeline/garment/picture.h>
 #include <tapeline/wrinkles/classify.h>
+#include <tapeline/wrinkles/embedding.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,39 @@ inline draw::RgbaImage wrinkle_picture(const garment::GarmentMesh& g, const Wrin
     }
     return garment::garment_views_picture(body_points, body_tris, g, cls, wrinkle_class_colours(),
                                           {}, title, scale, pixels_per_mm, legend);
+}
+
+/// The coarse drape coloured by class (above) and the fine drape coloured by its height over the
+/// coarse one (below: blue more than `band_mm` inside, grey within, red more than `band_mm`
+/// outside), the views of garment_views_picture.
+inline draw::RgbaImage comparison_picture(const garment::GarmentMesh& coarse,
+                                          const WrinkleField& field,
+                                          const garment::GarmentMesh& fine,
+                                          const Embedding& embedding, const std::string& title,
+                                          double band_mm = 2, double scale = 0.12,
+                                          double pixels_per_mm = 5) {
+    const draw::RgbaImage top =
+        wrinkle_picture(coarse, field, title + ": coarse, by class", {}, {}, scale, pixels_per_mm);
+    std::vector<int> cls(fine.triangles.size(), 1);
+    for (std::size_t f = 0; f < fine.triangles.size(); ++f) {
+        double h = 0;
+        for (std::uint32_t v : fine.triangles[f]) {
+            h += v < embedding.vertices.size() ? embedding.vertices[v].height_mm / 3 : 0;
+        }
+        cls[f] = h < -band_mm ? 0 : h > band_mm ? 2 : 1;
+    }
+    char band[32];
+    std::snprintf(band, sizeof band, "%g", band_mm);
+    const draw::RgbaImage bottom = garment::garment_views_picture(
+        {}, {}, fine, cls, {{0.2, 0.4, 0.9}, {0.75, 0.75, 0.75}, {0.9, 0.25, 0.2}}, {},
+        title + ": fine, height over the coarse drape", scale, pixels_per_mm,
+        {std::string("< -") + band + " mm", "within", std::string("> ") + band + " mm"});
+    draw::RgbaImage page =
+        draw::RgbaImage::filled(std::max(top.width, bottom.width), top.height + bottom.height, 255);
+    draw::Canvas canvas(page, pixels_per_mm);
+    canvas.paste(top, 0, 0);
+    canvas.paste(bottom, 0, long(top.height));
+    return page;
 }
 
 }  // namespace tapeline::wrinkles
