@@ -171,7 +171,7 @@ void run_classify(const ClassifyArgs& a) {
 }
 
 struct CompareArgs {
-    std::string coarse, fine, fabric = "cotton_jersey", units = "auto", report, windows;
+    std::string coarse, fine, fabric = "cotton_jersey", units = "auto", report, windows, picture;
     tw::ClassifyOptions classify;
     tw::CompareOptions compare;
 };
@@ -182,8 +182,11 @@ void run_compare(const CompareArgs& a) {
             throw InvalidInput(*f + ": expected a .json file");
         }
     }
+    if (!a.picture.empty() && extension_of(a.picture) != ".png") {
+        throw InvalidInput("--picture " + a.picture + ": expected a .png file");
+    }
     const std::optional<LengthUnit> given = units_option(a.units);
-    OutputFiles outputs({a.report, a.windows});
+    OutputFiles outputs({a.report, a.windows, a.picture});
     const tg::FabricParams fabric = tg::fabric_from(a.fabric);
     LengthUnit uc = LengthUnit::mm, uf = LengthUnit::mm;
     const tg::GarmentMesh coarse = garment_in_mm(a.coarse, given, uc);
@@ -237,6 +240,12 @@ void run_compare(const CompareArgs& a) {
                            {"measured", w.measured}});
         }
         outputs.write(a.windows, [&](std::ostream& out) { out << arr.dump() << '\n'; });
+    }
+    if (!a.picture.empty()) {
+        const std::string name = a.fine.substr(a.fine.find_last_of('/') + 1);
+        const draw::RgbaImage img = tw::comparison_picture(coarse, field, fine, c.embedding, name);
+        outputs.write(
+            a.picture, [&](std::ostream& out) { draw::write_png(out, img, 5); }, true);
     }
     outputs.commit();
 }
@@ -292,6 +301,8 @@ void register_wrinkles_commands(CLI::App& app) {
         ->capture_default_str();
     cmp->add_option("--report", ka->report, "Report (JSON): classes and errors per class");
     cmp->add_option("--windows", ka->windows, "Per-window JSON: predicted and measured");
+    cmp->add_option("--picture", ka->picture,
+                    "Picture (PNG): the coarse drape by class above the fine one by height");
     cmp->add_option("--periods", ka->compare.periods, "Window length in predicted wavelengths")
         ->capture_default_str();
     cmp->add_option("--tension-length", ka->classify.tension_length_mm,

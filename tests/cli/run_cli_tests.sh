@@ -1639,7 +1639,8 @@ def grid(path, n, cell, wave):
 grid("coarse.obj", 15, 20.0, False)
 grid("fine.obj", 100, 3.0, True)
 PY
-expect_ok "wrinkles compare" "$bin" wrinkles compare coarse.obj fine.obj --fabric denim --tension-length 300 --report cmp.json --windows win.json
+expect_ok "wrinkles compare" "$bin" wrinkles compare coarse.obj fine.obj --fabric denim --tension-length 300 --report cmp.json --windows win.json --picture cmp.png
+[ -s cmp.png ] && ok "wrinkles compare: picture" || fail "wrinkles compare: no picture"
 $py - <<'PY' && ok "wrinkles compare: the fine wave's wavelength against the prediction" || fail "wrinkles compare: $(head -c 600 cmp.json)"
 import json
 c = json.load(open("cmp.json"))["comparison"]

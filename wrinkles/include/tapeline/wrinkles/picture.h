@@ -55,7 +55,7 @@ inline draw::RgbaImage comparison_picture(const garment::GarmentMesh& coarse,
     std::snprintf(band, sizeof band, "%g", band_mm);
     const draw::RgbaImage bottom = garment::garment_views_picture(
         {}, {}, fine, cls, {{0.2, 0.4, 0.9}, {0.75, 0.75, 0.75}, {0.9, 0.25, 0.2}}, {},
-        title + ": fine, height over the coarse drape", scale, pixels_per_mm,
+        title + ": fine, height over coarse", scale, pixels_per_mm,
         {std::string("< -") + band + " mm", "within", std::string("> ") + band + " mm"});
     draw::RgbaImage page =
         draw::RgbaImage::filled(std::max(top.width, bottom.width), top.height + bottom.height, 255);
