@@ -394,7 +394,10 @@ TEST(CurvatureFlowDistances, SpotOnFaceLengthMeetsTheTargets) {
 // On decimated-knight (502 vertices) the exact geodesics from vertex 0 to 481 and from 186 to 181
 // run through saddle vertices; every start the repair had before the Steiner graph (fresh search,
 // best neighbour's path, descent path) flowed to a locally shortest path beside the saddle, 1.39 %
-// and 1.25 % long. Started from the graph's path, the flow lands in the geodesic's class.
+// long from vertex 0. Started from the graph's path, the flow lands in the geodesic's class. From
+// 186 the field without the graph happens to stay within 1 % with the window flows' limit of 20
+// steps (0.87 %; 1.25 % when every flow ran to 200): which locally shortest path a flow lands in
+// depends on where the flows before it stopped. The graph still lowers it.
 TEST(CurvatureFlowDistances, SteinerGraphStartReachesGeodesicsThroughSaddleVertices) {
     tg::Soup knight;
     if (!tg::shared_mesh("meshes/decimated-knight.off", knight))
@@ -414,8 +417,11 @@ TEST(CurvatureFlowDistances, SteinerGraphStartReachesGeodesicsThroughSaddleVerti
             "[ gcf-dist ] decimated-knight from %zu, window 8, repaired: without the graph "
             "max %.2e, with it max %.2e (%zu flagged by the graph)\n",
             source, before.max, after.max, with.report.repair_graph_flagged);
-        EXPECT_GT(before.max, 1e-2) << source;
+        if (source == 0) {
+            EXPECT_GT(before.max, 1e-2) << source;
+        }
         EXPECT_LE(after.max, 1e-2) << source;
+        EXPECT_LE(after.max, before.max) << source;
         EXPECT_LE(after.mean, before.mean) << source;
         EXPECT_EQ(without.report.repair_graph_flagged, 0u);
     }

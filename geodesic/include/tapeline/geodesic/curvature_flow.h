@@ -680,11 +680,8 @@ CurvatureFlowDistanceReport gcf_distances(
     pp.near_source_samples = options.near_source_samples;
     pp.anchor_slides = options.anchor_slides;
     pp.cut_locus_guard = options.cut_locus_guard;
-    CurvatureFlowOptions flow = options.flow;
-    if (options.window > 0 && options.window_max_iterations > 0) {
-        flow.max_iterations = std::min(flow.max_iterations, options.window_max_iterations);
-    }
-    auto f = internal::gcf::propagate(m, a.vertex, pp, flow);
+    pp.window_max_iterations = options.window > 0 ? options.window_max_iterations : 0;
+    auto f = internal::gcf::propagate(m, a.vertex, pp, options.flow);
     f.counts.write(r);
     r.stored_samples = f.stored_samples;
     r.epsilon = f.epsilon;

@@ -262,8 +262,10 @@ struct CurvatureFlowDistanceOptions : FlowPropagationOptions {
         o.tolerance = 1e-7;
         return o;
     }();
-    /// Algorithm 2 (window > 0): flow steps of one window at most (the smaller of this and
-    /// flow.max_iterations; 0: flow.max_iterations). A window that has not converged within 20
+    /// Algorithm 2 (window > 0): flow steps of one window whose path does not reach back to the
+    /// source at most (the smaller of this and flow.max_iterations; 0: flow.max_iterations);
+    /// paths flowed whole near the source keep flow.max_iterations, so that there Algorithm 2
+    /// is Algorithm 1 to the last digit. A window that has not converged within 20
     /// steps creeps while its length hardly changes (measured on the scans at W = 8 with 200
     /// steps: 9 % of the flows ran to the limit and took three quarters of all flow steps); the
     /// repair re-solves whatever is left too long. Algorithm 1 flows whole paths, which need

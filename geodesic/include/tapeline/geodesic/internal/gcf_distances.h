@@ -185,6 +185,9 @@ struct PropagateParams {
     bool traced = true;        ///< with smooth = false: traced_length instead of chords
     bool straighten = true;    ///< with smooth = false: polyhedral_length (implies traced)
     bool diagnostics = false;  ///< fill DistanceField::parent, flags, tails
+    /// Flow steps of a window that does not reach back to the source (a fixed sample before it),
+    /// at most; 0: `o.max_iterations`. Paths flowed whole keep `o.max_iterations`.
+    std::size_t window_max_iterations = 0;
 };
 
 /// Ring-by-ring propagation from vertex `src` (components: only its component is reached).
@@ -311,11 +314,15 @@ inline DistanceField propagate(const Mesh& m, std::uint32_t src, const Propagate
     for (std::uint32_t k = m.vv_start[src]; k < m.vv_start[src + 1]; ++k)
         wf.relax(m.vv[k]);
 
+    // A truncated window's flow stops after window_max_iterations steps; a whole path's does not.
+    CurvatureFlowOptions window_o = o;
+    if (pp.window_max_iterations > 0)
+        window_o.max_iterations = std::min(o.max_iterations, pp.window_max_iterations);
     // Flows the part of c from `start` on (c[start] and c.back() fixed).
     auto flow_part = [&](std::vector<Sample>& c, std::size_t start, FlowCounts& counts) {
         std::vector<Sample> part(c.begin() + static_cast<std::ptrdiff_t>(start), c.end());
         std::string status;
-        const std::size_t its = flow_to_convergence(m, part, o, status);
+        const std::size_t its = flow_to_convergence(m, part, start > 0 ? window_o : o, status);
         counts.add(status, its);
         std::copy(part.begin(), part.end(), c.begin() + static_cast<std::ptrdiff_t>(start));
     };
