@@ -1074,10 +1074,11 @@ def part_wrinkles(ctx, d):
                       "stages and relaxed by the solver's Newton solve; the dominant wavelength "
                       "of its centre line against 2π(B/K)^¼. The tube under axial compression "
                       "(docs/wrinkles/scaling.md, about 17 minutes) is left out: it collapses "
-                      "into one dent, not the law's axisymmetric wrinkles." % (
+                      "into one dent, not the law's axisymmetric wrinkles. The experiments are "
+                      "described in docs/wrinkles/scaling.md." % (
                           j["length_mm"], j["width_mm"], j["fabric"], j["resolution_mm"],
                           j["foundation_n_m3"], 100 * j["strain"]),
-                links=[("the experiments", "../../wrinkles/scaling.md")])
+                links=[("the run's report (JSON)", "foundation.json")])
 
 
 # Peers: geometry-central's methods, built from the checkout --peers names (never downloaded),
