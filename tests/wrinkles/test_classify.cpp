@@ -2,7 +2,10 @@
 // amplitude laws against their closed forms and an independent arc-length integration; the
 // garment OBJ round trip; bad inputs.
 #include <tapeline/garment/garment_io.h>
+// Every wrinkle header in one unit: they must not define the same name twice.
+#include <tapeline/wrinkles/buckling_tests.h>
 #include <tapeline/wrinkles/classify.h>
+#include <tapeline/wrinkles/compare.h>
 #include <tapeline/wrinkles/picture.h>
 
 #include <gtest/gtest.h>

@@ -206,7 +206,9 @@ inline std::vector<double> load_stages(double first, double last) {
     return s;
 }
 
-inline double median(std::vector<double> v) {
+/// Median (mean of the middle two for an even count; 0 when empty). Its own name: classify.h's
+/// internal::median (upper median, NaN when empty) shares this namespace.
+inline double median_or_zero(std::vector<double> v) {
     if (v.empty()) {
         return 0;
     }
@@ -508,9 +510,9 @@ inline BucklingResult cylinder_test(const FabricParams& fabric, double bending_u
         shares.push_back(s.peak_share);
         amps.push_back(s.amplitude);
     }
-    r.measured_wavelength_mm = internal::median(r.generator_wavelengths_mm);
+    r.measured_wavelength_mm = internal::median_or_zero(r.generator_wavelengths_mm);
     r.peak_share = std::accumulate(shares.begin(), shares.end(), 0.0) / double(shares.size());
-    r.amplitude_mm = internal::median(amps);
+    r.amplitude_mm = internal::median_or_zero(amps);
     // Axisymmetry: energy of the ring means against that of the whole radial displacement.
     double total = 0, axisym = 0, worst = -1;
     int worst_row = row_lo;

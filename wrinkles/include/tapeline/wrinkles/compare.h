@@ -125,7 +125,6 @@ inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const Wri
                                                CGAL::Search_traits_3<K>>;
     using Tree = CGAL::Kd_tree<Traits>;
     using Box = CGAL::Fuzzy_iso_box<Traits>;
-    constexpr double kPieceGap = 1e7;
     std::vector<Entry> entries;
     std::vector<garment::UV> where(fine.positions.size());
     std::vector<std::uint8_t> seen(fine.positions.size(), 0);
@@ -141,8 +140,8 @@ inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const Wri
             if (!seen[v]) {
                 seen[v] = 1;
                 where[v] = a;
-                entries.emplace_back(Point(a[0], a[1], kPieceGap * double(fine.triangle_piece[f])),
-                                     v);
+                entries.emplace_back(
+                    Point(a[0], a[1], internal::kPieceGap * double(fine.triangle_piece[f])), v);
             }
         }
     }
@@ -170,7 +169,7 @@ inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const Wri
         const double half_len = 0.5 * o.periods * w.wavelength_mm;
         const double half_wid = 0.5 * o.width_fraction * w.wavelength_mm;
         const double reach = std::hypot(half_len, half_wid);
-        const double z = kPieceGap * double(coarse.triangle_piece[t]);
+        const double z = internal::kPieceGap * double(coarse.triangle_piece[t]);
         std::vector<Entry> found;
         tree.search(std::back_inserter(found),
                     Box(Point(centre[0] - reach, centre[1] - reach, z - 1),

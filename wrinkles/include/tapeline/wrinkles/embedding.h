@@ -61,6 +61,10 @@ struct Embedding {
 
 namespace internal {
 
+/// Pieces are lifted apart in the pattern plane by this many mm per piece index (embedding and
+/// comparison search one piece at a time this way).
+inline constexpr double kPieceGap = 1e7;
+
 inline void check_garment(const garment::GarmentMesh& g, const char* which) {
     const std::string w = std::string("embedding: ") + which + " mesh";
     if (g.uv.size() != g.triangles.size() || g.triangle_piece.size() != g.triangles.size()) {
@@ -108,13 +112,12 @@ inline Embedding embed_fine_in_coarse(const garment::GarmentMesh& coarse,
     using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
     internal::check_garment(coarse, "coarse");
     internal::check_garment(fine, "fine");
-    constexpr double kPieceGap = 1e7;  // mm between the lifted pieces
     std::vector<K::Triangle_3> tris;
     std::vector<std::uint32_t> tri_of;  // tree triangle -> coarse triangle
     std::uint32_t pieces = 0;
     for (std::size_t f = 0; f < coarse.triangles.size(); ++f) {
         const auto& u = coarse.uv[f];
-        const double z = kPieceGap * double(coarse.triangle_piece[f]);
+        const double z = internal::kPieceGap * double(coarse.triangle_piece[f]);
         const K::Triangle_3 t(K::Point_3(u[0][0], u[0][1], z), K::Point_3(u[1][0], u[1][1], z),
                               K::Point_3(u[2][0], u[2][1], z));
         pieces = std::max(pieces, coarse.triangle_piece[f] + 1);
@@ -148,7 +151,7 @@ inline Embedding embed_fine_in_coarse(const garment::GarmentMesh& coarse,
             }
             done[v] = 1;
             const garment::UV& p = fine.uv[f][std::size_t(k)];
-            const K::Point_3 q(p[0], p[1], kPieceGap * double(piece));
+            const K::Point_3 q(p[0], p[1], internal::kPieceGap * double(piece));
             const auto hit = tree.closest_point_and_primitive(q);
             const std::size_t ti = std::size_t(hit.second - tris.cbegin());
             const std::uint32_t ct = tri_of[ti];
