@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "garment_grid.h"
 #include "invalid_input.h"
 
 #include <cmath>
@@ -15,32 +16,10 @@ namespace tg = tapeline::garment;
 namespace tw = tapeline::wrinkles;
 using tw::Vec3;
 
+using tapeline::test::add_grid;
 using tapeline::test::error_of;
 
 namespace {
-
-/// nx × ny cells of `cell` mm from (u0, v0) in the pattern, on piece `piece`, placed by `place`.
-void add_grid(tg::GarmentMesh& g, int nx, int ny, double cell, double u0, double v0,
-              std::uint32_t piece, const std::function<Vec3(double, double)>& place) {
-    const auto base = std::uint32_t(g.positions.size());
-    auto id = [&](int i, int j) { return base + std::uint32_t(j * (nx + 1) + i); };
-    for (int j = 0; j <= ny; ++j) {
-        for (int i = 0; i <= nx; ++i) {
-            g.positions.push_back(place(u0 + i * cell, v0 + j * cell));
-        }
-    }
-    auto uv = [&](int i, int j) { return tg::UV{u0 + i * cell, v0 + j * cell}; };
-    for (int j = 0; j < ny; ++j) {
-        for (int i = 0; i < nx; ++i) {
-            g.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            g.uv.push_back({uv(i, j), uv(i + 1, j), uv(i + 1, j + 1)});
-            g.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-            g.uv.push_back({uv(i, j), uv(i + 1, j + 1), uv(i, j + 1)});
-            g.triangle_piece.push_back(piece);
-            g.triangle_piece.push_back(piece);
-        }
-    }
-}
 
 // A tilted plane: (u, v) -> o + u·a + v·b with a, b orthonormal; normal a × b.
 const Vec3 kA = tapeline::vec3::normalized({1, 0.2, 0.1});

@@ -4,10 +4,8 @@
 //
 // Window. In the pattern plane of the triangle's piece: centred on its centroid, `periods`
 // predicted wavelengths long along its compression axis (the waves' direction, TriangleStrain::
-// rest_min) and `width_fraction` of a predicted wavelength wide along the crests. The fine
-// vertices inside it (a CGAL kd-tree range query) are binned along the axis at a quarter of the
-// fine mesh's mean pattern edge, the mean height of each bin is taken, empty bins are filled by
-// linear interpolation, and the profile goes to dominant_wavelength() (spectrum.h); its
+// rest_min) and `width_fraction` of a predicted wavelength wide along the crests; its detrended
+// height profile and spectrum come from PatternWindows (window.h); the dominant
 // wavelength, a length of pattern, times the triangle's s_min is the draped wavelength. A window
 // counts as measured when its profile has a dominant wavelength (peak share at least
 // `min_peak_share`) that is not the longest the window resolves (Spectrum::at_record_limit), an
@@ -19,13 +17,7 @@
 #include <tapeline/wrinkles/classify.h>
 #include <tapeline/wrinkles/embedding.h>
 #include <tapeline/wrinkles/spectrum.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Fuzzy_iso_box.h>
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
-#include <CGAL/property_map.h>
+#include <tapeline/wrinkles/window.h>
 
 #include <algorithm>
 #include <array>
@@ -117,36 +109,11 @@ inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const Wri
     out.embedding = embed_fine_in_coarse(coarse, fine);
     const Embedding& e = out.embedding;
 
-    // Fine vertices in the pattern plane, pieces lifted apart (as in embedding.h).
-    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-    using Point = K::Point_3;
-    using Entry = std::tuple<Point, std::uint32_t>;
-    using Traits = CGAL::Search_traits_adapter<Entry, CGAL::Nth_of_tuple_property_map<0, Entry>,
-                                               CGAL::Search_traits_3<K>>;
-    using Tree = CGAL::Kd_tree<Traits>;
-    using Box = CGAL::Fuzzy_iso_box<Traits>;
-    std::vector<Entry> entries;
-    std::vector<garment::UV> where(fine.positions.size());
-    std::vector<std::uint8_t> seen(fine.positions.size(), 0);
-    double edge_sum = 0;
-    std::size_t edges = 0;
-    for (std::size_t f = 0; f < fine.triangles.size(); ++f) {
-        for (int k = 0; k < 3; ++k) {
-            const garment::UV& a = fine.uv[f][std::size_t(k)];
-            const garment::UV& b = fine.uv[f][std::size_t((k + 1) % 3)];
-            edge_sum += std::hypot(a[0] - b[0], a[1] - b[1]);
-            ++edges;
-            const std::uint32_t v = fine.triangles[f][std::size_t(k)];
-            if (!seen[v]) {
-                seen[v] = 1;
-                where[v] = a;
-                entries.emplace_back(
-                    Point(a[0], a[1], internal::kPieceGap * double(fine.triangle_piece[f])), v);
-            }
-        }
+    std::vector<double> heights(fine.positions.size(), 0.0);
+    for (std::size_t v = 0; v < heights.size(); ++v) {
+        heights[v] = e.vertices[v].height_mm;
     }
-    const double bin = edges > 0 ? 0.25 * edge_sum / double(edges) : 1;
-    Tree tree(entries.begin(), entries.end());
+    const PatternWindows windows(fine, std::move(heights));
 
     std::array<std::vector<double>, kWrinkleClasses> lam_err, amp_err;
     std::vector<double> all_lam, all_amp, ratios;
@@ -165,42 +132,12 @@ inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const Wri
         const auto& u = coarse.uv[t];
         const garment::UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3,
                                  (u[0][1] + u[1][1] + u[2][1]) / 3};
-        const garment::UV axis = w.strain.rest_min, crest = w.strain.rest_max;
-        const double half_len = 0.5 * o.periods * w.wavelength_mm;
-        const double half_wid = 0.5 * o.width_fraction * w.wavelength_mm;
-        const double reach = std::hypot(half_len, half_wid);
-        const double z = internal::kPieceGap * double(coarse.triangle_piece[t]);
-        std::vector<Entry> found;
-        tree.search(std::back_inserter(found),
-                    Box(Point(centre[0] - reach, centre[1] - reach, z - 1),
-                        Point(centre[0] + reach, centre[1] + reach, z + 1)));
-        const auto nbins = static_cast<std::size_t>(std::ceil(2 * half_len / bin));
-        std::vector<double> sum(nbins, 0.0);
-        std::vector<std::size_t> count(nbins, 0);
-        for (const Entry& en : found) {
-            const std::uint32_t v = std::get<1>(en);
-            const double du = where[v][0] - centre[0], dv = where[v][1] - centre[1];
-            const double s = du * axis[0] + dv * axis[1];
-            const double q = du * crest[0] + dv * crest[1];
-            if (std::abs(s) > half_len || std::abs(q) > half_wid) {
-                continue;
-            }
-            const auto b = std::min(nbins - 1, static_cast<std::size_t>((s + half_len) / bin));
-            sum[b] += e.vertices[v].height_mm;
-            ++count[b];
-            ++c.fine_vertices;
-        }
-        // Bin means, empty bins filled linearly between their filled neighbours; the ends are
-        // cut to the first and last filled bin.
-        std::vector<double> s_of, h_of;
-        for (std::size_t b = 0; b < nbins; ++b) {
-            if (count[b] > 0) {
-                s_of.push_back((double(b) + 0.5) * bin);
-                h_of.push_back(sum[b] / double(count[b]));
-            }
-        }
-        if (c.fine_vertices >= 16 && s_of.size() >= 8 && s_of.back() - s_of.front() >= 8 * bin) {
-            const Spectrum sp = dominant_wavelength(resample_uniform(s_of, h_of, bin), bin);
+        const WindowProfile p = windows.profile(coarse.triangle_piece[t], centre, w.strain.rest_min,
+                                                0.5 * o.periods * w.wavelength_mm,
+                                                0.5 * o.width_fraction * w.wavelength_mm);
+        c.fine_vertices = p.vertices;
+        if (p.resolved) {
+            const Spectrum& sp = p.spectrum;
             // Pattern length to draped length: the waves' direction is shortened by s_min.
             c.measured_wavelength_mm = sp.wavelength * w.strain.s_min;
             c.measured_amplitude_mm = sp.amplitude;

@@ -32,37 +32,63 @@ inline draw::RgbaImage wrinkle_picture(const garment::GarmentMesh& g, const Wrin
                                           {}, title, scale, pixels_per_mm, legend);
 }
 
+/// A fine drape coloured by a height per vertex (blue more than `band_mm` inside, grey within,
+/// red more than `band_mm` outside), the views of garment_views_picture.
+inline draw::RgbaImage height_picture(const garment::GarmentMesh& fine,
+                                      const std::vector<double>& height_mm,
+                                      const std::string& title, double band_mm = 2,
+                                      double scale = 0.12, double pixels_per_mm = 5) {
+    std::vector<int> cls(fine.triangles.size(), 1);
+    for (std::size_t f = 0; f < fine.triangles.size(); ++f) {
+        double h = 0;
+        for (std::uint32_t v : fine.triangles[f]) {
+            h += v < height_mm.size() ? height_mm[v] / 3 : 0;
+        }
+        cls[f] = h < -band_mm ? 0 : h > band_mm ? 2 : 1;
+    }
+    char band[32];
+    std::snprintf(band, sizeof band, "%g", band_mm);
+    return garment::garment_views_picture(
+        {}, {}, fine, cls, {{0.2, 0.4, 0.9}, {0.75, 0.75, 0.75}, {0.9, 0.25, 0.2}}, {}, title,
+        scale, pixels_per_mm,
+        {std::string("< -") + band + " mm", "within", std::string("> ") + band + " mm"});
+}
+
+/// Pictures stacked top to bottom on one white page.
+inline draw::RgbaImage stacked(const std::vector<draw::RgbaImage>& parts,
+                               double pixels_per_mm = 5) {
+    std::size_t w = 0, h = 0;
+    for (const auto& p : parts) {
+        w = std::max(w, std::size_t(p.width));
+        h += std::size_t(p.height);
+    }
+    draw::RgbaImage page = draw::RgbaImage::filled(w, h, 255);
+    draw::Canvas canvas(page, pixels_per_mm);
+    long y = 0;
+    for (const auto& p : parts) {
+        canvas.paste(p, 0, y);
+        y += long(p.height);
+    }
+    return page;
+}
+
 /// The coarse drape coloured by class (above) and the fine drape coloured by its height over the
-/// coarse one (below: blue more than `band_mm` inside, grey within, red more than `band_mm`
-/// outside), the views of garment_views_picture.
+/// coarse one (below), the views of garment_views_picture.
 inline draw::RgbaImage comparison_picture(const garment::GarmentMesh& coarse,
                                           const WrinkleField& field,
                                           const garment::GarmentMesh& fine,
                                           const Embedding& embedding, const std::string& title,
                                           double band_mm = 2, double scale = 0.12,
                                           double pixels_per_mm = 5) {
-    const draw::RgbaImage top =
-        wrinkle_picture(coarse, field, title + ": coarse, by class", {}, {}, scale, pixels_per_mm);
-    std::vector<int> cls(fine.triangles.size(), 1);
-    for (std::size_t f = 0; f < fine.triangles.size(); ++f) {
-        double h = 0;
-        for (std::uint32_t v : fine.triangles[f]) {
-            h += v < embedding.vertices.size() ? embedding.vertices[v].height_mm / 3 : 0;
-        }
-        cls[f] = h < -band_mm ? 0 : h > band_mm ? 2 : 1;
+    std::vector<double> h(fine.positions.size(), 0.0);
+    for (std::size_t v = 0; v < h.size() && v < embedding.vertices.size(); ++v) {
+        h[v] = embedding.vertices[v].height_mm;
     }
-    char band[32];
-    std::snprintf(band, sizeof band, "%g", band_mm);
-    const draw::RgbaImage bottom = garment::garment_views_picture(
-        {}, {}, fine, cls, {{0.2, 0.4, 0.9}, {0.75, 0.75, 0.75}, {0.9, 0.25, 0.2}}, {},
-        title + ": fine, height over coarse", scale, pixels_per_mm,
-        {std::string("< -") + band + " mm", "within", std::string("> ") + band + " mm"});
-    draw::RgbaImage page =
-        draw::RgbaImage::filled(std::max(top.width, bottom.width), top.height + bottom.height, 255);
-    draw::Canvas canvas(page, pixels_per_mm);
-    canvas.paste(top, 0, 0);
-    canvas.paste(bottom, 0, long(top.height));
-    return page;
+    return stacked(
+        {wrinkle_picture(coarse, field, title + ": coarse, by class", {}, {}, scale, pixels_per_mm),
+         height_picture(fine, h, title + ": fine, height over coarse", band_mm, scale,
+                        pixels_per_mm)},
+        pixels_per_mm);
 }
 
 }  // namespace tapeline::wrinkles
