@@ -26,6 +26,8 @@ void register_batch_commands(CLI::App& app);
 void register_wrinkles_commands(CLI::App& app);
 /// `tapeline wrinkles buckling`, under the `wrinkles` family (defined in wrinkles_buckling.cpp).
 void register_wrinkles_buckling(CLI::App& wrinkles);
+/// `tapeline wrinkles refine`, `train` and `apply` (defined in wrinkles_synthesis.cpp).
+void register_wrinkles_synthesis(CLI::App& wrinkles);
 
 /// --projection (mls or plane) of gcf-points into `options`, its default shown from `options`.
 void add_projection_option(CLI::App* cmd, geodesic::PointCloudDistanceOptions& options,

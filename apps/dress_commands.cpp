@@ -7,6 +7,7 @@
 // module).
 #include "commands.h"
 #include "output.h"
+#include "wrinkles_dress.h"
 
 #include <tapeline/bench/dress_run.h>
 #include <tapeline/core/atomic_write.h>
@@ -63,6 +64,7 @@ struct DressArgs {
     /// The body the pattern was made for (with --to-body), its unit and axes.
     std::string base_body, base_units, base_up = "+Y", base_front = "+Z";
     std::uint32_t seed = 1;
+    std::string wrinkles, coarse_out;
 };
 
 void run_dress(const DressArgs& a) {
@@ -93,10 +95,20 @@ void run_dress(const DressArgs& a) {
     if (!a.picture.empty() && extension_of(a.picture) != ".png") {
         throw InvalidInput("--picture " + a.picture + ": expected a .png file");
     }
-    OutputFiles outputs({a.out, a.ply, a.report, a.glb, a.picture});
+    if (!a.coarse_out.empty() && a.wrinkles.empty()) {
+        throw InvalidInput("--coarse-out " + a.coarse_out + " is for --wrinkles");
+    }
+    if (!a.coarse_out.empty() && extension_of(a.coarse_out) != ".obj") {
+        throw InvalidInput("--coarse-out " + a.coarse_out + ": expected an .obj file");
+    }
+    OutputFiles outputs({a.out, a.ply, a.report, a.glb, a.picture, a.coarse_out});
     tg::DressOptions o;
     o.resolution_mm = a.resolution;
     o.fabric = tg::fabric_from(a.fabric);
+    std::optional<WrinkleDressing> wrinkles;
+    if (!a.wrinkles.empty()) {
+        wrinkles.emplace(a.wrinkles, o.fabric);
+    }
     o.drape.threads = a.threads;
     if (!(a.sew_seconds >= 0) || !(a.settle_seconds >= 0) || !(a.gap > 0) || a.substeps < 1) {
         throw InvalidInput(
@@ -176,6 +188,18 @@ void run_dress(const DressArgs& a) {
     const tm::Body& body = r.body;
     const tm::BodyFrame frame = body.frame;
     const tg::PositionMap to_body = [frame](const tg::Vec3& p) { return frame.to_input(p); };
+    std::optional<DressedWrinkles> wrinkled;
+    if (wrinkles) {
+        if (!a.coarse_out.empty()) {
+            outputs.write(a.coarse_out, [&](std::ostream& out) {
+                tg::write_garment_obj(out, r.garment, to_body);
+            });
+        }
+        wrinkled = wrinkles->apply(r.garment, body);
+        std::cerr << "tapeline: " << wrinkled->summary << '\n';
+        r.garment = wrinkled->garment;
+        r.stretch = wrinkled->stretch;
+    }
     outputs.write(a.out,
                   [&](std::ostream& out) { tg::write_garment_obj(out, r.garment, to_body); });
     if (!a.ply.empty()) {
@@ -204,6 +228,9 @@ void run_dress(const DressArgs& a) {
     }
     if (!a.report.empty()) {
         nlohmann::ordered_json j = bench::dress_report_json(r, a.body, a.pattern, o);
+        if (wrinkled) {
+            j["wrinkles"] = wrinkled->report;
+        }
         outputs.write(a.report, [&](std::ostream& out) { out << j.dump(1) << '\n'; });
     }
     outputs.commit();
@@ -297,6 +324,11 @@ void register_dress_commands(CLI::App& app) {
     cmd->add_option("--base-up", a->base_up, "Up axis of --base-body")->capture_default_str();
     cmd->add_option("--base-front", a->base_front, "Front axis of --base-body")
         ->capture_default_str();
+    cmd->add_option("--wrinkles", a->wrinkles,
+                    "Add fine wrinkles to the drape from a wrinkle database of its fabric "
+                    "(tapeline wrinkles train); --out is then the wrinkled garment");
+    cmd->add_option("--coarse-out", a->coarse_out,
+                    "With --wrinkles: also write the drape without them (OBJ)");
     cmd->add_option("--seed", a->seed, "Random seed of the grading (with --to-body)")
         ->capture_default_str();
     cmd->add_flag("--strict", a->strict,

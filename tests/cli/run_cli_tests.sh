@@ -1123,6 +1123,30 @@ def width(path):
 assert width("graded.obj") < 0.95 * width("base.obj"), (width("graded.obj"), width("base.obj"))
 PY
 then ok "dress --to-body grades the pattern to the body first"; else fail "dress --to-body: $(tail -c 300 tb_err.txt)"; fi
+# --wrinkles: a database of the dress fabric (a panel with a 40 mm wave) read before the drape,
+# the wrinkles added after it; the garment without them is written with --coarse-out.
+panel="$root/tests/cli/wrinkle_panel.py"
+$py "$panel" wp.obj 15 20 && $py "$panel" wp_fine.obj 100 3 --wavelength 40
+expect_ok "dress: a wrinkle database" "$bin" wrinkles train wp.obj wp_fine.obj --units mm --out wdb.json
+expect_fail "dress: --wrinkles not a database" "placed.json: not a wrinkle database" "$bin" dress "$body" \
+  --units dm "$gc" --out x.obj --wrinkles placed.json
+expect_fail "dress: --wrinkles of another fabric" "a wrinkle database of fabric 'cotton_jersey', the garment is of 'denim'" \
+  "$bin" dress "$body" --units dm "$gc" --out x.obj --wrinkles wdb.json --fabric denim
+expect_fail "dress: --coarse-out without --wrinkles" "is for --wrinkles" "$bin" dress "$body" --units dm "$gc" \
+  --out x.obj --coarse-out y.obj
+if place_fs --out wr.obj --wrinkles wdb.json --coarse-out wr_coarse.obj --report wr.json &&
+   grep -q "wrinkles from wdb.json" tb_err.txt && $py - <<'PY'
+import json
+f = lambda p: sum(1 for l in open(p) if l.startswith("f "))
+assert f("wr.obj") == 16 * f("wr_coarse.obj"), (f("wr.obj"), f("wr_coarse.obj"))
+w = json.load(open("wr.json"))["wrinkles"]
+assert w["fine_triangles"] == f("wr.obj"), w
+assert w["body_checked"] and w["new_body_contacts_left"] == 0, w
+q = w["quality"]
+assert q["after"]["vertices_inside_body"] <= q["before"]["vertices_inside_body"], q
+PY
+then ok "dress --wrinkles writes the wrinkled garment and the one without"; else fail "dress --wrinkles: $(tail -c 400 tb_err.txt)"; fi
+if ls x.obj y.obj >/dev/null 2>&1; then fail "dress: a --wrinkles refusal left a file"; else ok "dress: --wrinkles refusals write nothing"; fi
 fi
 
 # --- batch ---------------------------------------------------------------------------------------
@@ -1616,29 +1640,9 @@ expect_fail "wrinkles classify: missing file" "nothere.obj: cannot open" "$bin" 
 # compare: a flat panel (pattern 300 x 300 mm) pulled 3 % across and shortened 5 % along the
 # warp, coarse at 20 mm, fine at 3 mm with a wave along the warp of 1.1 times the wavelength the
 # law predicts with the tension term over 300 mm: the tool measures the ratio.
-$py - <<'PY'
-import json, math
-f = json.load(open("denim.json"))
-T, B, q = f["stretch_weft_n_m"] * 0.03, f["bending_un_m"] * 1e-6, math.pi / 0.3
-lam = 1.1 * 2 * math.pi * (B / (T * q * q)) ** 0.25 * 1e3
-def grid(path, n, cell, wave):
-    with open(path, "w") as o:
-        o.write("g panel\n# grain 0 1\n")
-        for j in range(n + 1):
-            for i in range(n + 1):
-                u, v = cell * i, cell * j
-                h = 2 * math.sin(2 * math.pi * 0.95 * v / lam) if wave else 0
-                o.write("v %.9g %.9g %.9g\n" % (1.03 * u, 0.95 * v, h))
-        for j in range(n + 1):
-            for i in range(n + 1):
-                o.write("vt %g %g\n" % (cell * i, cell * j))
-        for j in range(n):
-            for i in range(n):
-                a, b, c, d = j * (n + 1) + i + 1, j * (n + 1) + i + 2, (j + 1) * (n + 1) + i + 2, (j + 1) * (n + 1) + i + 1
-                o.write("f %d/%d %d/%d %d/%d\nf %d/%d %d/%d %d/%d\n" % (a, a, b, b, c, c, a, a, c, c, d, d))
-grid("coarse.obj", 15, 20.0, False)
-grid("fine.obj", 100, 3.0, True)
-PY
+panel="$root/tests/cli/wrinkle_panel.py"
+$py "$panel" coarse.obj 15 20
+$py "$panel" fine.obj 100 3 --wave denim.json
 expect_ok "wrinkles compare" "$bin" wrinkles compare coarse.obj fine.obj --fabric denim --tension-length 300 --report cmp.json --windows win.json --picture cmp.png
 [ -s cmp.png ] && ok "wrinkles compare: picture" || fail "wrinkles compare: no picture"
 $py - <<'PY' && ok "wrinkles compare: the fine wave's wavelength against the prediction" || fail "wrinkles compare: $(head -c 600 cmp.json)"
@@ -1654,6 +1658,44 @@ printf 'g a\ng b\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3
 expect_fail "wrinkles compare: fine mesh of other pieces" "fine triangle 0 lies on piece 1" "$bin" wrinkles compare coarse.obj twopiece.obj --units mm --report x.json
 expect_fail "wrinkles buckling: one rigidity" "give two or more rigidities" "$bin" wrinkles buckling --test foundation --bending 1 --report x.json
 expect_fail "wrinkles buckling: unknown test" "expected foundation or cylinder" "$bin" wrinkles buckling --test drum --bending 1,2 --report x.json
+# train / apply: the compare panel's pair is the training data; a held-out panel of another size
+# (240 mm, the same strains) with the same wave is the simulation the synthesis is checked against.
+$py "$panel" held.obj 12 20
+$py "$panel" held_fine.obj 80 3 --wave denim.json
+expect_ok "wrinkles train" "$bin" wrinkles train coarse.obj fine.obj --units mm --fabric denim --out db.json
+$py - <<'PY' && ok "wrinkles train: samples away from the outline, nearly all with the wave" || fail "wrinkles train: $(head -c 300 out.txt)"
+import json
+d = json.load(open("db.json"))
+n, waves = len(d["samples"]), sum(1 for r in d["samples"] if r[-3] > 0)
+assert 200 < n < 450 and waves > 0.9 * n, (n, waves)
+assert d["fabric"] == "denim" and d["uses_body"] is False
+PY
+expect_ok "wrinkles apply" "$bin" wrinkles apply held.obj --db db.json --units mm --against held_fine.obj --out held_wr.obj --report apply.json --picture apply.png
+[ -s apply.png ] && ok "wrinkles apply: picture" || fail "wrinkles apply: no picture"
+$py - <<'PY' && ok "wrinkles apply: the learned wave on a held-out panel" || fail "wrinkles apply: $(head -c 900 apply.json)"
+import json
+r = json.load(open("apply.json"))
+s, c = r["synthesis"], r["check"]["compressed"]
+assert s["fine_triangles"] == 16 * 288, s
+assert s["new_self_crossings_left"] == 0 and s["body_checked"] is False, s
+assert c["simulation_has_wave"] > 100, c
+assert c["both_have_wave"] >= 0.9 * c["simulation_has_wave"], c
+assert c["median_wavelength_error_percent"] < 5, c
+assert c["median_amplitude_error_percent"] < 30, c
+# the written OBJ holds the fine mesh, in mm as given
+v = sum(1 for line in open("held_wr.obj") if line.startswith("v "))
+assert v == s["fine_vertices"], (v, s)
+PY
+expect_fail "wrinkles train: odd file count" "give pairs COARSE.obj FINE.obj" "$bin" wrinkles train coarse.obj fine.obj held.obj --units mm --out x.json
+expect_fail "wrinkles train: bodies per pair" "--bodies names 2 bodies for 1 pairs" "$bin" wrinkles train coarse.obj fine.obj --bodies a.obj b.obj --out x.json
+expect_fail "wrinkles apply: other fabric" "trained on fabric 'denim', the garment is of 'cotton_jersey'" "$bin" wrinkles apply held.obj --db db.json --fabric cotton_jersey --units mm --out x.obj
+printf '{"format": "tapeline-pattern"}\n' > notdb.json
+expect_fail "wrinkles apply: not a database" "notdb.json: not a wrinkle database" "$bin" wrinkles apply held.obj --db notdb.json --units mm --out x.obj
+$py -c "import json; d = json.load(open('db.json')); d['samples'][3][0] = 'x'; json.dump(d, open('baddb.json', 'w'))"
+expect_fail "wrinkles apply: bad sample" "baddb.json: sample 3: feature compression is not a finite number" "$bin" wrinkles apply held.obj --db baddb.json --units mm --out x.obj
+expect_fail "wrinkles apply: levels" "levels must be in" "$bin" wrinkles apply held.obj --db db.json --units mm --levels 0 --out x.obj
+expect_fail "wrinkles apply: output type" "--out x.ply: expected a .obj file" "$bin" wrinkles apply held.obj --db db.json --units mm --out x.ply
+expect_fail "wrinkles refine: missing body" "nobody.obj" "$bin" wrinkles refine held.obj --body nobody.obj --out x.obj
 if ls x.* >/dev/null 2>&1; then fail "a refused wrinkles command wrote: $(ls x.*)"; else ok "refused wrinkles commands wrote nothing"; fi
 fi
 
