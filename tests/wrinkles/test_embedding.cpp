@@ -58,6 +58,45 @@ TEST(Embedding, HeightsOfAFineWaveOverACoarsePlaneComeBack) {
     EXPECT_NEAR(e.max_abs_height_mm, 2, 0.01);
 }
 
+TEST(Embedding, HeightsAreOverTheSmoothSurfaceNotTheFacets) {
+    // Half a cylinder of radius 100 mm: coarse, 8 facets around (chords of 39 mm, whose middles
+    // lie 1.92 mm inside the cylinder); fine, 64 around, on the cylinder and 1 mm outside it.
+    // Over the facets the fine drape would rise by up to the sagitta, a wave of the facets'
+    // width; over the smooth surface it rises by 0 and by 1 mm.
+    const double r = 100, cell = M_PI * r / 8;
+    const auto on_cylinder = [&](double lift) {
+        return [=](double u, double v) {
+            return Vec3{(r + lift) * std::sin(u / r), v, (r + lift) * std::cos(u / r)};
+        };
+    };
+    tg::GarmentMesh coarse, fine, outside;
+    add_grid(coarse, 8, 3, cell, 0, 0, 0, on_cylinder(0));
+    add_grid(fine, 64, 24, cell / 8, 0, 0, 0, on_cylinder(0));
+    add_grid(outside, 64, 24, cell / 8, 0, 0, 0, on_cylinder(1));
+    const double sagitta = r * (1 - std::cos(M_PI / 16));
+    ASSERT_GT(sagitta, 1.9);
+    const tw::Embedding e = tw::embed_fine_in_coarse(coarse, fine);
+    const tw::Embedding o = tw::embed_fine_in_coarse(coarse, outside);
+    // Away from the outline (whose vertex normals lean towards the side with more triangle area)
+    // the coarse normals are radial: heights within a few per cent of the sagitta.
+    double flat_max = 0, on_max = 0, out_max = 0;
+    for (std::size_t k = 0; k < fine.positions.size(); ++k) {
+        const std::size_t column = k % 65, row = k / 65;
+        if (column < 8 || column > 56 || row < 8 || row > 16) {
+            continue;
+        }
+        // Over the facets: the distance of the fine point from the chord plane.
+        const double phi = double(column) * M_PI / 64,
+                     mid = (std::floor(phi / (M_PI / 8)) + 0.5) * M_PI / 8;
+        flat_max = std::max(flat_max, r * std::cos(phi - mid) - r * std::cos(M_PI / 16));
+        on_max = std::max(on_max, std::abs(e.vertices[k].height_mm));
+        out_max = std::max(out_max, std::abs(o.vertices[k].height_mm - 1));
+    }
+    EXPECT_NEAR(flat_max, sagitta, 1e-9);  // what flat facets would have given
+    EXPECT_LT(on_max, 0.05 * sagitta);
+    EXPECT_LT(out_max, 0.05 * sagitta);
+}
+
 TEST(Embedding, PiecesDoNotSeeEachOther) {
     // Two pieces with the same pattern coordinates, placed 300 mm apart: each fine vertex lands
     // on its own piece's coarse surface (height 0), not on the other's (300 mm away).

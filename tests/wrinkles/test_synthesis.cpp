@@ -185,7 +185,7 @@ TEST(Synthesis, TheSelfCheckKeepsTheWrinklesOutOfTheBody) {
     // Far from the sphere's top (its surface 25 mm and more below) the waves are untouched.
     std::size_t far = 0;
     for (std::size_t v = 0; v < held.fine.positions.size(); ++v) {
-        if (sdf.signed_distance(held.subdivision.mesh.positions[v], nullptr) > 25) {
+        if (sdf.signed_distance(held.base.positions[v], nullptr) > 25) {
             ++far;
             EXPECT_EQ(held.height_mm[v], free.height_mm[v]) << v;
         }
@@ -206,7 +206,7 @@ TEST(Synthesis, TheCheckAgainstASimulationMeasuresWhatItSays) {
     }
     const tw::SynthesisCheck c1 = tw::check_synthesis(coarse, s, db, same);
     const tw::SynthesisCheck c2 = tw::check_synthesis(coarse, s, db, negative);
-    const tw::SynthesisCheck c3 = tw::check_synthesis(coarse, s, db, s.subdivision.mesh);
+    const tw::SynthesisCheck c3 = tw::check_synthesis(coarse, s, db, s.base);
     const std::size_t comp = std::size_t(tw::WrinkleClass::compression);
     ASSERT_GT(c1.per_class[comp].simulated, 50u);
     EXPECT_EQ(c1.per_class[comp].both, c1.per_class[comp].simulated);

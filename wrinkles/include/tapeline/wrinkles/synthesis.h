@@ -24,9 +24,11 @@
 // amplitude), the wavelength their amplitude-weighted mean over those with one. The per-triangle
 // predictions are spread to the triangle corners of each piece (area-weighted; the compression
 // axis as a doubled angle, which has no sign, weighted by amplitude; the wavenumber 1/λ weighted
-// by amplitude). The coarse mesh is subdivided (subdivide.h); a fine vertex at barycentric b in
-// coarse triangle T at pattern point p takes A, axis d and wavenumber k interpolated from T's
-// corners and moves along the interpolated coarse normal by h = A·cos(2π·k·(p − c)·d), c the
+// by amplitude). The coarse mesh is subdivided (subdivide.h) and its new vertices put on the
+// smooth surface the coarse one stands for (embedding.h, smooth_coarse_point()); a fine vertex at
+// barycentric b in coarse triangle T at pattern point p takes A, axis d and wavenumber k
+// interpolated from T's corners and moves along the interpolated coarse normal by
+// h = A·cos(2π·k·(p − c)·d), c the
 // centroid of its piece's pattern: crests run across the compression axis, and cos has no sign
 // so the axis needs none. Vertices on seams (in triangles of two pieces) stay where they are.
 //
@@ -484,7 +486,9 @@ struct SynthesisReport {
 /// A coarse drape with synthesised wrinkles.
 struct Synthesis {
     garment::GarmentMesh fine;
-    Subdivision subdivision;
+    Subdivision subdivision;  ///< the flat subdivided mesh and where its vertices came from
+    /// The subdivided mesh on the smooth coarse surface (embedding.h): `fine` without wrinkles.
+    garment::GarmentMesh base;
     std::vector<double> height_mm;              ///< per fine vertex, along the coarse normal
     std::vector<Vec3> normal;                   ///< per fine vertex, unit
     std::vector<TrianglePrediction> triangles;  ///< per coarse triangle
@@ -712,8 +716,18 @@ inline Synthesis synthesize_wrinkles(const garment::GarmentMesh& coarse, const W
     // Subdivide, then displace.
     out.subdivision = subdivide(coarse, o.levels);
     const Subdivision& sd = out.subdivision;
-    const garment::GarmentMesh& base = sd.mesh;
     const std::vector<Vec3> cn = draw::vertex_normals(coarse.positions, coarse.triangles);
+    // The wrinkles sit on the smooth surface the coarse drape stands for (embedding.h), which is
+    // also what the database's heights were measured from.
+    out.base = sd.mesh;
+    for (std::size_t v = 0; v < out.base.positions.size(); ++v) {
+        const auto& b = sd.barycentric[v];
+        if (b[0] + b[1] + b[2] > 0.5) {
+            out.base.positions[v] = internal::smooth_coarse_point(
+                coarse.positions, coarse.triangles[sd.coarse_triangle[v]], cn, b);
+        }
+    }
+    const garment::GarmentMesh& base = out.base;
     const std::size_t nv = base.positions.size();
     out.height_mm.assign(nv, 0.0);
     out.normal.assign(nv, Vec3{0, 0, 0});
