@@ -355,16 +355,15 @@ void run_apply(const ApplyArgs& a) {
         const std::vector<tg::Vec3> no_points;
         const std::vector<tg::Tri> no_tris;
         parts.push_back(tw::wrinkle_picture(coarse, field, name + ": coarse, by class"));
-        parts.push_back(tw::height_picture(s.fine, s.height_mm,
-                                           name + ": synthesised, height over coarse", 0.5));
+        parts.push_back(
+            tw::height_picture(s.fine, s.height_mm, "synthesised: height over coarse", 0.5));
         if (check) {
             const tw::Embedding e = tw::embed_fine_in_coarse(coarse, simulated);
             std::vector<double> h(simulated.positions.size(), 0.0);
             for (std::size_t v = 0; v < h.size(); ++v) {
                 h[v] = e.vertices[v].height_mm;
             }
-            parts.push_back(tw::height_picture(
-                simulated, h, file_name(a.against) + ": simulated, height over coarse", 0.5));
+            parts.push_back(tw::height_picture(simulated, h, "simulated: height over coarse", 0.5));
         }
         const draw::RgbaImage img = tw::stacked(parts);
         outputs.write(

@@ -1667,7 +1667,7 @@ $py - <<'PY' && ok "wrinkles train: samples away from the outline, nearly all wi
 import json
 d = json.load(open("db.json"))
 n, waves = len(d["samples"]), sum(1 for r in d["samples"] if r[-3] > 0)
-assert 200 < n < 450 and waves > 0.9 * n, (n, waves)
+assert 200 < n < 450 and waves > 0.75 * n, (n, waves)
 assert d["fabric"] == "denim" and d["uses_body"] is False
 PY
 expect_ok "wrinkles apply" "$bin" wrinkles apply held.obj --db db.json --units mm --against held_fine.obj --out held_wr.obj --report apply.json --picture apply.png

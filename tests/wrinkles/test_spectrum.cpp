@@ -151,3 +151,36 @@ TEST(Spectrum, BadInputsAreNamed) {
 }
 
 }  // namespace
+
+TEST(Spectrum, ACubicTrendGoesAndAWaveOfFourPeriodsStays) {
+    // A garment-scale bulge and slope (a quartic over the record) under a sine of eight periods:
+    // less its least-squares cubic, the trend alone has no wave of four periods or more (tiny
+    // amplitude, or its peak at the limit), and the sine comes back within 2 %.
+    const std::size_t n = 400;
+    std::vector<double> trend(n), wave(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = 2.0 * double(i) / double(n - 1) - 1;
+        trend[i] = 5 * x * x * x - 3 * x * x + 0.5 * x * x * x * x;
+        wave[i] = trend[i] + 0.5 * std::sin(2 * M_PI * 8 * double(i) / double(n));
+    }
+    // Without the cubic removed, the trend's spectrum has a side lobe beyond four periods that
+    // passes for a peak.
+    const tapeline::wrinkles::Spectrum raw = dominant_wavelength(trend, 0.5, 4);
+    EXPECT_FALSE(raw.at_record_limit);
+    const tapeline::wrinkles::Spectrum t =
+        dominant_wavelength(tapeline::wrinkles::remove_polynomial(trend, 3), 0.5, 4);
+    EXPECT_TRUE(t.at_record_limit || t.amplitude < 0.02) << t.amplitude;
+    const tapeline::wrinkles::Spectrum w =
+        dominant_wavelength(tapeline::wrinkles::remove_polynomial(wave, 3), 0.5, 4);
+    EXPECT_FALSE(w.at_record_limit);
+    EXPECT_NEAR(w.wavelength, 0.5 * n / 8, 0.5 * n / 8 * 0.02);
+    EXPECT_NEAR(w.amplitude, 0.5, 0.05);
+    EXPECT_NE(tapeline::test::error_of([&] {
+                  dominant_wavelength(wave, 0.5, 1);
+              }).find("min_cycles must be finite and >= 2, got 1"),
+              std::string::npos);
+    EXPECT_NE(tapeline::test::error_of([&] {
+                  tapeline::wrinkles::remove_polynomial(wave, 6);
+              }).find("degree must be in [0, 5], got 6"),
+              std::string::npos);
+}

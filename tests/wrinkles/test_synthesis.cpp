@@ -269,6 +269,13 @@ TEST(Synthesis, BadInputsAreNamed) {
         },
         "pair 'p1' misses a mesh");
     expect_invalid([&] { tw::finish_database(empty); }, "no samples");
+    tw::WrinkleDatabase odd;
+    odd.options.min_periods = 0;
+    expect_invalid(
+        [&] {
+            tw::add_training_pair(odd, {&coarse, &coarse, nullptr, "p2"}, fabric());
+        },
+        "min_periods must be finite and >= 2, got 0");
     // Database files.
     const nlohmann::json good = tw::wrinkle_database_json(db);
     const auto expect_bad = [&](const std::function<void(nlohmann::json&)>& spoil,

@@ -20,6 +20,7 @@
 
 #include <tapeline/core/errors.h>
 
+#include <Eigen/Dense>
 #include <unsupported/Eigen/FFT>
 
 #include <algorithm>
@@ -67,11 +68,18 @@ inline void check_profile(const std::vector<double>& heights, double spacing, co
 
 }  // namespace internal
 
-/// Dominant wavelength of the uniformly sampled profile `heights` (sample i at i·spacing). Throws
-/// InvalidInput for fewer than 8 samples, a non-finite height (naming its index) or a spacing that
-/// is not finite and > 0.
-inline Spectrum dominant_wavelength(const std::vector<double>& heights, double spacing) {
+/// Dominant wavelength of the uniformly sampled profile `heights` (sample i at i·spacing), among
+/// the wavelengths of at least `min_cycles` periods in the record (2: every resolved wavelength;
+/// a caller that must tell waves from smooth trends asks for more, and a peak at its limit is then
+/// flagged `at_record_limit`). Throws InvalidInput for fewer than 8 samples, a non-finite height
+/// (naming its index), a spacing that is not finite and > 0, or min_cycles below 2.
+inline Spectrum dominant_wavelength(const std::vector<double>& heights, double spacing,
+                                    double min_cycles = 2) {
     internal::check_profile(heights, spacing, "dominant_wavelength");
+    if (!(min_cycles >= 2 && std::isfinite(min_cycles))) {
+        throw InvalidInput("dominant_wavelength: min_cycles must be finite and >= 2, got " +
+                           std::to_string(min_cycles));
+    }
     const std::size_t n = heights.size();
     const double mean = std::accumulate(heights.begin(), heights.end(), 0.0) / double(n);
     std::size_t padded = 1;
@@ -94,9 +102,10 @@ inline Spectrum dominant_wavelength(const std::vector<double>& heights, double s
     for (std::size_t k = 0; k <= half; ++k) {
         mag[k] = std::abs(spec[k]);
     }
-    // Resolved bins: wavelength ≤ half the record, i.e. frequency index ≥ 2 original bins.
+    // Resolved bins: wavelength ≤ the record / min_cycles, i.e. frequency index ≥ min_cycles
+    // original bins.
     const double record = double(n);  // in samples
-    const auto first = static_cast<std::size_t>(std::ceil(2.0 * double(padded) / record));
+    const auto first = static_cast<std::size_t>(std::ceil(min_cycles * double(padded) / record));
     Spectrum out;
     out.samples = n;
     if (first + 1 >= half) {
@@ -137,6 +146,37 @@ inline Spectrum dominant_wavelength(const std::vector<double>& heights, double s
     const double lobe_power = 2 * lobe_energy / double(padded);
     out.amplitude = std::sqrt(2 * lobe_power / window_energy);
     return out;
+}
+
+/// `heights` minus their least-squares polynomial of `degree` (0–5) in the sample index (Eigen's
+/// column-pivoting QR on the Legendre-scaled Vandermonde columns): a smooth trend under a wave
+/// removed. A polynomial of degree d cannot follow more than (d + 1)/2 periods, so a wave of four
+/// and more periods survives a cubic nearly whole.
+/// \throws InvalidInput when the degree is outside [0, 5] or there are not more samples than
+///         coefficients.
+inline std::vector<double> remove_polynomial(const std::vector<double>& heights, int degree) {
+    if (degree < 0 || degree > 5) {
+        throw InvalidInput("remove_polynomial: degree must be in [0, 5], got " +
+                           std::to_string(degree));
+    }
+    const auto n = Eigen::Index(heights.size());
+    if (n <= degree + 1) {
+        throw InvalidInput("remove_polynomial: " + std::to_string(n) + " samples for degree " +
+                           std::to_string(degree));
+    }
+    Eigen::MatrixXd a(n, degree + 1);
+    Eigen::VectorXd y(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const double x = 2 * double(i) / double(n - 1) - 1;
+        double p = 1;
+        for (int d = 0; d <= degree; ++d) {
+            a(i, d) = p;
+            p *= x;
+        }
+        y(i) = heights[std::size_t(i)];
+    }
+    const Eigen::VectorXd r = y - a * a.colPivHouseholderQr().solve(y);
+    return std::vector<double>(r.data(), r.data() + n);
 }
 
 /// Uniform resampling of scattered samples (s, height) by linear interpolation between the

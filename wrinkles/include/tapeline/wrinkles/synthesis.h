@@ -11,9 +11,12 @@
 // Targets, per coarse triangle of a training pair (train_wrinkle_database): the fine drape is
 // embedded in the coarse one (embedding.h); in a window of the triangle's piece centred on its
 // centroid, `window_length_mm` long along its compression axis and `window_width_mm` wide
-// (PatternWindows, window.h), the fine drape's detrended height profile has a dominant wavelength
+// (PatternWindows, window.h), the fine drape's height profile, less its least-squares cubic (a
+// fine drape refined from a coarse one sags and shifts by millimetres over regions larger than
+// the window), has a dominant wavelength
 // (pattern mm) and amplitude when its spectrum has one (peak share ≥ `min_peak_share`, not the
-// longest the window resolves, amplitude ≥ `min_amplitude_mm`); otherwise the target amplitude
+// longest of the wavelengths of at least `min_periods` periods in the window, amplitude ≥
+// `min_amplitude_mm`: has_wave()); otherwise the target amplitude
 // is 0 and there is no wavelength. A triangle whose window the piece's outline cuts to less than
 // `min_window_cover` of its length gives no sample.
 //
@@ -108,10 +111,15 @@ struct BodySurface {
 
 /// How the database measures its targets (see the file comment).
 struct TrainOptions {
-    double window_length_mm = 120;  ///< along the compression axis (> 0)
+    double window_length_mm = 200;  ///< along the compression axis (> 0)
     double window_width_mm = 20;    ///< across it (> 0)
     double min_peak_share = 0.3;    ///< a dominant wavelength needs this share of the spectrum
     double min_amplitude_mm = 0.1;  ///< and this amplitude
+    /// Wavelengths of at least this many periods in the window are looked at (>= 2), and a peak
+    /// at the longest of them is no wave: the detrended profile of a smooth, garment-scale
+    /// difference between two drapes (a low-order polynomial over the window) has a spectrum that
+    /// falls with frequency, so its largest magnitude sits at whatever limit is set.
+    double min_periods = 4;
     /// A window that covers less than this share of its length (cut by the piece's outline) is
     /// no sample: its missing wave would be the outline's, not the fabric's.
     double min_window_cover = 0.75;
@@ -188,6 +196,12 @@ inline std::vector<TriangleFeatures> wrinkle_features(const garment::GarmentMesh
     return out;
 }
 
+/// Whether a window's profile shows a wave by the rules of `o` (see the file comment).
+inline bool has_wave(const WindowProfile& p, const TrainOptions& o) {
+    return p.resolved && p.spectrum.wavelength > 0 && !p.spectrum.at_record_limit &&
+           p.spectrum.peak_share >= o.min_peak_share && p.spectrum.amplitude >= o.min_amplitude_mm;
+}
+
 /// One training pair: a coarse drape and a fine drape of the same garment, fabric and body.
 struct TrainingPair {
     const garment::GarmentMesh* coarse = nullptr;
@@ -208,6 +222,10 @@ inline std::size_t add_training_pair(WrinkleDatabase& db, const TrainingPair& pa
           std::isfinite(o.window_width_mm))) {
         throw InvalidInput(
             "wrinkle training: the window's length and width must be finite and > 0");
+    }
+    if (!(o.min_periods >= 2 && std::isfinite(o.min_periods))) {
+        throw InvalidInput("wrinkle training: min_periods must be finite and >= 2, got " +
+                           std::to_string(o.min_periods));
     }
     if (pair.coarse == nullptr || pair.fine == nullptr) {
         throw InvalidInput("wrinkle training: pair '" + pair.source + "' misses a mesh");
@@ -240,11 +258,9 @@ inline std::size_t add_training_pair(WrinkleDatabase& db, const TrainingPair& pa
         const UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3, (u[0][1] + u[1][1] + u[2][1]) / 3};
         const WindowProfile p =
             windows.profile(pair.coarse->triangle_piece[t], centre, feats[t].axis,
-                            0.5 * o.window_length_mm, 0.5 * o.window_width_mm);
+                            0.5 * o.window_length_mm, 0.5 * o.window_width_mm, o.min_periods, 3);
         double a = 0, lam = std::numeric_limits<double>::quiet_NaN();
-        if (p.resolved && p.spectrum.wavelength > 0 && !p.spectrum.at_record_limit &&
-            p.spectrum.peak_share >= o.min_peak_share &&
-            p.spectrum.amplitude >= o.min_amplitude_mm) {
+        if (has_wave(p, o)) {
             a = p.spectrum.amplitude;
             lam = p.spectrum.wavelength;
         }
@@ -296,6 +312,7 @@ inline nlohmann::ordered_json wrinkle_database_json(const WrinkleDatabase& db) {
     j["window_width_mm"] = db.options.window_width_mm;
     j["min_peak_share"] = db.options.min_peak_share;
     j["min_amplitude_mm"] = db.options.min_amplitude_mm;
+    j["min_periods"] = db.options.min_periods;
     j["min_window_cover"] = db.options.min_window_cover;
     j["compression_threshold"] = db.options.classify.compression_threshold;
     j["tension_threshold"] = db.options.classify.tension_threshold;
@@ -358,6 +375,7 @@ inline WrinkleDatabase wrinkle_database_from_json(const nlohmann::json& j,
     db.options.window_width_mm = num("window_width_mm");
     db.options.min_peak_share = num("min_peak_share");
     db.options.min_amplitude_mm = num("min_amplitude_mm");
+    db.options.min_periods = num("min_periods");
     db.options.min_window_cover = num("min_window_cover");
     db.options.classify.compression_threshold = num("compression_threshold");
     db.options.classify.tension_threshold = num("tension_threshold");
@@ -956,23 +974,21 @@ inline SynthesisCheck check_synthesis(const garment::GarmentMesh& coarse, const 
     const PatternWindows sim_w(simulated, hs);
     const PatternWindows syn_w(s.fine, s.height_mm);
     const TrainOptions& o = db.options;
-    const auto dominant = [&](const WindowProfile& p) {
-        return p.resolved && p.spectrum.wavelength > 0 && !p.spectrum.at_record_limit &&
-               p.spectrum.peak_share >= o.min_peak_share &&
-               p.spectrum.amplitude >= o.min_amplitude_mm;
-    };
+    const auto dominant = [&](const WindowProfile& p) { return has_wave(p, o); };
     std::array<std::vector<double>, kWrinkleClasses + 1> lam_err, amp_err;
     for (std::size_t t = 0; t < coarse.triangles.size(); ++t) {
         const TrianglePrediction& p = s.triangles[t];
         const auto& u = coarse.uv[t];
         const UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3, (u[0][1] + u[1][1] + u[2][1]) / 3};
-        const WindowProfile a = sim_w.profile(coarse.triangle_piece[t], centre, p.axis,
-                                              0.5 * o.window_length_mm, 0.5 * o.window_width_mm);
+        const WindowProfile a =
+            sim_w.profile(coarse.triangle_piece[t], centre, p.axis, 0.5 * o.window_length_mm,
+                          0.5 * o.window_width_mm, o.min_periods);
         if (!a.resolved) {
             continue;
         }
-        const WindowProfile b = syn_w.profile(coarse.triangle_piece[t], centre, p.axis,
-                                              0.5 * o.window_length_mm, 0.5 * o.window_width_mm);
+        const WindowProfile b =
+            syn_w.profile(coarse.triangle_piece[t], centre, p.axis, 0.5 * o.window_length_mm,
+                          0.5 * o.window_width_mm, o.min_periods);
         const std::size_t c = std::size_t(p.cls);
         for (std::size_t slot : {c, kWrinkleClasses}) {
             if (slot == kWrinkleClasses && c == 0) {

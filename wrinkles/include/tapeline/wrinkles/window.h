@@ -8,9 +8,10 @@
 // apart as in embedding.h) are binned along the axis at a quarter of the fine mesh's mean pattern
 // edge; the mean height of each bin is taken, empty bins are filled by linear interpolation
 // between their filled neighbours, the ends are cut to the first and last filled bin, and the
-// profile's linear trend is removed (a window on a slope or across a garment-scale bulge is not a
-// wave). The profile goes to dominant_wavelength() (spectrum.h). A window is resolved when it
-// holds at least 16 fine vertices and its profile spans at least eight bins.
+// profile's least-squares polynomial of a chosen degree is removed (a line by default: a window
+// on a slope is not a wave; a cubic where whole garment-scale bulges must go too). The profile goes
+// to dominant_wavelength() (spectrum.h). A window is resolved when it holds at least 16 fine
+// vertices and its profile spans at least eight bins.
 #pragma once
 
 #include <tapeline/garment/garment_types.h>
@@ -86,9 +87,13 @@ public:
     /// Bin width of the profiles, pattern mm.
     double bin_mm() const { return bin_; }
 
-    /// The window on `piece` centred at `centre`, `axis` a unit pattern direction.
+    /// The window on `piece` centred at `centre`, `axis` a unit pattern direction; the profile's
+    /// least-squares polynomial of `detrend_degree` is removed and the spectrum looks at
+    /// wavelengths of at least `min_cycles` periods in it (remove_polynomial(),
+    /// dominant_wavelength()).
     WindowProfile profile(std::uint32_t piece, const garment::UV& centre, const garment::UV& axis,
-                          double half_length, double half_width) const {
+                          double half_length, double half_width, double min_cycles = 2,
+                          int detrend_degree = 1) const {
         WindowProfile out;
         const garment::UV crest{-axis[1], axis[0]};
         const double reach = std::hypot(half_length, half_width);
@@ -125,26 +130,14 @@ public:
             return out;
         }
         std::vector<double> h = resample_uniform(s_of, h_of, bin_);
-        // Least-squares line through the profile, removed.
+        h = remove_polynomial(h, detrend_degree);
         const double n = double(h.size());
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        for (std::size_t i = 0; i < h.size(); ++i) {
-            const double x = double(i);
-            sx += x;
-            sy += h[i];
-            sxx += x * x;
-            sxy += x * h[i];
-        }
-        const double den = n * sxx - sx * sx;
-        const double slope = den != 0 ? (n * sxy - sx * sy) / den : 0;
-        const double icept = (sy - slope * sx) / n;
         double ss = 0;
-        for (std::size_t i = 0; i < h.size(); ++i) {
-            h[i] -= icept + slope * double(i);
-            ss += h[i] * h[i];
+        for (double x : h) {
+            ss += x * x;
         }
         out.rms_mm = std::sqrt(ss / n);
-        out.spectrum = dominant_wavelength(h, bin_);
+        out.spectrum = dominant_wavelength(h, bin_, min_cycles);
         out.resolved = true;
         return out;
     }
