@@ -5,10 +5,13 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 namespace tapeline::test {
 
-/// nx × ny cells of `cell` mm from (u0, v0) in the pattern, on piece `piece`, placed by `place`.
+/// nx × ny right-triangle cells of `cell` mm from (u0, v0) in the pattern, on piece `piece` (named
+/// "pieceN" when the mesh has no name for it yet), placed by `place`; counter-clockwise in the
+/// pattern.
 inline void add_grid(garment::GarmentMesh& g, int nx, int ny, double cell, double u0, double v0,
                      std::uint32_t piece,
                      const std::function<garment::Vec3(double, double)>& place) {
@@ -29,6 +32,9 @@ inline void add_grid(garment::GarmentMesh& g, int nx, int ny, double cell, doubl
             g.triangle_piece.push_back(piece);
             g.triangle_piece.push_back(piece);
         }
+    }
+    while (g.piece_names.size() <= piece) {
+        g.piece_names.push_back("piece" + std::to_string(g.piece_names.size()));
     }
 }
 

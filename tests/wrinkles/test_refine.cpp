@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "garment_grid.h"
 #include "invalid_input.h"
 
 #include <algorithm>
@@ -30,36 +31,10 @@ namespace tw = tapeline::wrinkles;
 namespace v3 = tapeline::vec3;
 using tg::Vec3;
 
+using tapeline::test::add_grid;
 using tapeline::test::error_of;
 
 namespace {
-
-/// nx × ny right-triangle cells of `cell` mm from (u0, v0) in the pattern, on piece `piece`,
-/// placed by `place`; counter-clockwise in the pattern.
-void add_grid(tg::GarmentMesh& g, int nx, int ny, double cell, double u0, double v0,
-              std::uint32_t piece, const std::function<Vec3(double, double)>& place) {
-    const auto base = std::uint32_t(g.positions.size());
-    auto id = [&](int i, int j) { return base + std::uint32_t(j * (nx + 1) + i); };
-    for (int j = 0; j <= ny; ++j) {
-        for (int i = 0; i <= nx; ++i) {
-            g.positions.push_back(place(u0 + i * cell, v0 + j * cell));
-        }
-    }
-    auto uv = [&](int i, int j) { return tg::UV{u0 + i * cell, v0 + j * cell}; };
-    for (int j = 0; j < ny; ++j) {
-        for (int i = 0; i < nx; ++i) {
-            g.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-            g.uv.push_back({uv(i, j), uv(i + 1, j), uv(i + 1, j + 1)});
-            g.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-            g.uv.push_back({uv(i, j), uv(i + 1, j + 1), uv(i, j + 1)});
-            g.triangle_piece.push_back(piece);
-            g.triangle_piece.push_back(piece);
-        }
-    }
-    while (g.piece_names.size() <= piece) {
-        g.piece_names.push_back("piece" + std::to_string(g.piece_names.size()));
-    }
-}
 
 /// Closed box [lo, hi], outward oriented (12 triangles).
 void make_box(const Vec3& lo, const Vec3& hi, std::vector<Vec3>& points,
