@@ -1696,6 +1696,8 @@ expect_fail "wrinkles apply: bad sample" "baddb.json: sample 3: feature compress
 expect_fail "wrinkles apply: levels" "levels must be in" "$bin" wrinkles apply held.obj --db db.json --units mm --levels 0 --out x.obj
 expect_fail "wrinkles apply: output type" "--out x.ply: expected a .obj file" "$bin" wrinkles apply held.obj --db db.json --units mm --out x.ply
 expect_fail "wrinkles refine: missing body" "nobody.obj" "$bin" wrinkles refine held.obj --body nobody.obj --out x.obj
+expect_fail "wrinkles apply: garment not in the body's unit" "held.obj: its positions are in mm" \
+  "$bin" wrinkles apply held.obj --db db.json --body "$root/data/bodies/mh_female_average.obj" --units dm --out x.obj
 if ls x.* >/dev/null 2>&1; then fail "a refused wrinkles command wrote: $(ls x.*)"; else ok "refused wrinkles commands wrote nothing"; fi
 fi
 
