@@ -8,6 +8,7 @@
 #include <tapeline/core/vec3.h>
 #include <tapeline/garment/garment_io.h>
 #include <tapeline/garment/garment_types.h>
+#include <tapeline/wrinkles/strain.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,12 +39,10 @@ inline LengthUnit garment_unit(const tg::GarmentMesh& g, const std::string& path
     std::vector<double> r;
     for (std::size_t f = 0; f < g.triangles.size(); ++f) {
         const auto& t = g.triangles[f];
-        const auto& u = g.uv[f];
         const double a3 =
             0.5 * vec3::norm(vec3::cross(vec3::sub(g.positions[t[1]], g.positions[t[0]]),
                                          vec3::sub(g.positions[t[2]], g.positions[t[0]])));
-        const double a2 = 0.5 * std::abs((u[1][0] - u[0][0]) * (u[2][1] - u[0][1]) -
-                                         (u[2][0] - u[0][0]) * (u[1][1] - u[0][1]));
+        const double a2 = tapeline::wrinkles::pattern_area(g.uv[f]);
         if (a2 > 0 && a3 > 0) {
             r.push_back(std::sqrt(a3 / a2));
         }

@@ -270,9 +270,7 @@ inline WrinkleField classify_wrinkles(const garment::GarmentMesh& g,
         }
         w.strain = triangle_strain(g.positions[t[0]], g.positions[t[1]], g.positions[t[2]], g.uv[f],
                                    grain);
-        const auto& u = g.uv[f];
-        const double a = 0.5 * std::abs((u[1][0] - u[0][0]) * (u[2][1] - u[0][1]) -
-                                        (u[2][0] - u[0][0]) * (u[1][1] - u[0][1]));
+        const double a = pattern_area(g.uv[f]);
         total_area += a;
         if (!w.strain.valid) {
             ++r.degenerate;

@@ -130,8 +130,7 @@ inline Comparison compare_wrinkles(const garment::GarmentMesh& coarse, const Wri
         c.predicted_wavelength_mm = w.wavelength_mm;
         c.predicted_amplitude_mm = w.amplitude_mm;
         const auto& u = coarse.uv[t];
-        const garment::UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3,
-                                 (u[0][1] + u[1][1] + u[2][1]) / 3};
+        const garment::UV centre = pattern_centroid(u);
         const WindowProfile p = windows.profile(coarse.triangle_piece[t], centre, w.strain.rest_min,
                                                 0.5 * o.periods * w.wavelength_mm,
                                                 0.5 * o.width_fraction * w.wavelength_mm);

@@ -90,6 +90,48 @@ inline Vec3 smooth_coarse_point(const std::vector<Vec3>& x, const garment::Tri& 
     return vec3::scale(vec3::add(p, q), 0.5);
 }
 
+/// The interpolated coarse normal at barycentric `b` of triangle `t` (unit; zero when the
+/// normals cancel).
+inline Vec3 smooth_coarse_normal(const garment::Tri& t, const std::vector<Vec3>& n,
+                                 const std::array<double, 3>& b) {
+    Vec3 nc{0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+        nc = vec3::add(nc, vec3::scale(n[t[std::size_t(i)]], b[std::size_t(i)]));
+    }
+    const double l = vec3::norm(nc);
+    return l > 0 ? vec3::scale(nc, 1 / l) : Vec3{0, 0, 0};
+}
+
+/// Per vertex of a garment: the pattern point and piece of the first triangle corner that names
+/// it, whether any triangle does, and whether triangles of two pieces do (a welded seam).
+struct VertexPattern {
+    std::vector<garment::UV> uv;
+    std::vector<std::uint32_t> piece;
+    std::vector<std::uint8_t> used, seam;
+};
+
+inline VertexPattern vertex_pattern(const garment::GarmentMesh& g) {
+    VertexPattern p;
+    const std::size_t n = g.positions.size();
+    p.uv.assign(n, {0, 0});
+    p.piece.assign(n, 0);
+    p.used.assign(n, 0);
+    p.seam.assign(n, 0);
+    for (std::size_t f = 0; f < g.triangles.size(); ++f) {
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = g.triangles[f][std::size_t(k)];
+            if (!p.used[v]) {
+                p.used[v] = 1;
+                p.uv[v] = g.uv[f][std::size_t(k)];
+                p.piece[v] = g.triangle_piece[f];
+            } else if (p.piece[v] != g.triangle_piece[f]) {
+                p.seam[v] = 1;
+            }
+        }
+    }
+    return p;
+}
+
 inline void check_garment(const garment::GarmentMesh& g, const char* which) {
     const std::string w = std::string("embedding: ") + which + " mesh";
     if (g.uv.size() != g.triangles.size() || g.triangle_piece.size() != g.triangles.size()) {
@@ -194,13 +236,8 @@ inline Embedding embed_fine_in_coarse(const garment::GarmentMesh& coarse,
             e.barycentric = {1 - b1 - b2, b1, b2};
             const Vec3 xc = internal::smooth_coarse_point(coarse.positions, coarse.triangles[ct],
                                                           normals, e.barycentric);
-            Vec3 nc{0, 0, 0};
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t cv = coarse.triangles[ct][std::size_t(c)];
-                nc = vec3::add(nc, vec3::scale(normals[cv], e.barycentric[std::size_t(c)]));
-            }
-            const double nl = vec3::norm(nc);
-            nc = nl > 0 ? vec3::scale(nc, 1 / nl) : Vec3{0, 0, 0};
+            const Vec3 nc =
+                internal::smooth_coarse_normal(coarse.triangles[ct], normals, e.barycentric);
             const Vec3 d = vec3::sub(fine.positions[v], xc);
             e.height_mm = vec3::dot(d, nc);
             e.tangential_mm = vec3::norm(vec3::sub(d, vec3::scale(nc, e.height_mm)));

@@ -122,21 +122,9 @@ inline double symmetric_uniform(std::mt19937_64& rng) {
 /// Median length of the distinct edges of `triangles` over `positions` (0 when there are none).
 inline double median_edge_length(const std::vector<garment::Vec3>& positions,
                                  const std::vector<garment::Tri>& triangles) {
-    std::vector<std::uint64_t> keys;
-    keys.reserve(3 * triangles.size());
-    for (const garment::Tri& t : triangles) {
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
-            keys.push_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b));
-        }
-    }
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     std::vector<double> lengths;
-    lengths.reserve(keys.size());
-    for (const std::uint64_t k : keys) {
-        lengths.push_back(vec3::norm(
-            vec3::sub(positions[std::size_t(k >> 32)], positions[std::size_t(k & 0xffffffffu)])));
+    for (const auto& [a, b] : garment::internal::unique_edges(triangles)) {
+        lengths.push_back(vec3::norm(vec3::sub(positions[a], positions[b])));
     }
     if (lengths.empty()) {
         return 0;

@@ -34,6 +34,17 @@ using garment::Tri;
 using garment::UV;
 using garment::Vec3;
 
+/// Area of a pattern triangle (unsigned, in the square of its unit).
+inline double pattern_area(const std::array<UV, 3>& u) {
+    return 0.5 * std::abs((u[1][0] - u[0][0]) * (u[2][1] - u[0][1]) -
+                          (u[2][0] - u[0][0]) * (u[1][1] - u[0][1]));
+}
+
+/// Centroid of a pattern triangle.
+inline UV pattern_centroid(const std::array<UV, 3>& u) {
+    return {(u[0][0] + u[1][0] + u[2][0]) / 3, (u[0][1] + u[1][1] + u[2][1]) / 3};
+}
+
 /// The strain of one triangle against its pattern triangle (see the file comment).
 struct TriangleStrain {
     bool valid = false;     ///< false: degenerate pattern triangle (nothing else is set)

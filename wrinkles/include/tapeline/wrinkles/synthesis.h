@@ -254,8 +254,7 @@ inline std::size_t add_training_pair(WrinkleDatabase& db, const TrainingPair& pa
         if (!feats[t].valid) {
             continue;
         }
-        const auto& u = pair.coarse->uv[t];
-        const UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3, (u[0][1] + u[1][1] + u[2][1]) / 3};
+        const UV centre = pattern_centroid(pair.coarse->uv[t]);
         const WindowProfile p =
             windows.profile(pair.coarse->triangle_piece[t], centre, feats[t].axis,
                             0.5 * o.window_length_mm, 0.5 * o.window_width_mm, o.min_periods, 3);
@@ -673,22 +672,26 @@ inline Synthesis synthesize_wrinkles(const garment::GarmentMesh& coarse, const W
         r.median_wavelength_mm[c] = internal::median(lams[c]);
         r.with_wrinkles[c] = amps[c].size();
     }
-    // Corner fields: accumulate over the triangles of one piece around a vertex.
+    // Corner fields: accumulate over the triangles of one piece around a vertex; the pieces'
+    // pattern centroids on the way.
     const std::size_t nt = coarse.triangles.size();
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::array<double, 5>> acc;  // (v, piece)
-    std::vector<std::set<std::uint32_t>> pieces_of(coarse.positions.size());
-    std::uint32_t npieces = 0;
+    std::vector<double> piece_area;
     for (std::size_t t = 0; t < nt; ++t) {
-        const auto& u = coarse.uv[t];
-        const double area = 0.5 * std::abs((u[1][0] - u[0][0]) * (u[2][1] - u[0][1]) -
-                                           (u[2][0] - u[0][0]) * (u[1][1] - u[0][1]));
+        const double area = pattern_area(coarse.uv[t]);
+        const UV centroid = pattern_centroid(coarse.uv[t]);
         const TrianglePrediction& p = out.triangles[t];
         const std::uint32_t piece = coarse.triangle_piece[t];
-        npieces = std::max(npieces, piece + 1);
+        if (piece >= piece_area.size()) {
+            piece_area.resize(piece + 1, 0.0);
+            out.piece_centre.resize(piece + 1, {0, 0});
+        }
+        out.piece_centre[piece][0] += area * centroid[0];
+        out.piece_centre[piece][1] += area * centroid[1];
+        piece_area[piece] += area;
         const double th2 = 2 * std::atan2(p.axis[1], p.axis[0]);
         const double a = p.amplitude_mm;
         for (std::uint32_t v : coarse.triangles[t]) {
-            pieces_of[v].insert(piece);
             auto& c = acc[{v, piece}];
             c[0] += area * a;
             c[1] += area * a * std::cos(th2);
@@ -697,10 +700,13 @@ inline Synthesis synthesize_wrinkles(const garment::GarmentMesh& coarse, const W
             c[4] += area;
         }
     }
-    out.on_seam.assign(coarse.positions.size(), 0);
-    for (std::size_t v = 0; v < coarse.positions.size(); ++v) {
-        out.on_seam[v] = pieces_of[v].size() > 1 ? 1 : 0;
+    for (std::size_t i = 0; i < piece_area.size(); ++i) {
+        if (piece_area[i] > 0) {
+            out.piece_centre[i] = {out.piece_centre[i][0] / piece_area[i],
+                                   out.piece_centre[i][1] / piece_area[i]};
+        }
     }
+    out.on_seam = internal::vertex_pattern(coarse).seam;
     out.corner.resize(3 * nt);
     for (std::size_t t = 0; t < nt; ++t) {
         for (int i = 0; i < 3; ++i) {
@@ -710,25 +716,6 @@ inline Synthesis synthesize_wrinkles(const garment::GarmentMesh& coarse, const W
             const double amp = c[4] > 0 ? c[0] / c[4] : 0;
             cf = {out.on_seam[v] ? 0.0 : amp, c[4] > 0 ? c[1] / c[4] : 0.0,
                   c[4] > 0 ? c[2] / c[4] : 0.0, c[0] > 0 ? c[3] / c[0] : 0.0};
-        }
-    }
-    out.piece_centre.assign(npieces, {0, 0});
-    {
-        std::vector<double> wsum(npieces, 0);
-        for (std::size_t t = 0; t < nt; ++t) {
-            const auto& u = coarse.uv[t];
-            const double area = 0.5 * std::abs((u[1][0] - u[0][0]) * (u[2][1] - u[0][1]) -
-                                               (u[2][0] - u[0][0]) * (u[1][1] - u[0][1]));
-            const std::uint32_t piece = coarse.triangle_piece[t];
-            out.piece_centre[piece][0] += area * (u[0][0] + u[1][0] + u[2][0]) / 3;
-            out.piece_centre[piece][1] += area * (u[0][1] + u[1][1] + u[2][1]) / 3;
-            wsum[piece] += area;
-        }
-        for (std::uint32_t i = 0; i < npieces; ++i) {
-            if (wsum[i] > 0) {
-                out.piece_centre[i] = {out.piece_centre[i][0] / wsum[i],
-                                       out.piece_centre[i][1] / wsum[i]};
-            }
         }
     }
     // Subdivide, then displace.
@@ -749,37 +736,17 @@ inline Synthesis synthesize_wrinkles(const garment::GarmentMesh& coarse, const W
     const std::size_t nv = base.positions.size();
     out.height_mm.assign(nv, 0.0);
     out.normal.assign(nv, Vec3{0, 0, 0});
-    std::vector<UV> where(nv, {0, 0});
-    std::vector<std::uint32_t> piece_of(nv, 0);
-    std::vector<std::uint8_t> seen(nv, 0), seam(nv, 0);
-    for (std::size_t f = 0; f < base.triangles.size(); ++f) {
-        for (int k2 = 0; k2 < 3; ++k2) {
-            const std::uint32_t v = base.triangles[f][std::size_t(k2)];
-            if (!seen[v]) {
-                seen[v] = 1;
-                where[v] = base.uv[f][std::size_t(k2)];
-                piece_of[v] = base.triangle_piece[f];
-            } else if (piece_of[v] != base.triangle_piece[f]) {
-                seam[v] = 1;
-            }
-        }
-    }
+    const internal::VertexPattern vp = internal::vertex_pattern(base);
     for (std::size_t v = 0; v < nv; ++v) {
         const std::uint32_t t = sd.coarse_triangle[v];
         const auto& b = sd.barycentric[v];
-        Vec3 n{0, 0, 0};
-        for (int i = 0; i < 3; ++i) {
-            n = vec3::add(n,
-                          vec3::scale(cn[coarse.triangles[t][std::size_t(i)]], b[std::size_t(i)]));
-        }
-        const double l = vec3::norm(n);
-        out.normal[v] = l > 0 ? vec3::scale(n, 1 / l) : Vec3{0, 0, 0};
-        if (!seen[v] || seam[v]) {
+        out.normal[v] = internal::smooth_coarse_normal(coarse.triangles[t], cn, b);
+        if (!vp.used[v] || vp.seam[v]) {
             continue;
         }
-        // The vertex's own piece must be the coarse triangle's (true for midpoint subdivision
-        // except on seams, handled above).
-        out.height_mm[v] = out.height_at(t, b, where[v], piece_of[v]);
+        // The vertex's own piece is the coarse triangle's (true for midpoint subdivision except
+        // on seams, left out above).
+        out.height_mm[v] = out.height_at(t, b, vp.uv[v], vp.piece[v]);
     }
     out.fine = base;
     for (std::size_t v = 0; v < nv; ++v) {
@@ -920,31 +887,19 @@ inline SynthesisCheck check_synthesis(const garment::GarmentMesh& coarse, const 
                                       const garment::GarmentMesh& simulated) {
     const Embedding e = embed_fine_in_coarse(coarse, simulated);
     std::vector<double> hs(simulated.positions.size(), 0.0), hy(simulated.positions.size(), 0.0);
-    std::vector<std::uint8_t> used(simulated.positions.size(), 0);
-    std::vector<UV> where(simulated.positions.size(), {0, 0});
-    std::vector<std::uint32_t> piece(simulated.positions.size(), 0);
-    for (std::size_t f = 0; f < simulated.triangles.size(); ++f) {
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t v = simulated.triangles[f][std::size_t(k)];
-            if (!used[v]) {
-                used[v] = 1;
-                where[v] = simulated.uv[f][std::size_t(k)];
-                piece[v] = simulated.triangle_piece[f];
-            }
-        }
-    }
+    const internal::VertexPattern vp = internal::vertex_pattern(simulated);
     SynthesisCheck out;
     double ss = 0, sy = 0;
     std::size_t n = 0;
     // Pearson sums per class: n, Σx, Σy, Σxx, Σyy, Σxy.
     std::array<std::array<double, 6>, kWrinkleClasses + 1> ps{};
     for (std::size_t v = 0; v < hs.size(); ++v) {
-        if (!used[v]) {
+        if (!vp.used[v]) {
             continue;
         }
         const EmbeddedVertex& ev = e.vertices[v];
         hs[v] = ev.height_mm;
-        hy[v] = s.height_at(ev.coarse_triangle, ev.barycentric, where[v], piece[v]);
+        hy[v] = s.height_at(ev.coarse_triangle, ev.barycentric, vp.uv[v], vp.piece[v]);
         ss += hs[v] * hs[v];
         sy += hy[v] * hy[v];
         ++n;
@@ -978,8 +933,7 @@ inline SynthesisCheck check_synthesis(const garment::GarmentMesh& coarse, const 
     std::array<std::vector<double>, kWrinkleClasses + 1> lam_err, amp_err;
     for (std::size_t t = 0; t < coarse.triangles.size(); ++t) {
         const TrianglePrediction& p = s.triangles[t];
-        const auto& u = coarse.uv[t];
-        const UV centre{(u[0][0] + u[1][0] + u[2][0]) / 3, (u[0][1] + u[1][1] + u[2][1]) / 3};
+        const UV centre = pattern_centroid(coarse.uv[t]);
         const WindowProfile a =
             sim_w.profile(coarse.triangle_piece[t], centre, p.axis, 0.5 * o.window_length_mm,
                           0.5 * o.window_width_mm, o.min_periods);
