@@ -179,4 +179,24 @@ TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
     EXPECT_TRUE(has_warning(r, "bust_right", "landmark_height"));
 }
 
+// A front neck point taken well down the chest tilts the neck base plane so that it runs over
+// the shoulders: the tape is then far longer than the neck's.
+TEST(SelfChecks, NeckBasePlaneOverTheShouldersIsFlagged) {
+    const BodyOptions o = decimetres("mh_female_average.obj");
+    const Result base = measure_file(kBundled, o);
+    EXPECT_FALSE(has_warning(base, "neck_base_girth", "neck_base_wide"));
+    const auto fn = base.landmarks.point("front_neck");
+    const auto nb = base.measurements.value("neck_base_girth");
+    const auto ng = base.measurements.value("neck_girth");
+    ASSERT_TRUE(fn && nb && ng);
+    EXPECT_LT(*nb, 1.5 * *ng);
+    const Vec3 low{(*fn)[0], (*fn)[1] - 0.08 * base.frame.height, (*fn)[2]};
+    const Result r = measure_file(
+        kBundled, o, write_overrides("neck.json", "\"front_neck\": " + point_json(low)));
+    const auto nb_low = r.measurements.value("neck_base_girth");
+    ASSERT_TRUE(nb_low);
+    EXPECT_GT(*nb_low, 1.5 * *ng);
+    EXPECT_TRUE(has_warning(r, "neck_base_girth", "neck_base_wide"));
+}
+
 }  // namespace
