@@ -27,9 +27,6 @@ const char* known_failure(int body) {
         case 16:
             return "short, thick neck: the neck taken at the jaw (side neck points above the "
                    "chin's underside, the neck girth around the mouth)";
-        case 23:
-            return "short, thick neck: the neck base plane, from the cervicale down to the front "
-                   "neck point, runs over the shoulders (neck base 1.63 times the neck girth)";
         case 5:
             return "knees found at 0.221 of the stature, below the 0.23-0.34 band";
         case 18:

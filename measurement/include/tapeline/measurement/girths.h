@@ -223,19 +223,89 @@ private:
         record("neck_girth", best_level(tb.first), deps);
     }
 
+    /// The part of plane section tape `t` on `apex`'s side of the line through `l` and `r` (both
+    /// in the tape's plane), cut where the tape crosses that line: appended to `arc` in order,
+    /// its length returned (+inf when the tape does not cross the line).
+    static double half_tape(const Tape& t, const Vec3& l, const Vec3& r, const Vec3& apex,
+                            std::vector<Vec3>& arc) {
+        const Vec3 d = sub(r, l);
+        auto side = [&](const Vec3& x) { return dot(cross(d, sub(x, l)), t.plane.normal); };
+        const double sa = side(apex) > 0 ? 1.0 : -1.0;
+        const std::size_t k = t.loop.size();
+        std::size_t start = k;  // a point on the far side, so the kept part is one run
+        for (std::size_t i = 0; i < k && start == k; ++i) {
+            if (sa * side(t.loop[i]) < 0) {
+                start = i;
+            }
+        }
+        if (start == k) {
+            return kInf;
+        }
+        double len = 0;
+        for (std::size_t m = 0; m < k; ++m) {
+            const Vec3& a = t.loop[(start + m) % k];
+            const Vec3& b = t.loop[(start + m + 1) % k];
+            const double fa = sa * side(a), fb = sa * side(b);
+            if (fa < 0 && fb < 0) {
+                continue;
+            }
+            const Vec3 cut = fa < 0 || fb < 0 ? add(a, mul(sub(b, a), fa / (fa - fb))) : a;
+            const Vec3 from = fa < 0 ? cut : a, to = fb < 0 ? cut : b;
+            if (fa < 0) {
+                arc.push_back(from);
+            }
+            arc.push_back(to);
+            len += dist(from, to);
+        }
+        return len;
+    }
+
+    /// Neck base girth (ISO 8559-1 5.3.3, over the cervicale, the side neck points and the front
+    /// neck point): behind the side neck points' line, the section by the plane through the
+    /// cervicale and both side neck points; in front of it, the section by the plane through the
+    /// front neck point and both side neck points; the two halves joined on that line. A single
+    /// plane through the cervicale and the front neck point passes 20-40 mm under the side neck
+    /// points and, on short, thick necks, over the slope of the shoulders: 1.12-1.63 times the
+    /// neck girth over 132 MakeHuman bodies whose neck is not at the jaw, this tape 1.10-1.33.
     void neck_base() {
-        const std::vector<std::string> deps = {"cervicale", "front_neck"};
+        const std::vector<std::string> deps = {"cervicale", "front_neck", "side_neck_left",
+                                               "side_neck_right"};
         if (auto why = missing("neck_base_girth", deps)) {
             out_.add_missing("neck_base_girth", *why);
             return;
         }
         const Vec3 cv = pt("cervicale"), fn = pt("front_neck");
+        const Vec3 l = pt("side_neck_left"), r = pt("side_neck_right");
+        Tape t;
         Vec3 n = cross(sub(fn, cv), {1, 0, 0});
         if (n[1] < 0) {
             n = mul(n, -1);
         }
         const Vec3 o = mul(add(cv, fn), 0.5);
-        record("neck_base_girth", tape(Plane::make(o, n, {1, 0, 0}), o), deps);
+        t.plane = Plane::make(o, n, {1, 0, 0});  // the girth's reference plane, for the checks
+        std::vector<Vec3> back, front;
+        double len = 0;
+        for (int h = 0; h < 2; ++h) {
+            const Vec3& apex = h == 0 ? cv : fn;
+            const Vec3 nn = normalized(cross(sub(r, l), sub(apex, l)));
+            const Vec3 seed = mul(add(add(l, r), apex), 1.0 / 3.0);
+            const Tape half = tape(Plane::make(seed, nn, {1, 0, 0}), seed);
+            std::vector<Vec3>& arc = h == 0 ? back : front;
+            len += std::isfinite(half.perimeter) ? half_tape(half, l, r, apex, arc) : kInf;
+            t.crosses_filled = t.crosses_filled || half.crosses_filled;
+        }
+        if (!std::isfinite(len) || back.empty() || front.empty()) {
+            out_.add_missing("neck_base_girth",
+                             "neck_base_girth: no neck section through the side neck points");
+            return;
+        }
+        if (dist(back.back(), front.front()) > dist(back.back(), front.back())) {
+            std::reverse(front.begin(), front.end());
+        }
+        t.perimeter = len + dist(back.back(), front.front()) + dist(front.back(), back.front());
+        t.loop = std::move(back);
+        t.loop.insert(t.loop.end(), front.begin(), front.end());
+        record("neck_base_girth", t, deps);
     }
 
     void torso() {

@@ -280,19 +280,18 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
             }
         }
     }
-    // The neck base tape is a plane through the cervicale and the front neck point. On a short,
-    // thick neck that plane runs down over the slope of the shoulders (the trapezius) and the
-    // tape takes them in. Over 132 MakeHuman bodies whose neck is not at the jaw, neck base /
-    // neck girth runs continuously from 1.12 to 1.63; the three above 1.5 show the tape over
-    // the shoulders in their pictures. Below 1.5 the plane also passes under the side neck
-    // points (the planar tape's bias), so this catches the worst cases, not all.
+    // The neck base tape runs over the four neck points. Over 132 MakeHuman bodies whose neck is
+    // not at the jaw it is 1.10-1.33 times the neck girth; more than 1.5 times means it runs over
+    // the shoulders or the chest: a front neck point or cervicale found (or given) too low (a
+    // single plane through cervicale and front neck point reaches 1.51-1.63 on short, thick
+    // necks, where it runs over the trapezius).
     if (const auto nb = set.value("neck_base_girth"), ng = set.value("neck_girth");
         nb && ng && *nb > 1.5 * *ng) {
         out.push_back({"neck_base_girth", "neck_base_wide",
                        fmt_num("neck_base_girth %.1f mm", *nb) +
-                           fmt_num(" is more than 1.5 times neck_girth %.1f mm: its plane through "
-                                   "cervicale and front_neck runs over the shoulders (a short, "
-                                   "thick neck)",
+                           fmt_num(" is more than 1.5 times neck_girth %.1f mm: the tape runs over "
+                                   "the shoulders or the chest (cervicale or front_neck too "
+                                   "low?)",
                                    *ng)});
     }
     // The side neck points are at the base of the neck, below the chin: more than 1 % of the

@@ -832,11 +832,10 @@ private:
     /// armpits, which move with the arms (A- against T-pose: 4-10 mm). The depth is smoothed
     /// (Gaussian, sigma 0.5 % of the height) and its maximum placed between scan levels by a
     /// parabola: the profile there is often nearly straight (the raw depth flat within 0.2 mm
-    /// over 25 mm), its raw maximum jumped a scan level (3.8 mm) or more between a body and its
-    /// re-meshed copy, and the neck base girth, whose plane hangs on this height, moves about
-    /// 3 mm per mm. The point of largest bend of the profile (the maximum of z'') was tried too:
-    /// its peaks are lower and several, and it jumped between them (tens of mm) on re-meshed
-    /// copies.
+    /// over 25 mm), its raw maximum jumps a scan level (3.8 mm) or more between a body and its
+    /// re-meshed copy, and the neck base girth with it. The point of largest bend of the profile
+    /// (the maximum of z'') is no steadier: its peaks are several and it jumps between them (tens
+    /// of mm) on re-meshed copies.
     void find_front_neck(std::size_t neck_k) {
         const double y0 = levels_[neck_k].y - 0.18 * height_;
         const std::vector<std::pair<double, double>> contour = front_profile(y0, levels_[neck_k].y);
