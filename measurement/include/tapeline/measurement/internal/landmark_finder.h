@@ -536,6 +536,14 @@ private:
         return std::make_pair(std::move(ps), s);
     }
 
+    /// Front and back z of the torso's fresh section at height y on the midline x = x_mid_.
+    std::optional<std::pair<double, double>> midline_front_back(double y) {
+        const auto t = torso_at(y);
+        return t ? front_back(t->first, t->first.sections[static_cast<std::size_t>(t->second)],
+                              x_mid_)
+                 : std::nullopt;
+    }
+
     std::optional<std::size_t> nearest_level(double y) const {
         if (levels_.empty()) {
             return std::nullopt;
@@ -586,11 +594,7 @@ private:
             if (overrides_.count("waist_front")) {
                 waist_y_ = overrides_.at("waist_front")[1];
             }
-            const auto t = torso_at(*waist_y_);
-            const auto fb =
-                t ? front_back(t->first, t->first.sections[static_cast<std::size_t>(t->second)],
-                               x_mid_)
-                  : std::nullopt;
+            const auto fb = midline_front_back(*waist_y_);
             if (fb) {
                 set_found("waist_front", {x_mid_, *waist_y_, fb->first});
                 set_found("waist_back", {x_mid_, *waist_y_, fb->second});
@@ -792,11 +796,7 @@ private:
         if (snp_y_[0] || snp_y_[1]) {
             const double y = snp_y_[0] && snp_y_[1] ? 0.5 * (*snp_y_[0] + *snp_y_[1])
                                                     : (snp_y_[0] ? *snp_y_[0] : *snp_y_[1]);
-            const auto t = torso_at(y);
-            const auto fb =
-                t ? front_back(t->first, t->first.sections[static_cast<std::size_t>(t->second)],
-                               x_mid_)
-                  : std::nullopt;
+            const auto fb = midline_front_back(y);
             if (fb) {
                 set_found("cervicale", {x_mid_, y, fb->second});
             } else {
@@ -888,21 +888,13 @@ private:
             if (lo.second - hi.second > 2 * (hi.first - lo.first)) {
                 const double mid = 0.5 * (lo.second + hi.second);
                 auto receded = [&](double yy) {
-                    const auto tt = torso_at(yy);
-                    const auto f =
-                        tt ? front_back(tt->first,
-                                        tt->first.sections[static_cast<std::size_t>(tt->second)],
-                                        x_mid_)
-                           : std::nullopt;
+                    const auto f = midline_front_back(yy);
                     return f && f->first < mid;
                 };
                 y = bisect(receded, lo.first, hi.first, options_.level_tolerance).second;
             }
         }
-        const auto t = torso_at(y);
-        const auto fb =
-            t ? front_back(t->first, t->first.sections[static_cast<std::size_t>(t->second)], x_mid_)
-              : std::nullopt;
+        const auto fb = midline_front_back(y);
         set_found("front_neck", {x_mid_, y, fb ? fb->first : contour[best].second});
     }
 
