@@ -57,6 +57,8 @@ struct DressArgs {
     bool edge_edge = false;
     bool no_untangle = false;
     bool no_relax = false;
+    bool no_fold_smoothing = false;
+    int fold_cycles = tg::DressOptions{}.fold_cycles;
     int relax_iterations = tg::RelaxOptions{}.max_iterations;
     bool strict = false;
     bool to_body = false;
@@ -124,6 +126,8 @@ void run_dress(const DressArgs& a) {
     o.drape.untangle = !a.no_untangle;
     o.relax = !a.no_relax;
     o.relax_options.max_iterations = a.relax_iterations;
+    o.smooth_folds = !a.no_fold_smoothing;
+    o.fold_cycles = a.fold_cycles;
     o.without_pieces = a.without;
 
     const tm::BodyOptions bo = tm::parse_body_options(a.body, a.units, a.up, a.front,
@@ -308,6 +312,14 @@ void register_dress_commands(CLI::App& app) {
     cmd->add_option("--relax-iterations", a->relax_iterations,
                     "Newton iterations of the static solve at most")
         ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    cmd->add_flag("--no-fold-smoothing", a->no_fold_smoothing,
+                  "Keep cloth folded over itself as the drape left it (default: flatten each "
+                  "fold-over and solve again)");
+    cmd->add_option(
+           "--fold-cycles", a->fold_cycles,
+           "Static solves at most, each after flattening the fold-overs the one before left")
+        ->check(CLI::Range(1, 100))
         ->capture_default_str();
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "

@@ -1040,6 +1040,8 @@ if [ -f "$hoody" ]; then
     "$bin" dress "$body" --units dm "$hoody" --out x.obj
 fi
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
+expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units dm "$gc" --out x.obj \
+  --fold-cycles 0
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
 expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \
   --sew-seconds 0 --settle-seconds 0 --out placed.obj --ply placed.ply --report placed.json \
@@ -1048,6 +1050,8 @@ if $py - <<'PY'
 import json
 r = json.load(open("placed.json"))
 assert r["options"]["edge_edge_collision"] is True, r["options"]
+# placement only: nothing sewn or draped, so nothing flattened or solved
+assert r["simulation"]["fold_smoothing"] == [] and r["simulation"]["static_solves"] == 0, r["simulation"]
 q = r["quality"]  # the self-intersections located and split by pieces, as many as counted
 assert len(q["self_crossings_canonical_mm"]) == min(100, q["self_intersections"]), q
 assert sum(q["self_crossings_by_pieces"].values()) == q["self_intersections"], q

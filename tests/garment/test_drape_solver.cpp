@@ -768,6 +768,164 @@ TEST(GarmentDrapeSolver, RelaxedSheetOverASphereStaysOutsideAndBalances) {
     EXPECT_EQ(result[0], result[1]);
 }
 
+// Fold-overs (smooth_fold_overs). A sheet of 10 mm cells folded over itself across rows j0..j1:
+// columns i0+1, i0+2, i0+3 moved by (+15, -3), (-5, +3) and (0, -8) mm in (x, y), so that the
+// profile crosses itself (the edge from column i0+2 to i0+3 passes through the triangles between
+// columns i0 and i0+1): a fold-over one edge wide, as compressed cloth makes. The crossings are
+// counted independently (CGAL's exact predicates).
+void crumple(ClothModel& sheet, int nx, int i0, int j0, int j1) {
+    const double dx[3] = {15, -5, 0}, dy[3] = {-3, 3, -8};
+    for (int j = j0; j <= j1; ++j) {
+        for (int k = 0; k < 3; ++k) {
+            Vec3& p = sheet.positions[grid_vertex(nx, i0 + 1 + k, j)];
+            p[0] += dx[k];
+            p[1] += dy[k];
+        }
+    }
+}
+
+ClothModel crumpled_sheet() {
+    ClothModel sheet = horizontal_square(24, 10, 0, 0, 0);
+    crumple(sheet, 24, 10, 10, 14);
+    return sheet;
+}
+
+// The fold is flattened: no crossing left (by the exact count, and as reported), the report's
+// count before equals the exact count, and nothing moves beyond the patch: the folded block
+// (columns 10..14, rows 10..14), the ring around its crossings and the rings added in later
+// rounds (one every five), so every vertex more than 1 + max_rounds/5 rings from the block keeps
+// its position bit for bit, the sheet's border included. The same result for one and two
+// threads.
+TEST(GarmentDrapeSolver, FoldOverSmoothingFlattensACrumpleAndNothingElse) {
+    const ClothModel sheet = crumpled_sheet();
+    const std::size_t before = exact_crossings(sheet.positions, sheet.triangles);
+    ASSERT_GT(before, 10u);
+    std::vector<Vec3> result[2];
+    for (int threads : {1, 2}) {
+        DrapeOptions options;
+        options.threads = threads;
+        DrapeSolver solver(sheet, FabricParams{}, options);
+        const tapeline::garment::FoldReport r = solver.smooth_fold_overs();
+        EXPECT_EQ(r.crossings_before, before);
+        EXPECT_EQ(r.crossings_after, 0u);
+        EXPECT_EQ(exact_crossings(solver.positions(), sheet.triangles), 0u);
+        EXPECT_GE(r.rounds, 1);
+        EXPECT_GT(r.vertices_moved, 0u);
+        const int reach = 1 + tapeline::garment::FoldOptions{}.max_rounds / 5 + 1;
+        for (int j = 0; j <= 24; ++j) {
+            for (int i = 0; i <= 24; ++i) {
+                if (std::max(std::max(10 - i, i - 14), std::max(10 - j, j - 14)) > reach) {
+                    const std::uint32_t v = grid_vertex(24, i, j);
+                    ASSERT_EQ(solver.positions()[v], sheet.positions[v]) << i << ", " << j;
+                }
+            }
+        }
+        for (const Vec3& v : solver.velocities()) {
+            ASSERT_EQ(v, (Vec3{0, 0, 0}));
+        }
+        result[threads - 1] = solver.positions();
+    }
+    EXPECT_EQ(result[0], result[1]);
+}
+
+// Cloth without crossings is left as it is.
+TEST(GarmentDrapeSolver, FoldOverSmoothingLeavesUncrossedClothAlone) {
+    const ClothModel flat = horizontal_square(12, 10, 0, 0, 0);
+    DrapeSolver solver(flat, FabricParams{}, DrapeOptions{});
+    const tapeline::garment::FoldReport r = solver.smooth_fold_overs();
+    EXPECT_EQ(r.crossings_before, 0u);
+    EXPECT_EQ(r.rounds, 0);
+    EXPECT_EQ(r.vertices_moved, 0u);
+    EXPECT_EQ(solver.positions(), flat.positions);
+}
+
+// Two sheets 3 mm apart along x, their facing columns stitched (zero rest length, still apart),
+// folds on both sides of the seam: every stitched pair keeps its gap exactly (both ends move by the
+// mean of their moves), so the smoothing opens no seam; pinned vertices stay put.
+TEST(GarmentDrapeSolver, FoldOverSmoothingKeepsStitchedPairsTogetherAndPinsInPlace) {
+    // Two 12 × 24 sheets, x from -120 to 0 and from 3 to 123, each folded over itself beside the
+    // seam.
+    ClothModel left = cloth_grid(12, 24, 10, {-120, 0, -120}, {1, 0, 0}, {0, 0, 1});
+    ClothModel right = cloth_grid(12, 24, 10, {3, 0, -120}, {1, 0, 0}, {0, 0, 1});
+    crumple(left, 12, 8, 10, 14);   // columns 9, 10, 11 of the left sheet
+    crumple(right, 12, 0, 10, 14);  // columns 1, 2, 3 of the right one
+    for (int j = 10; j <= 14;
+         ++j) {  // the seam's vertices unevenly spaced: the smoothing moves them
+        left.positions[grid_vertex(12, 12, j)][2] += j % 2 ? 4 : -4;
+        right.positions[grid_vertex(12, 0, j)][2] += j % 2 ? 4 : -4;
+    }
+    ClothModel both = join(left, right);
+    both.pinned.assign(both.positions.size(), 0);
+    const std::uint32_t pin = grid_vertex(12, 10, 12);  // inside the left crumple
+    both.pinned[pin] = 1;
+    const auto offset = static_cast<std::uint32_t>(left.positions.size());
+    std::vector<Stitch> stitches;
+    for (int j = 0; j <= 24; ++j) {
+        stitches.push_back({grid_vertex(12, 12, j), offset + grid_vertex(12, 0, j), 0.0, 0.0});
+    }
+    ASSERT_GT(exact_crossings(both.positions, both.triangles), 10u);
+    DrapeSolver solver(both, FabricParams{}, DrapeOptions{});
+    solver.set_stitches(stitches);
+    const tapeline::garment::FoldReport r = solver.smooth_fold_overs();
+    EXPECT_GT(r.vertices_moved, 0u);
+    EXPECT_EQ(solver.positions()[pin], both.positions[pin]);
+    double seam_moved = 0;
+    for (const Stitch& st : stitches) {
+        seam_moved = std::max(seam_moved, distance(solver.positions()[st.a], both.positions[st.a]));
+    }
+    EXPECT_GT(seam_moved, 0.5);  // the seam moved, its gaps did not change:
+    for (const Stitch& st : stitches) {
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_NEAR(solver.positions()[st.b][k] - solver.positions()[st.a][k],
+                        both.positions[st.b][k] - both.positions[st.a][k], 1e-9)
+                << "stitch " << st.a << "-" << st.b;
+        }
+    }
+}
+
+// A folded cap lying on a sphere at the clearance: smoothing a curved patch pulls it towards
+// the centre, the push keeps it outside (within the grid's error, 0.3 mm at 2 mm cells).
+TEST(GarmentDrapeSolver, FoldOverSmoothingKeepsTheClothOutsideTheBody) {
+    const double radius = 120, clearance = 2;
+    const auto sphere = tapeline_test::uv_sphere({0, 0, 0}, radius, 96, 48);
+    const SignedDistanceGrid body(sphere.points, sphere.triangles, ColliderOptions{2});
+    ClothModel cap = crumpled_sheet();
+    for (Vec3& p : cap.positions) {  // wrapped over the top of the sphere, crumple included
+        const double r = std::hypot(p[0], p[2]);
+        const double theta = r / (radius + clearance);
+        const double lift = p[1];
+        const double scale = r > 0 ? std::sin(theta) / r * (radius + clearance + lift) : 0;
+        p = {p[0] * scale, std::cos(theta) * (radius + clearance + lift), p[2] * scale};
+    }
+    ASSERT_GT(exact_crossings(cap.positions, cap.triangles), 10u);
+    DrapeOptions options;
+    options.body_clearance_mm = clearance;
+    DrapeSolver solver(cap, FabricParams{}, options, &body);
+    const tapeline::garment::FoldReport r = solver.smooth_fold_overs();
+    EXPECT_EQ(r.crossings_after, 0u);
+    double closest = 1e300;
+    for (const Vec3& p : solver.positions()) {
+        closest = std::min(closest, distance(p, {0, 0, 0}) - radius);
+    }
+    EXPECT_GE(closest, clearance - 0.3);
+}
+
+TEST(GarmentDrapeSolver, FoldOverSmoothingRefusesBadOptions) {
+    DrapeSolver solver(horizontal_square(4, 10, 0, 0, 0), FabricParams{}, DrapeOptions{});
+    tapeline::garment::FoldOptions fo;
+    fo.sweeps = 0;
+    EXPECT_NE(message_of([&] { solver.smooth_fold_overs(fo); }).find("sweeps >= 1"),
+              std::string::npos);
+    fo = {};
+    fo.rings = -1;
+    EXPECT_NE(message_of([&] { solver.smooth_fold_overs(fo); }).find("rings >= 0"),
+              std::string::npos);
+    fo = {};
+    fo.max_rounds = -2;
+    EXPECT_NE(message_of([&] { solver.smooth_fold_overs(fo); }).find("max_rounds >= 0"),
+              std::string::npos);
+}
+
 TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
     DrapeSolver solver(horizontal_square(4, 10, 0, 0, 0), FabricParams{}, DrapeOptions{});
     tapeline::garment::RelaxOptions ro;

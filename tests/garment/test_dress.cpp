@@ -113,11 +113,20 @@ TEST(Dress, ShirtOnTheBundledBody) {
         together += r.draped[s.a] == r.draped[s.b] ? 1 : 0;
     }
     EXPECT_GE(together, rep.pairs_welded_before_drape);
-    // The gates are measured, whatever their outcome, and every figure is finite.
+    // At 20 mm the shirt passes every gate on this body (docs/garment.md): the drape leaves
+    // fold-overs (cloth compressed under the arms), flattened before and after the static solve;
+    // the quality report counts none left with its own exact test.
     ASSERT_EQ(rep.gates.size(), 7u);
     for (const tg::Gate& g : rep.gates) {
         EXPECT_TRUE(std::isfinite(g.value)) << g.name;
+        EXPECT_TRUE(g.passed) << g.name << " " << g.value << " (limit " << g.limit << ")";
     }
+    ASSERT_FALSE(rep.folds.empty());
+    EXPECT_GT(rep.folds.front().crossings_before, 0u);
+    EXPECT_EQ(rep.folds.back().crossings_after, 0u);
+    EXPECT_EQ(rep.quality.self_intersections, 0u);
+    EXPECT_GE(rep.relax_runs, 1);
+    EXPECT_LE(rep.relax_runs, o.fold_cycles);
     // The shirt hangs from the shoulders: its top came down from the placement (placed a gap
     // above the skin), by less than the gate's limit, and the gate reads that figure.
     EXPECT_GT(rep.quality.top_drop_mm, 0);
@@ -177,9 +186,8 @@ TEST(Dress, AGarmentThatFellOffFailsTheTopDropGate) {
     }
 }
 
-// The quality gates of the issue on the bundled body. Not reached yet (docs/garment.md lists the
-// current figures: seams not all closed, cloth edges crossing the body, self-intersections and
-// stretch above the limits); run it with --gtest_also_run_disabled_tests.
+// The quality gates of the issue on the bundled body at the issue's 10 mm. Not reached yet
+// (docs/garment.md lists the current figures); run it with --gtest_also_run_disabled_tests.
 TEST(Dress, DISABLED_ShirtPassesTheQualityGates) {
     const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     const tp::Pattern shirt =
@@ -333,10 +341,12 @@ TEST(Dress, TShirtComesToRestOutsideTheBody) {
     }
     const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     const tp::Pattern teagan = tp::read_pattern_file(file.string());
-    // The sub-stepped drape alone comes to rest outside the body...
+    // The sub-stepped drape alone (no static solve, fold-overs kept) comes to rest outside the
+    // body...
     tg::DressOptions o;
     o.resolution_mm = 20;
     o.relax = false;
+    o.smooth_folds = false;
     const tg::DressReport rep = tg::dress(b.body, b.landmarks, teagan, o).report;
     EXPECT_EQ(rep.relax.iterations, 0);
     EXPECT_EQ(rep.boundary_loops, 4u) << "neck, hem and two sleeve openings";
@@ -346,12 +356,14 @@ TEST(Dress, TShirtComesToRestOutsideTheBody) {
     // ...and the static solve after it lowers the energy and takes the stretch to the gate's
     // 1.05 while keeping the cloth outside the body and on it.
     o.relax = true;
+    o.smooth_folds = true;
     const tg::DressReport relaxed = tg::dress(b.body, b.landmarks, teagan, o).report;
     EXPECT_GT(relaxed.relax.iterations, 0);
     EXPECT_LT(relaxed.relax.energy_after_j, relaxed.relax.energy_before_j);
     EXPECT_EQ(relaxed.quality.vertices_inside_body, 0u);
     EXPECT_LT(relaxed.quality.stretch_p95, rep.quality.stretch_p95);
     EXPECT_LE(relaxed.quality.stretch_p95, 1.05);
+    EXPECT_EQ(relaxed.quality.self_intersections, 0u);  // its fold-overs flattened
     EXPECT_LE(relaxed.quality.top_drop_mm, tg::kMaxTopDropMm);
     RecordProperty("stretch_p95_drape", std::to_string(rep.quality.stretch_p95));
     RecordProperty("stretch_p95_relaxed", std::to_string(relaxed.quality.stretch_p95));

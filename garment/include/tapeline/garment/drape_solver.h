@@ -243,6 +243,16 @@ public:
     /// part in it. Throws InvalidInput on bad options.
     RelaxReport relax(const RelaxOptions& options = {});
 
+    /// Flattens the cloth's fold-overs: where an edge crosses a triangle (find the crossings as
+    /// the untangling does), the vertices of both and `rings` rings around them are smoothed
+    /// (each moved halfway to the mean of its neighbours, a border vertex to the mean of its
+    /// neighbours along the border; pinned vertices stay) and kept at the clearance from the
+    /// body; then the crossings are found again, up to `max_rounds` times. Meant for the end of
+    /// a drape, where cloth compressed at a finer scale than its edges has folded over itself
+    /// one or two edges wide: a fold the mesh cannot hold without crossing itself. Velocities
+    /// become zero. Throws InvalidInput on bad options.
+    FoldReport smooth_fold_overs(const FoldOptions& options = {});
+
 private:
     struct TriangleConstraint {
         std::uint32_t v[3];
@@ -1850,6 +1860,200 @@ inline std::size_t DrapeSolver::untangle() {
         }
     }
     return crossings.size();
+}
+
+// Fold-overs (smooth_fold_overs): a patch of cloth folded over itself within an edge or two is
+// where compression buckled the cloth at a finer scale than its edges; the mesh cannot hold
+// such a fold without crossing itself, and the contacts, which leave out a vertex's
+// neighbours' triangles (near_in_rest), do not stop it. Laplacian smoothing of a small patch
+// around each crossing (its border fixed) flattens it; the crossings are found again and the
+// patch grows where they stay. Jacobi sweeps over a sorted patch: the same result for any
+// thread count.
+inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
+    using namespace tapeline::vec3;
+    if (o.max_rounds < 0 || o.rings < 0 || o.sweeps < 1) {
+        throw InvalidInput(
+            "DrapeSolver: fold options need max_rounds >= 0, rings >= 0 and "
+            "sweeps >= 1 (got " +
+            std::to_string(o.max_rounds) + ", " + std::to_string(o.rings) + ", " +
+            std::to_string(o.sweeps) + ")");
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t n = x_.size();
+    FoldReport report;
+    const std::vector<Vec3> x0 = x_;
+    // Each border vertex's neighbours along the border (edges with one triangle); a vertex with
+    // more than two (where borders meet) stays where it is.
+    std::vector<std::array<std::uint32_t, 2>> along(n, {kNone, kNone});
+    std::vector<std::uint8_t> border(n, 0);
+    for (std::size_t e = 0; e < edge_list_.size(); ++e) {
+        if (edge_tris_[e][1] != kNone) {
+            continue;
+        }
+        const auto [a, b] = edge_list_[e];
+        for (const auto& [u, w] : {std::make_pair(a, b), std::make_pair(b, a)}) {
+            border[u] = std::min<int>(border[u] + 1, 3);
+            if (along[u][0] == kNone) {
+                along[u][0] = w;
+            } else {
+                along[u][1] = w;
+            }
+        }
+    }
+    // Vertices joined by stitches (pairs still apart) move as one: a vertex's group joins its
+    // patch whole, and every member takes the mean of the group's moves, so no seam opens.
+    std::vector<std::uint32_t> root(n);
+    for (std::uint32_t v = 0; v < n; ++v) {
+        root[v] = v;
+    }
+    const auto find = [&](std::uint32_t v) {
+        while (root[v] != v) {
+            v = root[v] = root[root[v]];
+        }
+        return v;
+    };
+    for (const Stitch& st : stitches_) {
+        const std::uint32_t a = find(st.a), b = find(st.b);
+        root[std::max(a, b)] = std::min(a, b);
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> group;  // (root, member), sorted
+    for (const Stitch& st : stitches_) {
+        group.push_back({find(st.a), st.a});
+        group.push_back({find(st.b), st.b});
+    }
+    std::sort(group.begin(), group.end());
+    group.erase(std::unique(group.begin(), group.end()), group.end());
+    auto crossings = find_crossings();
+    report.crossings_before = crossings.size();
+    std::vector<std::uint32_t> slot(n, 0);
+    std::vector<std::uint8_t> in(n, 0);
+    std::vector<std::uint32_t> patch;
+    std::vector<Vec3> next;
+    for (int round = 0; round < o.max_rounds && !crossings.empty(); ++round) {
+        ++report.rounds;
+        std::fill(in.begin(), in.end(), 0);
+        patch.clear();
+        const auto add_vertex = [&](std::uint32_t v) {
+            if (!in[v]) {
+                in[v] = 1;
+                patch.push_back(v);
+                auto it = std::lower_bound(group.begin(), group.end(), std::make_pair(find(v), 0u));
+                for (; it != group.end() && it->first == find(v); ++it) {
+                    if (!in[it->second]) {
+                        in[it->second] = 1;
+                        patch.push_back(it->second);
+                    }
+                }
+            }
+        };
+        for (const auto& [e, t] : crossings) {
+            add_vertex(edge_list_[e].first);
+            add_vertex(edge_list_[e].second);
+            for (const std::uint32_t v : model_.triangles[t]) {
+                add_vertex(v);
+            }
+        }
+        const int rings = o.rings + round / 5;
+        for (int k = 0; k < rings; ++k) {
+            const std::size_t end = patch.size();
+            for (std::size_t i = 0; i < end; ++i) {
+                const std::uint32_t v = patch[i];
+                for (std::uint32_t j = neighbour_start_[v]; j < neighbour_start_[v + 1]; ++j) {
+                    add_vertex(neighbours_[j]);
+                }
+            }
+        }
+        std::sort(patch.begin(), patch.end());
+        for (std::size_t i = 0; i < patch.size(); ++i) {
+            slot[patch[i]] = static_cast<std::uint32_t>(i);
+        }
+        next.resize(patch.size());
+        for (int sweep = 0; sweep < o.sweeps; ++sweep) {
+            for (std::size_t i = 0; i < patch.size(); ++i) {
+                const std::uint32_t v = patch[i];
+                next[i] = x_[v];
+                if (w_[v] == 0 || border[v] > 2) {
+                    continue;
+                }
+                Vec3 sum{0, 0, 0};
+                int count = 0;
+                if (border[v] == 2) {
+                    sum = add(x_[along[v][0]], x_[along[v][1]]);
+                    count = 2;
+                } else if (border[v] == 0) {
+                    for (std::uint32_t j = neighbour_start_[v]; j < neighbour_start_[v + 1]; ++j) {
+                        sum = add(sum, x_[neighbours_[j]]);
+                        ++count;
+                    }
+                }
+                if (count > 0) {
+                    next[i] = add(scale(x_[v], 0.5), scale(sum, 0.5 / count));
+                }
+            }
+            for (std::size_t g = 0; g < group.size();) {
+                std::size_t e = g;
+                Vec3 sum{0, 0, 0};
+                bool pinned = false;
+                for (; e < group.size() && group[e].first == group[g].first; ++e) {
+                    const std::uint32_t v = group[e].second;
+                    sum = add(sum, in[v] ? sub(next[slot[v]], x_[v]) : Vec3{0, 0, 0});
+                    pinned = pinned || w_[v] == 0;
+                }
+                const Vec3 mean = pinned ? Vec3{0, 0, 0} : scale(sum, 1.0 / double(e - g));
+                for (std::size_t k = g; k < e; ++k) {
+                    const std::uint32_t v = group[k].second;
+                    if (in[v]) {
+                        next[slot[v]] = add(x_[v], mean);
+                    }
+                }
+                g = e;
+            }
+            for (std::size_t i = 0; i < patch.size(); ++i) {
+                x_[patch[i]] = next[i];
+            }
+            if (collider_) {
+                // Edge midpoints first, vertices last (as in the sub-steps): no edge of the
+                // patch may cut into the body between two vertices outside it.
+                for (const std::uint32_t v : patch) {
+                    for (std::uint32_t j = neighbour_start_[v]; j < neighbour_start_[v + 1]; ++j) {
+                        const std::uint32_t u = neighbours_[j];
+                        if (u < v || !in[u]) {
+                            continue;
+                        }
+                        Vec3 g;
+                        const double d =
+                            collider_->signed_distance(scale(add(x_[u], x_[v]), 0.5), &g);
+                        if (d < clearance_) {
+                            const Vec3 push = scale(g, clearance_ - d);
+                            x_[u] = w_[u] > 0 ? add(x_[u], push) : x_[u];
+                            x_[v] = w_[v] > 0 ? add(x_[v], push) : x_[v];
+                        }
+                    }
+                }
+                for (const std::uint32_t v : patch) {
+                    for (int k = 0; k < 2 && w_[v] > 0; ++k) {  // a grid's gradient: twice to land
+                        Vec3 g;
+                        const double d = collider_->signed_distance(x_[v], &g);
+                        if (!(d < clearance_)) {
+                            break;
+                        }
+                        x_[v] = add(x_[v], scale(g, clearance_ - d));
+                    }
+                }
+            }
+        }
+        crossings = find_crossings();
+    }
+    report.crossings_after = crossings.size();
+    for (std::size_t v = 0; v < n; ++v) {
+        const double d = norm(sub(x_[v], x0[v]));
+        report.max_move_mm = std::max(report.max_move_mm, d);
+        report.vertices_moved += d > 0.3 ? 1 : 0;
+        v_[v] = {0, 0, 0};
+    }
+    report.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
 }
 
 inline void DrapeSolver::solve_self_contacts() {

@@ -157,6 +157,25 @@ struct RelaxReport {
     double seconds = 0;        ///< wall time
 };
 
+/// Options of DrapeSolver::smooth_fold_overs.
+struct FoldOptions {
+    int max_rounds = 20;  ///< find-and-smooth rounds at most (>= 0)
+    /// Rings of neighbours added around the vertices of each crossing (>= 0); one more ring
+    /// every five rounds, so that a fold the patch cannot flatten gets a wider one.
+    int rings = 1;
+    int sweeps = 5;  ///< smoothing sweeps per round (>= 1)
+};
+
+/// What DrapeSolver::smooth_fold_overs did.
+struct FoldReport {
+    std::size_t crossings_before = 0;  ///< cloth edges crossing cloth triangles before
+    std::size_t crossings_after = 0;   ///< and after (0 unless the rounds ran out)
+    int rounds = 0;                    ///< find-and-smooth rounds taken
+    std::size_t vertices_moved = 0;    ///< vertices moved more than 0.3 mm
+    double max_move_mm = 0;            ///< largest vertex move
+    double seconds = 0;                ///< wall time
+};
+
 /// What one step() did.
 struct StepReport {
     std::size_t frame = 0;          ///< frames done so far

@@ -123,6 +123,9 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         throw InvalidInput(where + ": resolution " + std::to_string(o.resolution_mm) +
                            " mm is outside [2, 100] mm");
     }
+    if (o.fold_cycles < 1) {
+        throw InvalidInput("dress: fold_cycles must be >= 1, got " + std::to_string(o.fold_cycles));
+    }
     // Pieces left out, with their seams.
     for (const std::string& name : o.without_pieces) {
         if (!pattern::find_piece(pattern, name)) {
@@ -362,15 +365,44 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             }
         }
         simulated += double(drape.positions().empty() ? 0 : last.frame) * frame;
+        // Fold-overs (DrapeSolver::smooth_fold_overs) are flattened before the static solve;
+        // where the solve, which knows no cloth–cloth contact, folds cloth over again, they are
+        // flattened and the solve runs again (fold_cycles solves at most). When the last flattening
+        // had something to flatten, its moves count as moving in the static gate: the garment
+        // is then not where a solve left it.
+        const bool smooth = o.smooth_folds && !placement_only;
+        const auto flatten = [&] {
+            rep.folds.push_back(drape.smooth_fold_overs(o.fold_options));
+            return rep.folds.back().crossings_before > 0;
+        };
+        if (smooth) {
+            flatten();
+        }
         if (o.relax && !placement_only) {
-            Progress progress("dress: static solve");
-            rep.relax = drape.relax(o.relax_options);
-            progress.note(std::to_string(rep.relax.iterations) + " iterations, last move " +
-                          std::to_string(rep.relax.last_max_move_mm).substr(0, 6) + " mm");
-            progress.finish();
-            // The garment ends where the static solve left it: the static gate takes its last
-            // iteration's moves (a further frame of the sub-stepped solver would sag it again).
-            last.moving_fraction = rep.relax.moving_fraction;
+            for (int cycle = 0;; ++cycle) {
+                Progress progress("dress: static solve");
+                rep.relax = drape.relax(o.relax_options);
+                rep.relax_runs += 1;
+                progress.note(std::to_string(rep.relax.iterations) + " iterations, last move " +
+                              std::to_string(rep.relax.last_max_move_mm).substr(0, 6) + " mm");
+                progress.finish();
+                // The garment ends where the static solve left it: the static gate takes its
+                // last iteration's moves (a further frame of the sub-stepped solver would sag it
+                // again).
+                last.moving_fraction = rep.relax.moving_fraction;
+                if (!smooth || !flatten()) {
+                    break;
+                }
+                if (cycle + 1 >= o.fold_cycles) {
+                    last.moving_fraction +=
+                        double(rep.folds.back().vertices_moved) /
+                        double(std::max<std::size_t>(1, welded.positions.size()));
+                    break;
+                }
+            }
+        } else if (smooth && !rep.folds.empty() && rep.folds.back().crossings_before > 0) {
+            last.moving_fraction += double(rep.folds.back().vertices_moved) /
+                                    double(std::max<std::size_t>(1, welded.positions.size()));
         }
         out.draped.resize(cloth.positions.size());
         for (std::size_t v = 0; v < cloth.positions.size(); ++v) {

@@ -289,6 +289,15 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                  {"garment_vertices", r.garment_vertices},
                  {"boundary_loops", r.boundary_loops},
                  {"pairs_welded_before_drape", r.pairs_welded_before_drape}};
+    nlohmann::ordered_json folds = nlohmann::ordered_json::array();
+    for (const FoldReport& f : r.folds) {
+        folds.push_back({{"crossings_before", f.crossings_before},
+                         {"crossings_after", f.crossings_after},
+                         {"rounds", f.rounds},
+                         {"vertices_moved", f.vertices_moved},
+                         {"max_move_mm", f.max_move_mm},
+                         {"seconds", f.seconds}});
+    }
     j["simulation"] = {{"frames", r.frames},
                        {"simulated_seconds", r.simulated_seconds},
                        {"ms_per_step_per_10k_vertices", r.ms_per_step_per_10k},
@@ -304,7 +313,9 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                          {"max_residual_of_weight", r.relax.max_residual_of_weight},
                          {"total_residual_of_weight", r.relax.total_residual_of_weight},
                          {"contacts", r.relax.contacts},
-                         {"seconds", r.relax.seconds}}}};
+                         {"seconds", r.relax.seconds}}},
+                       {"static_solves", r.relax_runs},
+                       {"fold_smoothing", folds}};
     j["timings_seconds"] = {{"measure", r.measure_seconds},     {"sdf", r.sdf_seconds},
                             {"placement", r.placement_seconds}, {"strings", r.strings_seconds},
                             {"drape", r.drape_seconds},         {"quality", r.quality_seconds},
@@ -320,6 +331,8 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"edge_edge_collision", o.drape.edge_edge_collision},
                     {"untangle", o.drape.untangle},
                     {"static_solve", o.relax},
+                    {"fold_smoothing", o.smooth_folds},
+                    {"fold_cycles", o.fold_cycles},
                     {"sdf_cell_mm", o.sdf_cell_mm},
                     {"without", o.without_pieces},
                     {"damping_per_second", o.drape.damping_per_second},

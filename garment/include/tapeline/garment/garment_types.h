@@ -87,7 +87,13 @@ struct DressOptions {
     /// the direct solve takes it to the fabric's own stretch.
     bool relax = true;
     RelaxOptions relax_options;  ///< how
-    double sdf_cell_mm = 5;      ///< cell of the body's signed-distance grid
+    /// Flatten the cloth's fold-overs (DrapeSolver::smooth_fold_overs) after the drape and,
+    /// where the static solve folds cloth over again, after it and solve again: `fold_cycles`
+    /// static solves at most (>= 1).
+    bool smooth_folds = true;
+    FoldOptions fold_options;  ///< how
+    int fold_cycles = 4;
+    double sdf_cell_mm = 5;  ///< cell of the body's signed-distance grid
 };
 
 /// Sewing quality of one seam at the end of the drape.
@@ -208,8 +214,14 @@ struct DressReport {
     ///@}
     /// DrapeOptions::threads as given (0: all cores).
     int threads = 0;
-    /// The static solve after the drape (DressOptions::relax; iterations 0 when it did not run).
+    /// The last static solve (DressOptions::relax; iterations 0 when it did not run).
     RelaxReport relax;
+    /// Static solves run (1 + the flattenings that found fold-overs after one, at most
+    /// DressOptions::fold_cycles; 0 without the static solve).
+    int relax_runs = 0;
+    /// Each flattening of fold-overs, in order: after the drape, then after each static solve
+    /// (DressOptions::smooth_folds; empty when it did not run).
+    std::vector<FoldReport> folds;
 };
 
 /// A triangle mesh with per-corner pattern coordinates (the welded garment).
