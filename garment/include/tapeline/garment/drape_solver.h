@@ -1867,8 +1867,10 @@ inline std::size_t DrapeSolver::untangle() {
 // such a fold without crossing itself, and the contacts, which leave out a vertex's
 // neighbours' triangles (near_in_rest), do not stop it. Laplacian smoothing of a small patch
 // around each crossing (its border fixed) flattens it; the crossings are found again and the
-// patch grows where they stay. Jacobi sweeps over a sorted patch: the same result for any
-// thread count.
+// patch grows where they stay. Of the states the rounds pass through, the one with the fewest
+// crossings is kept (where cloth is pressed between layers or against the body, smoothing can
+// make more than it removes). Jacobi sweeps over a sorted patch: the same result for any thread
+// count.
 inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
     using namespace tapeline::vec3;
     if (o.max_rounds < 0 || o.rings < 0 || o.sweeps < 1) {
@@ -1902,24 +1904,11 @@ inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
     }
     // Vertices joined by stitches (pairs still apart) move as one: a vertex's group joins its
     // patch whole, and every member takes the mean of the group's moves, so no seam opens.
-    std::vector<std::uint32_t> root(n);
-    for (std::uint32_t v = 0; v < n; ++v) {
-        root[v] = v;
-    }
-    const auto find = [&](std::uint32_t v) {
-        while (root[v] != v) {
-            v = root[v] = root[root[v]];
-        }
-        return v;
-    };
+    const std::vector<std::uint32_t> weld = weld_pairs(n, stitches_).weld_map;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> group;  // (class, member), sorted
     for (const Stitch& st : stitches_) {
-        const std::uint32_t a = find(st.a), b = find(st.b);
-        root[std::max(a, b)] = std::min(a, b);
-    }
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> group;  // (root, member), sorted
-    for (const Stitch& st : stitches_) {
-        group.push_back({find(st.a), st.a});
-        group.push_back({find(st.b), st.b});
+        group.push_back({weld[st.a], st.a});
+        group.push_back({weld[st.b], st.b});
     }
     std::sort(group.begin(), group.end());
     group.erase(std::unique(group.begin(), group.end()), group.end());
@@ -1928,7 +1917,11 @@ inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
     std::vector<std::uint32_t> slot(n, 0);
     std::vector<std::uint8_t> in(n, 0);
     std::vector<std::uint32_t> patch;
-    std::vector<Vec3> next;
+    std::vector<Vec3> next, prev;
+    // The state with the fewest crossings is kept: where cloth is pressed between layers or
+    // against the body, smoothing can make more than it removes.
+    std::size_t fewest = crossings.size();
+    std::vector<Vec3> best = x_;
     for (int round = 0; round < o.max_rounds && !crossings.empty(); ++round) {
         ++report.rounds;
         std::fill(in.begin(), in.end(), 0);
@@ -1937,8 +1930,8 @@ inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
             if (!in[v]) {
                 in[v] = 1;
                 patch.push_back(v);
-                auto it = std::lower_bound(group.begin(), group.end(), std::make_pair(find(v), 0u));
-                for (; it != group.end() && it->first == find(v); ++it) {
+                auto it = std::lower_bound(group.begin(), group.end(), std::make_pair(weld[v], 0u));
+                for (; it != group.end() && it->first == weld[v]; ++it) {
                     if (!in[it->second]) {
                         in[it->second] = 1;
                         patch.push_back(it->second);
@@ -1968,7 +1961,11 @@ inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
             slot[patch[i]] = static_cast<std::uint32_t>(i);
         }
         next.resize(patch.size());
+        prev.resize(patch.size());
         for (int sweep = 0; sweep < o.sweeps; ++sweep) {
+            for (std::size_t i = 0; i < patch.size(); ++i) {
+                prev[i] = x_[patch[i]];
+            }
             for (std::size_t i = 0; i < patch.size(); ++i) {
                 const std::uint32_t v = patch[i];
                 next[i] = x_[v];
@@ -1989,24 +1986,6 @@ inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
                 if (count > 0) {
                     next[i] = add(scale(x_[v], 0.5), scale(sum, 0.5 / count));
                 }
-            }
-            for (std::size_t g = 0; g < group.size();) {
-                std::size_t e = g;
-                Vec3 sum{0, 0, 0};
-                bool pinned = false;
-                for (; e < group.size() && group[e].first == group[g].first; ++e) {
-                    const std::uint32_t v = group[e].second;
-                    sum = add(sum, in[v] ? sub(next[slot[v]], x_[v]) : Vec3{0, 0, 0});
-                    pinned = pinned || w_[v] == 0;
-                }
-                const Vec3 mean = pinned ? Vec3{0, 0, 0} : scale(sum, 1.0 / double(e - g));
-                for (std::size_t k = g; k < e; ++k) {
-                    const std::uint32_t v = group[k].second;
-                    if (in[v]) {
-                        next[slot[v]] = add(x_[v], mean);
-                    }
-                }
-                g = e;
             }
             for (std::size_t i = 0; i < patch.size(); ++i) {
                 x_[patch[i]] = next[i];
@@ -2041,10 +2020,37 @@ inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
                     }
                 }
             }
+            // Stitch groups last: each member takes the mean of the group's moves over the
+            // sweep, the body's pushes included, so that the gaps stay as they were.
+            for (std::size_t g = 0; g < group.size();) {
+                std::size_t e = g;
+                Vec3 sum{0, 0, 0};
+                bool pinned = false;
+                for (; e < group.size() && group[e].first == group[g].first; ++e) {
+                    const std::uint32_t v = group[e].second;
+                    sum = add(sum, in[v] ? sub(x_[v], prev[slot[v]]) : Vec3{0, 0, 0});
+                    pinned = pinned || w_[v] == 0;
+                }
+                const Vec3 mean = pinned ? Vec3{0, 0, 0} : scale(sum, 1.0 / double(e - g));
+                for (std::size_t k = g; k < e; ++k) {
+                    const std::uint32_t v = group[k].second;
+                    if (in[v]) {
+                        x_[v] = add(prev[slot[v]], mean);
+                    }
+                }
+                g = e;
+            }
         }
         crossings = find_crossings();
+        if (crossings.size() < fewest) {
+            fewest = crossings.size();
+            best = x_;
+        }
     }
-    report.crossings_after = crossings.size();
+    if (crossings.size() > fewest) {
+        x_ = best;
+    }
+    report.crossings_after = fewest;
     for (std::size_t v = 0; v < n; ++v) {
         const double d = norm(sub(x_[v], x0[v]));
         report.max_move_mm = std::max(report.max_move_mm, d);

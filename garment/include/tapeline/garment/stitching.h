@@ -255,46 +255,6 @@ inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sig
     return out;
 }
 
-/// Vertex classes after welding the stitch pairs (union–find; the representative is the smallest
-/// index): `weld_map[v]` is v's welded index in [0, count).
-struct Welding {
-    /// Per vertex: its welded index.
-    std::vector<std::uint32_t> weld_map;
-    /// Number of welded vertices (vertex classes).
-    std::size_t count = 0;
-};
-
-/// Welds `vertex_count` vertices along the stitch pairs `pairs` (see Welding); rest lengths and
-/// compliances are ignored.
-inline Welding weld_pairs(std::size_t vertex_count, const std::vector<Stitch>& pairs) {
-    std::vector<std::uint32_t> parent(vertex_count);
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto find = [&](std::uint32_t v) {
-        while (parent[v] != v) {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        return v;
-    };
-    for (const Stitch& s : pairs) {
-        const std::uint32_t a = find(s.a), b = find(s.b);
-        if (a != b) {
-            parent[std::max(a, b)] = std::min(a, b);
-        }
-    }
-    Welding w;
-    w.weld_map.assign(vertex_count, 0);
-    std::vector<std::uint32_t> index(vertex_count, std::uint32_t(-1));
-    for (std::uint32_t v = 0; v < vertex_count; ++v) {
-        const std::uint32_t r = find(v);
-        if (index[r] == std::uint32_t(-1)) {
-            index[r] = std::uint32_t(w.count++);
-        }
-        w.weld_map[v] = index[r];
-    }
-    return w;
-}
-
 /// Number of boundary loops of a triangle mesh (edges used by one triangle, joined at shared
 /// vertices): the openings of a welded garment.
 inline std::size_t boundary_loops(std::size_t nv, const std::vector<Tri>& tris) {
