@@ -375,6 +375,10 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             rep.folds.push_back(drape.smooth_fold_overs(o.fold_options));
             return rep.folds.back().crossings_before > 0;
         };
+        const auto count_last_flattening = [&] {
+            last.moving_fraction += double(rep.folds.back().vertices_moved) /
+                                    double(std::max<std::size_t>(1, welded.positions.size()));
+        };
         if (smooth) {
             flatten();
         }
@@ -394,15 +398,12 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
                     break;
                 }
                 if (cycle + 1 >= o.fold_cycles) {
-                    last.moving_fraction +=
-                        double(rep.folds.back().vertices_moved) /
-                        double(std::max<std::size_t>(1, welded.positions.size()));
+                    count_last_flattening();
                     break;
                 }
             }
-        } else if (smooth && !rep.folds.empty() && rep.folds.back().crossings_before > 0) {
-            last.moving_fraction += double(rep.folds.back().vertices_moved) /
-                                    double(std::max<std::size_t>(1, welded.positions.size()));
+        } else if (smooth && rep.folds.back().crossings_before > 0) {
+            count_last_flattening();
         }
         out.draped.resize(cloth.positions.size());
         for (std::size_t v = 0; v < cloth.positions.size(); ++v) {
