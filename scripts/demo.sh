@@ -16,7 +16,8 @@ done
 "$bin" geodesic distances "$root/data/spot.obj" --source 0 --method exact-mmp --out "$out/spot_exact-mmp.txt"
 
 python_dir="$(dirname "$(dirname "$bin")")/python"
-if [ -d "$python_dir/tapeline" ]; then
+# The package's .py files are laid out at configure time; the compiled module only by its target.
+if compgen -G "$python_dir/tapeline/_tapeline*.so" > /dev/null; then
   echo "== the same from Python (the module tapeline, built beside the tool)"
   PYTHONPATH="$python_dir" /usr/bin/python3 "$root/python/examples/quickstart.py" "$root/data"
 else
