@@ -99,6 +99,22 @@ TEST(Dress, ShirtOnTheBundledBody) {
     const tg::DressReport& rep = r.report;
     EXPECT_EQ(rep.placement_vertices_inside, 0u);
     EXPECT_EQ(rep.boundary_loops, 4u) << "a shirt has a neck, a hem and two cuffs";
+    // The openings, lowest first: the hem's rim lies about horizontal and outside the body, the
+    // hull of its projection is no longer than the rim, and the neckline is the highest.
+    ASSERT_EQ(rep.openings.size(), rep.boundary_loops);
+    for (std::size_t k = 1; k < rep.openings.size(); ++k) {
+        EXPECT_LE(rep.openings[k - 1].height_mm, rep.openings[k].height_mm);
+    }
+    const tg::Opening& hem = rep.openings.front();
+    EXPECT_GT(hem.normal[1], 0.9);
+    EXPECT_GT(hem.clearance_mean_mm, 0);
+    EXPECT_LE(hem.hull_perimeter_mm, hem.length_mm + 1e-9);
+    EXPECT_GT(hem.width_mm, hem.depth_mm) << "a body is wider than deep at the hips";
+    for (std::size_t i = 0; i < hem.loop.size(); ++i) {
+        EXPECT_EQ(hem.points[i], r.garment.positions[hem.loop[i]]);
+    }
+    ASSERT_NE(b.landmarks.find("bust_left"), nullptr);
+    EXPECT_GT(rep.openings.back().height_mm, b.landmarks.find("bust_left")->point[1]);
     EXPECT_EQ(rep.pieces.size(), 8u);
     for (const tg::SeamReport& s : rep.seams) {
         EXPECT_TRUE(s.closable) << s.name << ": " << s.problem;

@@ -4,6 +4,7 @@
 // stretches of affine maps are their singular values; a tube has two boundary loops.
 #include <tapeline/garment/drape_solver.h>
 #include <tapeline/garment/fabric.h>
+#include <tapeline/garment/openings.h>
 #include <tapeline/garment/quality.h>
 #include <tapeline/garment/stitching.h>
 #include <tapeline_test/garment_shapes.h>
@@ -108,8 +109,8 @@ TEST(GarmentWeld, UnionOfPairsAndBoundaryLoops) {
     for (const auto& t : c.triangles) {
         welded.push_back({w.weld_map[t[0]], w.weld_map[t[1]], w.weld_map[t[2]]});
     }
-    EXPECT_EQ(tg::boundary_loops(w.count, welded), 2u);                  // the tube's two rims
-    EXPECT_EQ(tg::boundary_loops(c.positions.size(), c.triangles), 1u);  // flat sheet
+    EXPECT_EQ(tg::boundary_loop_vertices(welded).size(), 2u);       // the tube's two rims
+    EXPECT_EQ(tg::boundary_loop_vertices(c.triangles).size(), 1u);  // flat sheet
 }
 
 TEST(GarmentStrings, PointsAlongAndSewingTargets) {

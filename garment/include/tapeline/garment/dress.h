@@ -17,6 +17,7 @@
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/drape_solver.h>
 #include <tapeline/garment/garment_types.h>
+#include <tapeline/garment/openings.h>
 #include <tapeline/garment/placement.h>
 #include <tapeline/garment/quality.h>
 #include <tapeline/garment/stitching.h>
@@ -28,6 +29,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -442,7 +444,18 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         g.piece_names.push_back(p.name);
     }
     rep.garment_vertices = w.count;
-    rep.boundary_loops = boundary_loops(w.count, g.triangles);
+    rep.openings = garment_openings(g.positions, g.triangles);
+    std::sort(rep.openings.begin(), rep.openings.end(),
+              [](const Opening& a, const Opening& b) { return a.height_mm < b.height_mm; });
+    for (Opening& op : rep.openings) {
+        op.clearance_max_mm = -std::numeric_limits<double>::infinity();
+        for (std::uint32_t v : op.loop) {
+            const double d = sdf.signed_distance(g.positions[v], nullptr);
+            op.clearance_mean_mm += d / double(op.loop.size());
+            op.clearance_max_mm = std::max(op.clearance_max_mm, d);
+        }
+    }
+    rep.boundary_loops = rep.openings.size();
     // --- quality
     t0 = Clock::now();
     // The cloth rests at the clearance from the skin: a triangle within twice that lies on it.

@@ -34,6 +34,7 @@
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/drape_solver.h>
 #include <tapeline/garment/fabric_lab.h>
+#include <tapeline/garment/openings.h>
 
 #include <algorithm>
 #include <array>
@@ -785,30 +786,7 @@ inline CusickResult cusick_test(const FabricParams& fabric, const FabricTestOpti
         }
         smooth[d] = sum / 5;
     }
-    // Count peaks with a hysteresis of 2 mm, starting from the global minimum.
-    const int dmin =
-        static_cast<int>(std::min_element(smooth.begin(), smooth.end()) - smooth.begin());
-    double low = smooth[dmin], high = low;
-    bool rising = true;
-    int nodes = 0;
-    for (int k = 1; k <= 360; ++k) {
-        const double v = smooth[(dmin + k) % 360];
-        if (rising) {
-            high = std::max(high, v);
-            if (high - v >= 2 && high - low >= 2) {
-                ++nodes;
-                rising = false;
-                low = v;
-            }
-        } else {
-            low = std::min(low, v);
-            if (v - low >= 2) {
-                rising = true;
-                high = v;
-            }
-        }
-    }
-    r.nodes = nodes;
+    r.nodes = internal::closed_peaks(smooth, 2);
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
 }

@@ -289,6 +289,27 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                  {"garment_vertices", r.garment_vertices},
                  {"boundary_loops", r.boundary_loops},
                  {"pairs_welded_before_drape", r.pairs_welded_before_drape}};
+    nlohmann::ordered_json openings = nlohmann::ordered_json::array();
+    for (const Opening& op : r.openings) {
+        nlohmann::ordered_json loop = nlohmann::ordered_json::array();
+        for (const Vec3& p : op.points) {
+            loop.push_back({std::round(p[0] * 10) / 10, std::round(p[1] * 10) / 10,
+                            std::round(p[2] * 10) / 10});
+        }
+        openings.push_back({{"vertices", op.loop.size()},
+                            {"height_mm", op.height_mm},
+                            {"length_mm", op.length_mm},
+                            {"width_mm", op.width_mm},
+                            {"depth_mm", op.depth_mm},
+                            {"normal", {op.normal[0], op.normal[1], op.normal[2]}},
+                            {"hull_perimeter_mm", op.hull_perimeter_mm},
+                            {"folds", op.folds},
+                            {"deepest_fold_mm", op.deepest_fold_mm},
+                            {"clearance_mean_mm", op.clearance_mean_mm},
+                            {"clearance_max_mm", op.clearance_max_mm},
+                            {"loop_canonical_mm", loop}});
+    }
+    j["openings"] = openings;
     nlohmann::ordered_json folds = nlohmann::ordered_json::array();
     for (const FoldReport& f : r.folds) {
         folds.push_back({{"crossings_before", f.crossings_before},

@@ -179,6 +179,27 @@ struct QualityFigures {
     double top_drop_mm = 0;
 };
 
+/// One opening of a garment (a boundary loop of the welded mesh; openings.h). Canonical frame,
+/// mm.
+struct Opening {
+    std::vector<std::uint32_t> loop;  ///< its vertices in order around it
+    std::vector<Vec3> points;         ///< their positions
+    double height_mm = 0;             ///< mean height (y) of its vertices
+    double length_mm = 0;             ///< length of the closed 3D polyline
+    /// Extents along the canonical x (left) and z (front) axes: a hem's width and depth.
+    ///@{
+    double width_mm = 0, depth_mm = 0;
+    ///@}
+    Vec3 normal{0, 1, 0};          ///< unit normal of its plane (Newell), pointing up (y ≥ 0)
+    double hull_perimeter_mm = 0;  ///< perimeter of the convex hull of its plane projection
+    int folds = 0;                 ///< peaks of the depth inside that hull (file comment)
+    double deepest_fold_mm = 0;    ///< largest depth inside the hull
+    /// Signed distance of its vertices from the body (filled by the caller; 0 when not).
+    ///@{
+    double clearance_mean_mm = 0, clearance_max_mm = 0;
+    ///@}
+};
+
 /// What dress() did and how good the garment is.
 struct DressReport {
     /// One per piece dressed, in the pattern's order (pieces left out have none).
@@ -222,6 +243,9 @@ struct DressReport {
     /// Each flattening of fold-overs, in order: after the drape, then after each static solve
     /// (DressOptions::smooth_folds; empty when it did not run).
     std::vector<FoldReport> folds;
+    /// The garment's openings (garment_openings()), lowest first, with their clearance from the
+    /// body.
+    std::vector<Opening> openings;
 };
 
 /// A triangle mesh with per-corner pattern coordinates (the welded garment).

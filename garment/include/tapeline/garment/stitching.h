@@ -25,7 +25,6 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <set>
 #include <unordered_map>
 #include <vector>
 
@@ -253,41 +252,6 @@ inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sig
         out.push_back({v, target, compliance});
     }
     return out;
-}
-
-/// Number of boundary loops of a triangle mesh (edges used by one triangle, joined at shared
-/// vertices): the openings of a welded garment.
-inline std::size_t boundary_loops(std::size_t nv, const std::vector<Tri>& tris) {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
-    for (const Tri& t : tris) {
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            ++count[{std::min(a, b), std::max(a, b)}];
-        }
-    }
-    std::vector<std::uint32_t> parent(nv);
-    for (std::uint32_t v = 0; v < nv; ++v) {
-        parent[v] = v;
-    }
-    const auto find = [&](std::uint32_t v) {
-        while (parent[v] != v) {
-            v = parent[v] = parent[parent[v]];
-        }
-        return v;
-    };
-    std::set<std::uint32_t> on_boundary;
-    for (const auto& [e, c] : count) {
-        if (c == 1) {
-            on_boundary.insert(e.first);
-            on_boundary.insert(e.second);
-            parent[find(e.first)] = find(e.second);
-        }
-    }
-    std::set<std::uint32_t> roots;
-    for (std::uint32_t v : on_boundary) {
-        roots.insert(find(v));
-    }
-    return roots.size();
 }
 
 }  // namespace tapeline::garment
