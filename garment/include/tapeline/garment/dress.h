@@ -304,11 +304,35 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         DrapeSolver sew(cloth, o.fabric, sew_options, &sdf);
         const std::size_t n = std::size_t(std::ceil(o.sewing.sew_seconds / frame));
         Progress progress("dress: sewing", n);
+        // Each frame's targets against the last: a target that jumps (more than a stitch pull
+        // moves in a frame) makes a hard pull, and is named when the sewing blows up.
+        std::map<std::uint32_t, Vec3> previous;
         for (std::size_t f = 0; f < n; ++f) {
             const double sigma = double(f + 1) / double(n);
-            sew.set_attachments(
-                sewing_targets(plan, sigma, o.sewing.compliance, &sdf, o.sewing.string_offset_mm));
-            last = sew.step();
+            const std::vector<Attachment> targets =
+                sewing_targets(plan, sigma, o.sewing.compliance, &sdf, o.sewing.string_offset_mm);
+            double jump = 0;
+            std::uint32_t jumper = 0;
+            for (const Attachment& at : targets) {
+                const auto it = previous.find(at.vertex);
+                if (it != previous.end()) {
+                    const double dj = vec3::norm(vec3::sub(at.target, it->second));
+                    if (dj > jump) {
+                        jump = dj;
+                        jumper = at.vertex;
+                    }
+                }
+                previous[at.vertex] = at.target;
+            }
+            sew.set_attachments(targets);
+            try {
+                last = sew.step();
+            } catch (const SolverFailure& e) {
+                throw SolverFailure(std::string("sewing ") + e.what() +
+                                    " (largest move of a pull target into this frame: " +
+                                    std::to_string(int(std::lround(jump))) + " mm, vertex " +
+                                    std::to_string(jumper) + ")");
+            }
             ++frames;
             progress.note("t " + std::to_string(last.simulated_seconds).substr(0, 5) +
                           " s, moving " + std::to_string(int(100 * last.moving_fraction)) + " %");
