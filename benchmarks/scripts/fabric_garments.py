@@ -13,6 +13,7 @@ usage: fabric_garments.py TAPELINE DATA_DIR OUT.md [--body FILE] [--pattern NAME
 import argparse
 import json
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -146,6 +147,8 @@ def main():
     with open(a.out, "w") as fh:
         fh.write("\n".join(lines))
     print("\n".join(lines))
+    if not a.keep:
+        shutil.rmtree(work)
 
 
 if __name__ == "__main__":

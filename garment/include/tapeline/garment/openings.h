@@ -19,7 +19,6 @@
 #include <CGAL/convex_hull_2.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -61,22 +60,6 @@ inline int closed_peaks(const std::vector<double>& v, double hysteresis) {
         }
     }
     return peaks;
-}
-
-/// Distance from `p` to the closed polygon `hull` (its edges), 2D.
-inline double distance_to_polygon(const std::array<double, 2>& p,
-                                  const std::vector<std::array<double, 2>>& hull) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-        const auto& a = hull[i];
-        const auto& b = hull[(i + 1) % hull.size()];
-        const double ex = b[0] - a[0], ey = b[1] - a[1];
-        const double len2 = ex * ex + ey * ey;
-        double t = len2 > 0 ? ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / len2 : 0;
-        t = std::clamp(t, 0.0, 1.0);
-        best = std::min(best, std::hypot(p[0] - a[0] - t * ex, p[1] - a[1] - t * ey));
-    }
-    return best;
 }
 
 }  // namespace internal
@@ -170,28 +153,27 @@ inline std::vector<Opening> garment_openings(const std::vector<Vec3>& x,
         const Vec3 helper = std::abs(o.normal[0]) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
         const Vec3 u = vec3::normalized(vec3::cross(helper, o.normal));
         const Vec3 v = vec3::cross(o.normal, u);
-        std::vector<std::array<double, 2>> flat(n);
         std::vector<K::Point_2> pts;
         for (std::size_t i = 0; i < n; ++i) {
             const Vec3 d = vec3::sub(x[o.loop[i]], c);
-            flat[i] = {vec3::dot(d, u), vec3::dot(d, v)};
-            pts.emplace_back(flat[i][0], flat[i][1]);
+            pts.emplace_back(vec3::dot(d, u), vec3::dot(d, v));
         }
-        std::vector<K::Point_2> hull_pts;
-        CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull_pts));
-        std::vector<std::array<double, 2>> hull;
-        for (const auto& p : hull_pts) {
-            hull.push_back({p.x(), p.y()});
-        }
+        std::vector<K::Point_2> hull;
+        CGAL::convex_hull_2(pts.begin(), pts.end(), std::back_inserter(hull));
+        std::vector<K::Segment_2> sides;
         for (std::size_t i = 0; i < hull.size(); ++i) {
-            const auto& a = hull[i];
-            const auto& b = hull[(i + 1) % hull.size()];
-            o.hull_perimeter_mm += std::hypot(b[0] - a[0], b[1] - a[1]);
+            sides.emplace_back(hull[i], hull[(i + 1) % hull.size()]);
+            o.hull_perimeter_mm += std::sqrt(sides.back().squared_length());
         }
+        // Depth: distance to the hull's sides (every point lies inside or on the hull).
         std::vector<double> depth(n, 0);
         if (hull.size() >= 3) {
             for (std::size_t i = 0; i < n; ++i) {
-                depth[i] = internal::distance_to_polygon(flat[i], hull);
+                double best = std::numeric_limits<double>::infinity();
+                for (const K::Segment_2& side : sides) {
+                    best = std::min(best, CGAL::squared_distance(pts[i], side));
+                }
+                depth[i] = std::sqrt(best);
             }
         }
         o.deepest_fold_mm = n ? *std::max_element(depth.begin(), depth.end()) : 0;
