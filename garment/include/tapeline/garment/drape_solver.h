@@ -1397,7 +1397,6 @@ inline void DrapeSolver::update_tethers() {
 
 inline void DrapeSolver::detect_self_contacts() {
     using namespace tapeline::vec3;
-    const std::size_t n = x_.size();
     vertex_hash_.build(p_, hash_cell_);
     const internal::PointHash& hash = vertex_hash_;
     const double thickness = fabric_.thickness_mm;
