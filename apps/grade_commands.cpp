@@ -46,21 +46,21 @@ namespace tapeline::app {
 namespace {
 
 namespace tp = tapeline::pattern;
-namespace tg = tapeline::grading;
+namespace tgr = tapeline::grading;
 
 struct GradeArgs {
     std::string pattern, format = "auto", db, from, to, from_set, to_set;
     std::string out, svg, dxf, pareto, rules, rul, report, fit_table, compare;
     std::string base_body, base_units, base_up = "+Y", base_front = "+Z", bindings, bindings_out;
     // Defaults read from the library's options.
-    std::string ease = tg::to_string(tg::GradingOptions{}.ease);
-    bool store = false, replace = false, no_polish = !tg::GradingOptions{}.ceres_polish;
+    std::string ease = tgr::to_string(tgr::GradingOptions{}.ease);
+    bool store = false, replace = false, no_polish = !tgr::GradingOptions{}.ceres_polish;
     bool no_fs_bindings = false;
-    std::uint32_t seed = tg::GradingOptions{}.seed;
-    std::size_t population = tg::GradingOptions{}.population;
-    std::size_t generations = tg::GradingOptions{}.generations;
-    std::size_t threads = tg::GradingOptions{}.threads;
-    double max_target_ratio = tg::GradingOptions{}.max_target_ratio;
+    std::uint32_t seed = tgr::GradingOptions{}.seed;
+    std::size_t population = tgr::GradingOptions{}.population;
+    std::size_t generations = tgr::GradingOptions{}.generations;
+    std::size_t threads = tgr::GradingOptions{}.threads;
+    double max_target_ratio = tgr::GradingOptions{}.max_target_ratio;
 };
 
 std::string extension(const std::string& path) {
@@ -76,7 +76,7 @@ std::string extension(const std::string& path) {
     return e;
 }
 
-tp::Pattern load(const GradeArgs& a) {
+tp::Pattern load_pattern(const GradeArgs& a) {
     if (is_file(a.pattern)) {
         return tp::read_pattern_file(a.pattern, a.format, nullptr);
     }
@@ -115,7 +115,7 @@ void run_grade(const GradeArgs& a) {
     }
     OutputFiles outputs(
         {a.out, a.svg, a.dxf, a.pareto, a.rules, a.rul, a.report, a.fit_table, a.bindings_out});
-    tp::Pattern base = load(a);
+    tp::Pattern base = load_pattern(a);
     tp::require_valid(base);
     sizes::MeasurementSet from;
     std::vector<std::string> inferred;  // how each inferred binding was found
@@ -142,15 +142,15 @@ void run_grade(const GradeArgs& a) {
             std::cerr << "tapeline: warning: " << why << "; '" << name << "' left out\n";
         }
     }
-    tg::GradingOptions o;
+    tgr::GradingOptions o;
     o.seed = a.seed;
     o.population = a.population;
     o.generations = a.generations;
     o.threads = a.threads;
     o.max_target_ratio = a.max_target_ratio;
     o.ceres_polish = !a.no_polish;
-    o.ease = a.ease == "keep_mm" ? tg::EaseMode::keep_mm : tg::EaseMode::proportional;
-    tg::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
+    o.ease = a.ease == "keep_mm" ? tgr::EaseMode::keep_mm : tgr::EaseMode::proportional;
+    tgr::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
     for (const std::string& line : inferred) {
         g.report.notes.push_back("binding: " + line);
     }
@@ -176,17 +176,17 @@ void run_grade(const GradeArgs& a) {
         render(a.dxf, ".dxf");
     }
     if (!a.pareto.empty()) {
-        const std::vector<std::uint8_t> png = tg::pareto_png(g.report);
+        const std::vector<std::uint8_t> png = tgr::pareto_png(g.report);
         files.push_back({a.pareto, std::string(png.begin(), png.end())});
     }
     if (!a.rules.empty()) {
-        files.push_back({a.rules, tg::rules_json(g, from.name, to.name).dump(1) + "\n"});
+        files.push_back({a.rules, tgr::rules_json(g, from.name, to.name).dump(1) + "\n"});
     }
     if (!a.rul.empty()) {
-        files.push_back({a.rul, tg::rul_table(g, from.name, to.name)});
+        files.push_back({a.rul, tgr::rul_table(g, from.name, to.name)});
     }
     if (!a.report.empty()) {
-        files.push_back({a.report, tg::report_json(g.report).dump(1) + "\n"});
+        files.push_back({a.report, tgr::report_json(g.report).dump(1) + "\n"});
     }
     if (!a.compare.empty()) {
         // Validation against a reference draft of the target size (benchmarks/run_grading.sh):
@@ -194,7 +194,7 @@ void run_grade(const GradeArgs& a) {
         // the ratio of the reference perimeter to its own (an oracle: it needs the answer).
         GradeArgs ra = a;
         ra.pattern = a.compare;
-        const tp::Pattern ref = load(ra);
+        const tp::Pattern ref = load_pattern(ra);
         nlohmann::json c = nlohmann::json::array();
         for (const tp::Piece& rp : ref.pieces) {
             const tp::Piece* bp = tp::find_piece(base, rp.name);
@@ -203,10 +203,10 @@ void run_grade(const GradeArgs& a) {
                 continue;
             }
             const double s = tp::length(rp.outline) / tp::length(bp->outline);
-            const tg::PieceDeviation dg = tg::outline_deviation(rp.outline, gp->outline);
-            const tg::PieceDeviation du = tg::outline_deviation(rp.outline, bp->outline);
-            const tg::PieceDeviation ds =
-                tg::outline_deviation(rp.outline, tg::scaled_piece(*bp, s).outline);
+            const tgr::PieceDeviation dg = tgr::outline_deviation(rp.outline, gp->outline);
+            const tgr::PieceDeviation du = tgr::outline_deviation(rp.outline, bp->outline);
+            const tgr::PieceDeviation ds =
+                tgr::outline_deviation(rp.outline, tgr::scaled_piece(*bp, s).outline);
             c.push_back({{"piece", rp.name},
                          {"graded_mean_mm", dg.mean_mm},
                          {"graded_max_mm", dg.max_mm},
@@ -215,7 +215,7 @@ void run_grade(const GradeArgs& a) {
                          {"uniform_oracle_mean_mm", ds.mean_mm},
                          {"uniform_oracle_max_mm", ds.max_mm}});
         }
-        nlohmann::json rep = tg::report_json(g.report);
+        nlohmann::json rep = tgr::report_json(g.report);
         rep["comparison"] = c;
         rep["pattern"] = base.name;
         rep["from"] = from.name;
@@ -226,14 +226,14 @@ void run_grade(const GradeArgs& a) {
         }
     }
     if (!a.fit_table.empty()) {
-        files.push_back({a.fit_table, tg::fit_table(g.report)});
+        files.push_back({a.fit_table, tgr::fit_table(g.report)});
     }
     if (!a.bindings_out.empty()) {
         // The bindings graded with (inferred, given, or the pattern's own and FreeSewing's
         // table), on the base pattern's points.
         tp::Pattern bound = base;
         if (!a.no_fs_bindings && bound.designer == "FreeSewing") {
-            tg::add_freesewing_bindings(bound);
+            tgr::add_freesewing_bindings(bound);
         }
         files.push_back({a.bindings_out, tp::bindings_file_json(bound).dump(1) + "\n"});
     }
@@ -255,7 +255,7 @@ void run_grade(const GradeArgs& a) {
     std::cout << "graded " << base.name << " from " << from.name << " to " << to.name << ": "
               << g.report.fit.size() << " bindings, " << g.report.seams.size() << " seams, "
               << g.report.front.size() << " candidates, " << g.report.timings.total_s << " s\n"
-              << tg::fit_table(g.report) << "chosen: " << g.report.chosen << " ("
+              << tgr::fit_table(g.report) << "chosen: " << g.report.chosen << " ("
               << g.report.chosen_why << ")\nstyle: max angle change "
               << g.report.style.max_angle_change_deg << " deg, max curve change "
               << g.report.style.max_curve_change << ", proportion spread "

@@ -21,7 +21,7 @@ using tapeline::garment::SignedDistanceGrid;
 using tapeline::garment::Vec3;
 using tapeline_test::GarmentTriMesh;
 
-constexpr double kPi = 3.14159265358979323846;
+using tapeline_test::kPi;
 
 double norm(const Vec3& v) {
     return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

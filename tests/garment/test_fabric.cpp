@@ -8,6 +8,7 @@
 #include <tapeline_test/expect.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/fabric_records.h>
 #include <tapeline_test/garment_shapes.h>
 
 #include <cmath>
@@ -21,10 +22,10 @@ namespace {
 using tapeline_test::message_of;
 
 namespace tg = tapeline::garment;
+using tapeline_test::kPi;
 using tg::ClothModel;
 using tg::UV;
 using tg::Vec3;
-constexpr double kPi = 3.14159265358979323846;
 
 // Units: 1 gf = 9.80665e-3 N (standard gravity), so 1 gf·cm²/cm = 9.80665e-3·1e-4/1e-2 N·m and
 // 1 gf/(cm·deg) = 0.980665 N/m per (π/180 rad).
@@ -47,11 +48,7 @@ TEST(GarmentFabricLab, UnitConversions) {
     EXPECT_NEAR(tg::secant_stiffness_n_m(5, 1.0), 490.3325, 1e-9);
 }
 
-nlohmann::json fast_record() {
-    return {{"W", 168},         {"C_warp", 15},     {"C_weft", 12},   {"E5_warp", 0.67},
-            {"E20_warp", 1.87}, {"E100_warp", 4.9}, {"E5_weft", 0.9}, {"E20_weft", 2.6},
-            {"E100_weft", 6.8}, {"EB5", 4.7},       {"T2", 0.62},     {"T100", 0.51}};
-}
+using tapeline_test::fast_record;
 
 nlohmann::json kes_record() {
     nlohmann::json j = {{"W", 16.8}};

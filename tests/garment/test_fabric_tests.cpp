@@ -7,6 +7,7 @@
 #include <tapeline/garment/fabric_tests.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/fabric_records.h>
 
 #include <cmath>
 #include <string>
@@ -61,11 +62,7 @@ TEST(GarmentFabricTests, CantileverGivesTheBendingLength) {
     EXPECT_NEAR(warp.bending_length_mm / weft.bending_length_mm, cw / cf, 0.02 * cw / cf);
 }
 
-nlohmann::json fast_record() {
-    return {{"W", 168},         {"C_warp", 15},     {"C_weft", 12},   {"E5_warp", 0.67},
-            {"E20_warp", 1.87}, {"E100_warp", 4.9}, {"E5_weft", 0.9}, {"E20_weft", 2.6},
-            {"E100_weft", 6.8}, {"EB5", 4.7},       {"T2", 0.62},     {"T100", 0.51}};
-}
+using tapeline_test::fast_record;
 
 // Tensile strip at 20 mm: with the secant stiffness of each load the strain is the record's E5,
 // E20, E100 within 1 % (the solver's stretch constraint is linear in the stretch, so strain =

@@ -4,6 +4,7 @@
 #include <tapeline/garment/openings.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/garment_shapes.h>
 
 #include <cmath>
 #include <functional>
@@ -13,7 +14,7 @@ namespace tg = tapeline::garment;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using tapeline_test::kPi;
 
 /// A tube of `rings` rings of `n` vertices: ring j (0 at the top) is the curve
 /// rim(j, θ) for θ = 2πi/n. Quads split along one diagonal.

@@ -16,6 +16,8 @@ using tapeline::garment::Tri;
 using tapeline::garment::UV;
 using tapeline::garment::Vec3;
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 struct GarmentTriMesh {
     std::vector<Vec3> points;
     std::vector<Tri> triangles;
