@@ -65,7 +65,7 @@ SIZES = {
         synthetic=["body:40,10", "body:96,4"], population="dev",
         grading=[(d, a, b) for d in ("aaron", "brian", "simon", "teagan", "titan")
                  for a, b in (("36", "42"), ("42", "36"))],
-        drape=(["gc_shirt", "fs_teagan"], 30), drape_body="mh_female_average",
+        drape=(["gc_shirt", "fs_teagan"], 20), drape_body="mh_female_average",
         fabrics="all", fabric_tests=[("cantilever", 20), ("cantilever", 10), ("tensile", 5),
                                      ("bias", 5), ("cusick", 20), ("cusick", 10)],
         wrinkles=dict(bending=[0.5, 2, 8, 32], resolution=2.5),
