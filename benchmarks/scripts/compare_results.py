@@ -7,8 +7,8 @@ usage: compare_results.py A B [--show N]
 Compared: the set of files; every Markdown table of every .md file, cell by cell, except the
 columns whose heading names a timing or memory quantity (time, timing, seconds, s, wall, RSS, MB, KB,
 ms/..., and the exponents fitted to times: k query, R² query, k pre+query); every .json and .jsonl file, value by value, except keys naming timings, memory or dates
-(*seconds*, timings*, wall*, *rss*, timestamp, ms_per*, date). Text outside tables (provenance,
-dates, wall time) and the pixels of the plots are not compared; a PNG must exist in both.
+(*seconds*, timings*, wall*, *rss*, timestamp, ms_per*, date) and the revision a line was made by
+(git: two revisions can be compared). Text outside tables (provenance, dates, wall time) and the pixels of the plots are not compared; a PNG must exist in both.
 Prints every difference (the first N, default 20) and exits 0 when there is none, 1 when there
 are some, 2 on a usage error (one line on stderr).
 """
@@ -22,7 +22,7 @@ PROG = "compare_results.py"
 # bench_report.py's scaling table: "k query", "R² query", "k pre+query" are fitted to timings.
 VOLATILE_COLUMN = re.compile(r"time|timing|seconds|\bs\b|wall|rss|\bmb\b|\bkb\b|ms/|date|timestamp|"
                              r"^k query|^k pre|^r² query", re.IGNORECASE)
-VOLATILE_KEY = re.compile(r"seconds|^timings|^wall|rss|timestamp|^ms_per|^date$|^time$",
+VOLATILE_KEY = re.compile(r"seconds|^timings|^wall|rss|timestamp|^ms_per|^date$|^time$|^git$",
                           re.IGNORECASE)
 
 

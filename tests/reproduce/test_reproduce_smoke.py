@@ -7,6 +7,7 @@ changed figure and ignores a changed timing.
 
 usage: test_reproduce_smoke.py TAPELINE SOURCE_DIR WORK_DIR
 """
+import json
 import os
 import re
 import shutil
@@ -127,6 +128,21 @@ class Reproduce(unittest.TestCase):
                 f.write("\n".join(lines))
             p = subprocess.run([COMPARE, self.smoke, copy], capture_output=True, text=True)
             with self.subTest(column=column):
+                self.assertEqual(p.returncode, expect, p.stdout)
+        # In the JSON lines: the revision that made a line is ignored, a changed error is not.
+        for key, expect in (("git", 0), ("mean_rel_error", 1)):
+            copy = os.path.join(WORK, "copy_json_" + key)
+            shutil.rmtree(copy, ignore_errors=True)
+            shutil.copytree(self.smoke, copy)
+            js = os.path.join(copy, "results", "exact_mmp", "exact_mmp.jsonl")
+            with open(js, encoding="utf-8") as f:
+                lines = [json.loads(line) for line in f if line.strip()]
+            line = next(x for x in lines if key in x and isinstance(x[key], (str, float)))
+            line[key] = line[key] + ("x" if isinstance(line[key], str) else 0.5)
+            with open(js, "w", encoding="utf-8") as f:
+                f.write("".join(json.dumps(x) + "\n" for x in lines))
+            p = subprocess.run([COMPARE, self.smoke, copy], capture_output=True, text=True)
+            with self.subTest(key=key):
                 self.assertEqual(p.returncode, expect, p.stdout)
 
     def test_failing_part(self):
