@@ -41,6 +41,29 @@ def sections(text):
     return {p.split("\n", 1)[0]: p for p in parts[1:]}
 
 
+def edit_table(md, column):
+    """Append a digit to the first row's cell of the column whose heading contains COLUMN."""
+    with open(md, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    lineno, header, rows = compare_results.tables(md)[0]
+    k = next(i for i, h in enumerate(header) if column in h)
+    n, cells = rows[0]
+    cells[k] = cells[k] + "9"
+    lines[n - 1] = "| " + " | ".join(cells) + " |"
+    with open(md, "w", encoding="utf-8") as f:
+        f.write("\n".join(lines))
+
+
+def edit_jsonl(js, key):
+    """Change KEY's value (a string or a number) in the first JSON line that has it."""
+    with open(js, encoding="utf-8") as f:
+        lines = [json.loads(line) for line in f if line.strip()]
+    line = next(x for x in lines if key in x and isinstance(x[key], (str, float)))
+    line[key] = line[key] + ("x" if isinstance(line[key], str) else 0.5)
+    with open(js, "w", encoding="utf-8") as f:
+        f.write("".join(json.dumps(x) + "\n" for x in lines))
+
+
 class Reproduce(unittest.TestCase):
     smoke = os.path.join(WORK, "smoke")
     result = None
@@ -113,37 +136,22 @@ class Reproduce(unittest.TestCase):
         self.assertEqual(same.returncode, 0, same.stdout)
         # A changed timing is ignored, a changed figure is not.
         for column, expect in (("time", 0), ("err", 1)):
-            copy = os.path.join(WORK, "copy_" + column)
-            shutil.rmtree(copy, ignore_errors=True)
-            shutil.copytree(self.smoke, copy)
-            md = os.path.join(copy, "results", "exact_mmp", "table.md")
-            with open(md, encoding="utf-8") as f:
-                lines = f.read().split("\n")
-            lineno, header, rows = compare_results.tables(md)[0]
-            k = next(i for i, h in enumerate(header) if column in h)
-            n, cells = rows[0]
-            cells[k] = cells[k] + "9"
-            lines[n - 1] = "| " + " | ".join(cells) + " |"
-            with open(md, "w", encoding="utf-8") as f:
-                f.write("\n".join(lines))
-            p = subprocess.run([COMPARE, self.smoke, copy], capture_output=True, text=True)
             with self.subTest(column=column):
-                self.assertEqual(p.returncode, expect, p.stdout)
+                self.assertEqual(self.compare_edited("table.md", column, edit_table), expect)
         # In the JSON lines: the revision that made a line is ignored, a changed error is not.
         for key, expect in (("git", 0), ("mean_rel_error", 1)):
-            copy = os.path.join(WORK, "copy_json_" + key)
-            shutil.rmtree(copy, ignore_errors=True)
-            shutil.copytree(self.smoke, copy)
-            js = os.path.join(copy, "results", "exact_mmp", "exact_mmp.jsonl")
-            with open(js, encoding="utf-8") as f:
-                lines = [json.loads(line) for line in f if line.strip()]
-            line = next(x for x in lines if key in x and isinstance(x[key], (str, float)))
-            line[key] = line[key] + ("x" if isinstance(line[key], str) else 0.5)
-            with open(js, "w", encoding="utf-8") as f:
-                f.write("".join(json.dumps(x) + "\n" for x in lines))
-            p = subprocess.run([COMPARE, self.smoke, copy], capture_output=True, text=True)
             with self.subTest(key=key):
-                self.assertEqual(p.returncode, expect, p.stdout)
+                self.assertEqual(self.compare_edited("exact_mmp.jsonl", key, edit_jsonl), expect)
+
+    def compare_edited(self, name, what, edit):
+        """compare_results.py's exit code between the smoke run and a copy of it whose
+        results/exact_mmp/NAME had WHAT changed by edit(path, what)."""
+        copy = os.path.join(WORK, "copy_%s_%s" % (name, what))
+        shutil.rmtree(copy, ignore_errors=True)
+        shutil.copytree(self.smoke, copy)
+        edit(os.path.join(copy, "results", "exact_mmp", name), what)
+        p = subprocess.run([COMPARE, self.smoke, copy], capture_output=True, text=True)
+        return p.returncode
 
     def test_failing_part(self):
         # A tool whose `fabric` command fails: that part is reported, the command exits 1.
