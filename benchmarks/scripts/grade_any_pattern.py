@@ -114,6 +114,14 @@ def main():
     write(rows, a, base)
 
 
+def bound_list(names):
+    """The bound measurements in order, a measurement bound per piece once with its count."""
+    counts = {}
+    for n in names:
+        counts[n] = counts.get(n, 0) + 1
+    return ", ".join(n if c == 1 else "%s ×%d" % (n, c) for n, c in counts.items())
+
+
 def write(rows, a, base):
     ok = [r for r in rows if r["exit"] == 0]
     lines = ["# Grading patterns without bindings: girths found on the base body",
@@ -128,7 +136,7 @@ def write(rows, a, base):
     for r in rows:
         if r["exit"] == 0:
             lines.append("| %s | %s | %s | %.2f | %.2f | %.2f | %.2f | %.1f |" % (
-                r["pattern"], r["body"], ", ".join(r["bound"]), r["fit"], r["seam"], r["angle"],
+                r["pattern"], r["body"], bound_list(r["bound"]), r["fit"], r["seam"], r["angle"],
                 r["check"], r["seconds"]))
         else:
             lines.append("| %s | %s | refused: %s | | | | | %.1f |" % (

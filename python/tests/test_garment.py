@@ -137,7 +137,8 @@ def test_bindings_found_on_the_body_equal_the_command_line(cli, body, tmp_path):
     found, base, notes = tapeline.bindings_from_body(V, F, shirt, units="dm")
     assert [b["measurement"] for b in found["bindings"]] == [
         "bust_girth", "underbust_girth", "waist_girth", "high_hip_girth", "upper_arm_girth",
-        "elbow_girth"]
+        "elbow_girth"] + ["hps_to_waist_back"] * 2 + ["waist_to_armpit"] * 4 + \
+        ["waist_to_high_hip"] * 4
     assert any(n.startswith("hip_girth: not bound") for n in notes)
     target = {k: v * 1.05 for k, v in base.items()}
     json.dump(target, open(tmp_path / "t.json", "w"))

@@ -796,8 +796,10 @@ base = {e["name"]: e["value_mm"] for e in json.load(open("base_m.json"))["measur
 target = {e["name"]: e["value_mm"] for e in json.load(open("target_m.json"))["measurements"]}
 pieces = {p["name"]: p for p in g["pieces"]}
 names = [x["measurement"] for x in b["bindings"]]
+# The girths, then the lengths one per piece (two back and two front panels).
 assert names == ["bust_girth", "underbust_girth", "waist_girth", "high_hip_girth",
-                 "upper_arm_girth", "elbow_girth"], names
+                 "upper_arm_girth", "elbow_girth"] + ["hps_to_waist_back"] * 2 + \
+    ["waist_to_armpit"] * 4 + ["waist_to_high_hip"] * 4, names
 for x in b["bindings"]:
     got = 0
     for f in x["features"]:

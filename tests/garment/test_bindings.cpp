@@ -13,7 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace tg = tapeline::garment;
@@ -53,6 +56,26 @@ double segment_distance(const tp::Point2& a, const tp::Point2& b, const tp::Poin
     return std::hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
 }
 
+/// Whether a found binding is a girth (its points are named girth:...), not a length.
+bool is_girth(const tp::MeasurementBinding& b) {
+    return b.features.front().from_point.rfind("girth:", 0) == 0;
+}
+
+/// The FreeSewing design `name` of ../shared/data; empty when the data is absent.
+std::string freesewing(const std::string& name) {
+    const std::filesystem::path p = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) / "patterns" /
+                                    "freesewing" / (name + ".json");
+    return std::filesystem::exists(p) ? p.string() : std::string();
+}
+
+/// Whether some note starts with `prefix` and holds `part`.
+bool has_note(const std::vector<std::string>& notes, const std::string& prefix,
+              const std::string& part = "") {
+    return std::any_of(notes.begin(), notes.end(), [&](const std::string& n) {
+        return n.rfind(prefix, 0) == 0 && n.find(part) != std::string::npos;
+    });
+}
+
 const tg::BindingInference& shirt_on_bundled_body(const MeasuredBody*& body) {
     static const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     static const tg::BindingInference inf = tg::infer_girth_bindings(
@@ -82,6 +105,9 @@ TEST(GarmentBindings, ShirtGirthsAreTheSectionsOfThePlacedGarment) {
     const tg::DressResult placed = tg::dress(b->body, b->landmarks, shirt, o);
     std::vector<std::string> bound;
     for (const tp::MeasurementBinding& g : inf.pattern.bindings) {
+        if (!is_girth(g)) {
+            continue;  // the lengths: LengthsRunBetweenTheLevelsAndEndOnFreeSewingsOwnPoints
+        }
         bound.push_back(g.measurement);
         if (g.features.front().piece.find("sleeve") != std::string::npos) {
             continue;  // the arm girths: SleeveGirthsAtTheBodysDistanceFromTheShoulderPoint
@@ -134,7 +160,7 @@ TEST(GarmentBindings, TankTopHalvesCountTwiceAndAnOpenLevelIsNoGirth) {
     for (const tp::MeasurementBinding& g : inf.pattern.bindings) {
         hips = hips || g.measurement == "hips";
         for (const tp::BoundFeature& f : g.features) {
-            EXPECT_EQ(f.count, 2.0) << g.measurement << " on " << f.piece;
+            EXPECT_EQ(f.count, is_girth(g) ? 2.0 : 1.0) << g.measurement << " on " << f.piece;
         }
     }
     for (const std::string& n : inf.notes) {
@@ -168,13 +194,14 @@ TEST(GarmentBindings, BindingsFileRoundTripAndOverride) {
         {"b.json", "has no piece 'no_such_piece'"}, "a point on a missing piece");
 }
 
-// FreeSewing's brian (a body block with long sleeves, one sleeve drafted for both arms): the
+// FreeSewing's brian (a body block with long sleeves, one sleeve drafted for both arms), its
+// declared measurements taken away (a draft that says nothing of the body it was made for): the
 // arm girths cut the sleeve at the distance below the top of its cap (the top of the drafted
 // sleeve) at which the body's girth plane lies from the shoulder point; the span's ends are the
-// outermost crossings of that line with the outline, counted once (one arm), named as FreeSewing
-// names them where the pattern uses the name (wrist); the sleeve there is wider than the arm and
-// no wider than FreeSewing's own biceps line (the sleeve tapers below its cap). A level within
-// the cap, or below the hem of a short sleeve (teagan's wrist), is not bound, saying so.
+// outermost crossings of that line with the outline, counted once (one arm); the sleeve there is
+// wider than the arm and no wider than FreeSewing's own biceps line (the sleeve tapers below its
+// cap). A level within the cap, or below the hem of a short sleeve (teagan's wrist), is not
+// bound, saying so.
 TEST(GarmentBindings, SleeveGirthsAtTheBodysDistanceFromTheShoulderPoint) {
     const std::filesystem::path dir =
         std::filesystem::path(TAPELINE_SHARED_DATA_DIR) / "patterns" / "freesewing";
@@ -183,9 +210,10 @@ TEST(GarmentBindings, SleeveGirthsAtTheBodysDistanceFromTheShoulderPoint) {
     }
     const MeasuredBody* b = nullptr;
     shirt_on_bundled_body(b);
-    const tg::BindingInference inf = tg::infer_girth_bindings(
-        b->body, b->landmarks, b->measurements,
-        tp::read_pattern_file((dir / "brian_cisFemaleAdult36.json").string()));
+    tp::Pattern brian = tp::read_pattern_file((dir / "brian_cisFemaleAdult36.json").string());
+    brian.measurements_used.clear();
+    const tg::BindingInference inf =
+        tg::infer_girth_bindings(b->body, b->landmarks, b->measurements, brian);
     const tp::Piece* sleeve = tp::find_piece(inf.pattern, "library.sleeve");
     ASSERT_NE(sleeve, nullptr);
     const std::vector<tp::Point2> ring = tp::sample(sleeve->outline, 0.05).points;
@@ -195,18 +223,15 @@ TEST(GarmentBindings, SleeveGirthsAtTheBodysDistanceFromTheShoulderPoint) {
     }
     std::vector<std::string> bound;
     for (const tp::MeasurementBinding& g : inf.pattern.bindings) {
-        if (g.features.front().piece != "library.sleeve") {
+        if (g.features.front().piece != "library.sleeve" || !is_girth(g)) {
             continue;
         }
         bound.push_back(g.measurement);
         ASSERT_EQ(g.features.size(), 1u) << g.measurement;
         const tp::BoundFeature& f = g.features.front();
         EXPECT_EQ(f.count, 1.0) << g.measurement << ": one sleeve per arm";
-        const std::string ours = g.measurement == "biceps"  ? "upper_arm_girth"
-                                 : g.measurement == "wrist" ? "wrist_girth"
-                                                            : g.measurement;
-        const tmeas::Measurement* arm = b->measurements.find(ours);  // the base set's value
-        ASSERT_NE(arm, nullptr) << ours;
+        const tmeas::Measurement* arm = b->measurements.find(g.measurement);  // the base value
+        ASSERT_NE(arm, nullptr) << g.measurement;
         const tg::Vec3 acromion =
             *b->landmarks.point(arm->plane_point[0] > 0 ? "acromion_left" : "acromion_right");
         const tg::Vec3 d{arm->plane_point[0] - acromion[0], arm->plane_point[1] - acromion[1],
@@ -235,7 +260,7 @@ TEST(GarmentBindings, SleeveGirthsAtTheBodysDistanceFromTheShoulderPoint) {
         EXPECT_LE(width, std::hypot(r.x - l.x, r.y - l.y) + 0.5) << g.measurement;
         EXPECT_LT(y, l.y) << g.measurement << ": below the cap";
     }
-    EXPECT_EQ(bound, (std::vector<std::string>{"elbow_girth", "wrist"}));
+    EXPECT_EQ(bound, (std::vector<std::string>{"elbow_girth", "wrist_girth"}));
     // The upper arm's level (midway between armpit and elbow) lies higher on the arm than the
     // bottom of this sleeve's cap (its armhole is dropped below the armpit): the tape would cross
     // the cap, which is sewn to the bodice, not to a sleeve.
@@ -246,9 +271,10 @@ TEST(GarmentBindings, SleeveGirthsAtTheBodysDistanceFromTheShoulderPoint) {
     }
     EXPECT_TRUE(cap_note);
 
-    const tg::BindingInference tshirt = tg::infer_girth_bindings(
-        b->body, b->landmarks, b->measurements,
-        tp::read_pattern_file((dir / "teagan_cisFemaleAdult36.json").string()));
+    tp::Pattern teagan = tp::read_pattern_file((dir / "teagan_cisFemaleAdult36.json").string());
+    teagan.measurements_used.clear();
+    const tg::BindingInference tshirt =
+        tg::infer_girth_bindings(b->body, b->landmarks, b->measurements, teagan);
     bool wrist_note = false;
     for (const std::string& n : tshirt.notes) {
         wrist_note = wrist_note || n.rfind("wrist_girth: not bound (no sleeve reaches", 0) == 0;
@@ -271,4 +297,221 @@ TEST(GarmentBindings, NoTorsoPieceIsRefused) {
     tapeline_test::expect_error<tapeline::InvalidInput>(
         [&] { tg::infer_girth_bindings(b->body, b->landmarks, b->measurements, sleeves); },
         {"no binding was found: give the bindings (--bindings)"}, "sleeves alone");
+}
+
+// A draft that declares the measurements it was drafted for (FreeSewing's `measurements`) is
+// bound on those alone, each eased against its declared value, and its levels are where the
+// declared lengths put them below the layout's top (each torso piece's highest point: the waist
+// at the declared back length, the high hip the declared waist-to-hip length below it), not
+// where this body (smaller than the draft's size) has them. Checked against FreeSewing's own
+// drafted lines: aaron's hip line (cbHips–hips) and brian's wrist line (wristLeft–wristRight, at
+// the sleeve's hem: the declared arm length reaches it).
+TEST(GarmentBindings, DeclaredMeasurementsPutTheLevelsWhereTheDraftHasThem) {
+    const std::string aaron_path = freesewing("aaron_cisFemaleAdult36");
+    const std::string brian_path = freesewing("brian_cisFemaleAdult36");
+    const std::string teagan_path = freesewing("teagan_cisFemaleAdult36");
+    if (aaron_path.empty() || brian_path.empty() || teagan_path.empty()) {
+        GTEST_SKIP() << "the FreeSewing drafts of ../shared/data are absent";
+    }
+    const MeasuredBody* b = nullptr;
+    shirt_on_bundled_body(b);
+    const auto top_of = [](const tp::Piece& p) {
+        double ymax = -1e300;
+        for (const tp::Point2& q : tp::sample(p.outline, 0.05).points) {
+            ymax = std::max(ymax, q.y);
+        }
+        return ymax;
+    };
+    const auto span = [](const tp::Piece& p, const std::string& a, const std::string& c) {
+        const tp::Point2 u = p.points.at(a), v = p.points.at(c);
+        return std::hypot(v.x - u.x, v.y - u.y);
+    };
+    for (const std::string& path : {aaron_path, brian_path, teagan_path}) {
+        const tp::Pattern draft = tp::read_pattern_file(path);
+        const tg::BindingInference inf =
+            tg::infer_girth_bindings(b->body, b->landmarks, b->measurements, draft);
+        for (const tp::MeasurementBinding& g : inf.pattern.bindings) {
+            ASSERT_TRUE(draft.measurements_used.count(g.measurement))
+                << draft.name << ": " << g.measurement << " is not declared";
+        }
+        EXPECT_TRUE(has_note(inf.notes, "underbust_girth: not bound (pattern '" + draft.name,
+                             "declares the measurements it was drafted for"))
+            << draft.name;
+        EXPECT_TRUE(has_note(inf.notes, "levels: where the draft's declared lengths put them"));
+    }
+    // teagan: waist and hips, each eased against the declared value, on the declared levels.
+    const tg::BindingInference teagan = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements, tp::read_pattern_file(teagan_path));
+    const auto& declared = teagan.pattern.measurements_used;
+    for (const tp::MeasurementBinding& g : teagan.pattern.bindings) {
+        if (!is_girth(g) || (g.measurement != "waist" && g.measurement != "hips")) {
+            continue;
+        }
+        double garment = 0;
+        for (const tp::BoundFeature& f : g.features) {
+            const tp::Piece& p = *tp::find_piece(teagan.pattern, f.piece);
+            const double below = declared.at("hpsToWaistBack") +
+                                 (g.measurement == "hips" ? declared.at("waistToHips") : 0.0);
+            EXPECT_NEAR(p.points.at(f.from_point).y, top_of(p) - below, 0.01) << f.piece;
+            EXPECT_NEAR(p.points.at(f.to_point).y, top_of(p) - below, 0.01) << f.piece;
+            garment += f.count * span(p, f.from_point, f.to_point);
+        }
+        EXPECT_NEAR(g.ease_mm, garment - declared.at(g.measurement), 1e-6) << g.measurement;
+    }
+    // aaron: the hip girth found equals FreeSewing's own hip line to 0.5 %.
+    const tg::BindingInference aaron = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements, tp::read_pattern_file(aaron_path));
+    double found = 0, drafted = 0;
+    for (const tp::MeasurementBinding& g : aaron.pattern.bindings) {
+        if (g.measurement != "hips") {
+            continue;
+        }
+        for (const tp::BoundFeature& f : g.features) {
+            const tp::Piece& p = *tp::find_piece(aaron.pattern, f.piece);
+            found += f.count * span(p, f.from_point, f.to_point);
+            drafted += 2 * span(p, "cbHips", "hips");
+        }
+    }
+    ASSERT_GT(drafted, 0);
+    EXPECT_NEAR(found, drafted, 0.005 * drafted);
+    // brian: the declared arm length puts the wrist on the sleeve's hem, where FreeSewing draws
+    // its wrist line; the girth there is that line's length to 1 mm.
+    const tg::BindingInference brian = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements, tp::read_pattern_file(brian_path));
+    bool wrist = false;
+    for (const tp::MeasurementBinding& g : brian.pattern.bindings) {
+        if (g.measurement != "wrist") {
+            continue;
+        }
+        wrist = true;
+        const tp::Piece& sleeve = *tp::find_piece(brian.pattern, g.features.front().piece);
+        EXPECT_NEAR(span(sleeve, g.features.front().from_point, g.features.front().to_point),
+                    span(sleeve, "wristLeft", "wristRight"), 1.0);
+    }
+    EXPECT_TRUE(wrist);
+}
+
+// The vertical lengths, one binding per piece: between two levels (aaron's waist to high hip:
+// exactly the declared 130 mm, eased by 0), up the side seam from the waist to its top (ending
+// on FreeSewing's own `armhole` point, the bottom of the armhole), from the top of the back
+// at its centre line (FreeSewing's `cbNeck`) to the waist; down a sleeve that reaches the wrist
+// from the top of its cap (brian: `sleeveTop` to `centerWrist`, the declared 600 mm); a short
+// sleeve (teagan's) is not bound, saying how far above the wrist it ends.
+TEST(GarmentBindings, LengthsRunBetweenTheLevelsAndEndOnFreeSewingsOwnPoints) {
+    const std::string aaron_path = freesewing("aaron_cisFemaleAdult36");
+    const std::string brian_path = freesewing("brian_cisFemaleAdult36");
+    const std::string teagan_path = freesewing("teagan_cisFemaleAdult36");
+    if (aaron_path.empty() || brian_path.empty() || teagan_path.empty()) {
+        GTEST_SKIP() << "the FreeSewing drafts of ../shared/data are absent";
+    }
+    const MeasuredBody* b = nullptr;
+    shirt_on_bundled_body(b);
+    const auto near = [](const tp::Point2& p, const tp::Point2& q, double tol) {
+        return std::hypot(p.x - q.x, p.y - q.y) < tol;
+    };
+    const tg::BindingInference aaron = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements, tp::read_pattern_file(aaron_path));
+    std::map<std::string, int> count;
+    for (const tp::MeasurementBinding& g : aaron.pattern.bindings) {
+        if (is_girth(g)) {
+            continue;
+        }
+        ASSERT_EQ(g.features.size(), 1u) << g.measurement;
+        const tp::BoundFeature& f = g.features.front();
+        EXPECT_EQ(f.count, 1.0);
+        ++count[g.measurement];
+        const tp::Piece& p = *tp::find_piece(aaron.pattern, f.piece);
+        const tp::Point2 lo = p.points.at(f.from_point), hi = p.points.at(f.to_point);
+        const double len = std::hypot(hi.x - lo.x, hi.y - lo.y);
+        EXPECT_NEAR(g.ease_mm, len - aaron.pattern.measurements_used.at(g.measurement), 1e-6);
+        if (g.measurement == "waistToHips") {
+            EXPECT_NEAR(len, 130, 1e-6) << f.piece;
+        } else if (g.measurement == "waistToArmpit") {
+            EXPECT_TRUE(near(hi, p.points.at("armhole"), 0.01))
+                << f.piece << ": " << hi.x << ", " << hi.y;
+        } else if (g.measurement == "hpsToWaistBack") {
+            EXPECT_EQ(f.piece, "aaron.back");
+            EXPECT_TRUE(near(hi, p.points.at("cbNeck"), 1.5)) << hi.x << ", " << hi.y;
+        }
+    }
+    EXPECT_EQ(count, (std::map<std::string, int>{
+                         {"hpsToWaistBack", 1}, {"waistToArmpit", 2}, {"waistToHips", 2}}));
+
+    const tg::BindingInference brian = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements, tp::read_pattern_file(brian_path));
+    bool arm = false;
+    for (const tp::MeasurementBinding& g : brian.pattern.bindings) {
+        if (g.measurement != "shoulderToWrist") {
+            continue;
+        }
+        arm = true;
+        const tp::Piece& p = *tp::find_piece(brian.pattern, g.features.front().piece);
+        const tp::Point2 top = p.points.at(g.features.front().from_point);
+        const tp::Point2 end = p.points.at(g.features.front().to_point);
+        // The line goes through the highest sample of the outline (0.25 mm apart); the cap's top
+        // is flat to 0.04 mm over a millimetre either side of sleeveTop.
+        EXPECT_TRUE(near(top, p.points.at("sleeveTop"), 1.0)) << top.x << ", " << top.y;
+        EXPECT_TRUE(near(end, p.points.at("centerWrist"), 1.0)) << end.x << ", " << end.y;
+        EXPECT_NEAR(g.ease_mm, 0, 0.1);
+    }
+    EXPECT_TRUE(arm);
+    const tg::BindingInference teagan = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements, tp::read_pattern_file(teagan_path));
+    EXPECT_TRUE(has_note(teagan.notes, "shoulder_to_wrist: not bound (the sleeve ends ",
+                         " mm above the wrist"));
+}
+
+// FreeSewing's titan (trousers): its front and back are trouser legs (they carry the fork), which
+// placement does not place yet; with no other piece, no girth goes round the pattern: refused.
+// Pieces that are too narrow to go round the body at a level (aaron's halves made half as wide)
+// make no girth there, saying so.
+TEST(GarmentBindings, TrouserLegsAndPiecesTooNarrowForTheBodyMakeNoGirth) {
+    const std::string titan_path = freesewing("titan_cisFemaleAdult36");
+    const std::string aaron_path = freesewing("aaron_cisFemaleAdult36");
+    if (titan_path.empty() || aaron_path.empty()) {
+        GTEST_SKIP() << "the FreeSewing drafts of ../shared/data are absent";
+    }
+    const MeasuredBody* b = nullptr;
+    shirt_on_bundled_body(b);
+    const tp::Pattern titan = tp::read_pattern_file(titan_path);
+    for (const tp::Piece& p : titan.pieces) {
+        std::string why;
+        EXPECT_FALSE(tg::piece_region(p, why).has_value()) << p.name;
+        EXPECT_NE(why.find("trouser leg"), std::string::npos) << why;
+    }
+    tapeline_test::expect_error<tapeline::InvalidInput>(
+        [&] { tg::infer_girth_bindings(b->body, b->landmarks, b->measurements, titan); },
+        {"titan_cisFemaleAdult36", "no girth of the body goes round", "--bindings"}, "titan");
+
+    tp::Pattern narrow = tp::read_pattern_file(aaron_path);
+    for (tp::Piece& p : narrow.pieces) {
+        const double xf = p.fold ? p.fold->line.a.x : 0;
+        const auto squeeze = [xf](tp::Point2& q) { q.x = xf + 0.5 * (q.x - xf); };
+        for (tp::Edge& e : p.outline.edges) {
+            std::visit(
+                [&](auto& c) {
+                    using C = std::decay_t<decltype(c)>;
+                    if constexpr (std::is_same_v<C, tp::CubicBezier>) {
+                        for (tp::Point2* q : {&c.p0, &c.p1, &c.p2, &c.p3}) {
+                            squeeze(*q);
+                        }
+                    } else {
+                        squeeze(c.a);
+                        squeeze(c.b);
+                    }
+                },
+                e.curve);
+        }
+        if (p.fold) {
+            squeeze(p.fold->line.a);
+            squeeze(p.fold->line.b);
+        }
+    }
+    const tg::BindingInference inf =
+        tg::infer_girth_bindings(b->body, b->landmarks, b->measurements, narrow);
+    EXPECT_TRUE(has_note(inf.notes, "high_hip_girth: not bound (at ",
+                         "mm: they do not go round the body there)"));
+    for (const tp::MeasurementBinding& g : inf.pattern.bindings) {
+        EXPECT_FALSE(is_girth(g)) << g.measurement;
+    }
 }

@@ -92,6 +92,29 @@ BodyBase base_from_mesh(pattern::Pattern pattern, const Mesh& mesh,
         m.body, m.result.landmarks, m.result.measurements, std::move(pattern));
     b.pattern = std::move(inf.pattern);
     b.notes = std::move(inf.notes);
+    // The measurements the pattern declares it was drafted for are its base values (the found
+    // bindings' ease was taken against them; FreeSewing's table bindings take theirs so too);
+    // the body gives the rest. The largest difference says how far the body is from the draft's.
+    std::string widest;
+    double widest_rel = -1;
+    for (const auto& [name, value] : b.pattern.measurements_used) {
+        const std::optional<double> body = b.measurements.get(name);
+        if (body && value > 0 && !sizes::is_angle_measurement(name) &&
+            std::abs(*body - value) / value > widest_rel) {
+            widest_rel = std::abs(*body - value) / value;
+            widest = name + " drafted for " + std::to_string(int(std::lround(value))) +
+                     " mm, the body's " + std::to_string(int(std::lround(*body))) + " mm";
+        }
+        b.measurements.values[name] = value;
+    }
+    if (!b.pattern.measurements_used.empty()) {
+        b.notes.push_back(
+            "base measurements: the " + std::to_string(b.pattern.measurements_used.size()) +
+            " the pattern declares, the body's for the rest" +
+            (widest.empty() ? std::string()
+                            : "; largest difference " + widest + " (" +
+                                  std::to_string(int(std::lround(100 * widest_rel))) + " %)"));
+    }
     return b;
 }
 

@@ -11,7 +11,20 @@
 // girth's binding is the sum of those spans, each counted as often as the piece goes round the
 // body (2 for a half piece cut on the fold, cut_count for pieces cut several times). Its ease is
 // the garment's girth there minus the body's: grading keeps it. The body is the one the pattern
-// was made for (its measurements are the grading's base set).
+// was made for (its measurements are the grading's base set). A pattern that declares the
+// measurements it was drafted for (FreeSewing's `measurements`, in `measurements_used`) binds
+// only those, and its ease is taken against the declared value; its levels are where its
+// declared lengths put them below the layout's top (the high point of the shoulder): the waist
+// at the back length, the high hip and the hip the waist-to-hip lengths below it, other trunk
+// levels scaled with the waist's depth, arm levels with the arm length. The body then only tells
+// how the levels lie in between. A level within kHemReach below a sleeve's end or the trunk's
+// hem (a sleeve drafted to the wrist, a block drafted to the hips) is taken just above it.
+//
+// Vertical lengths bind one per piece (each piece realises the length on its own): the back
+// length from the top of a back piece at its centre line to the waist level, the waist to the
+// high hip and to the hip levels at the centre line, the waist level up the side seam to its top
+// (the bottom of the armhole), and down a sleeve that reaches the wrist from its cap's top to
+// its end. Points `length:<measurement>:<a|b>` mark their ends.
 //
 // Arm girths (upper arm, elbow, wrist) cut the sleeves of one arm the same way, at the distance
 // down the sleeve from the top of its cap at which the body's girth plane lies from the shoulder
@@ -44,6 +57,14 @@ inline const std::vector<std::string>& inferred_girths() {
     return names;
 }
 
+/// The smallest garment girth, as a fraction of the body's, that counts as going round the body.
+inline constexpr double kLeastGirthRatio = 0.75;
+
+/// How far (mm) below a sleeve's end (the trunk's hem) a level may lie and still be taken just
+/// above it: a sleeve drafted to the wrist ends on the wrist's level, a block drafted to the hips
+/// on the hip's.
+inline constexpr double kHemReach = 10;
+
 /// What binding inference found.
 struct BindingInference {
     /// The pattern with the new named points (`girth:<measurement>:<a|b>`) on its pieces and the
@@ -60,11 +81,15 @@ namespace internal {
 struct Crossing {
     pattern::Point2 p;
     double s = 0;
+    double h = 0;
     std::size_t edge = 0;  ///< the outline edge crossed
 };
 
+/// The crossings of the outline with the layout's level h = `y`, or (`vertical`) with its line
+/// s = `y` across the piece.
 inline std::vector<Crossing> outline_crossings(const pattern::Piece& piece, Region region,
-                                               const LayoutHeights& heights, double y) {
+                                               const LayoutHeights& heights, double y,
+                                               bool vertical = false) {
     pattern::PieceMesh samples;
     const pattern::OutlinePolyline line = pattern::sample(piece.outline, 0.25);
     samples.uv = line.points;
@@ -72,17 +97,43 @@ inline std::vector<Crossing> outline_crossings(const pattern::Piece& piece, Regi
         piece_layout(piece, samples, region, heights.top_y, heights.waist_y, heights.gc_shift);
     std::vector<Crossing> out;
     const std::size_t n = samples.uv.size();
+    const std::vector<double>& f = vertical ? l.s : l.h;
     for (std::size_t i = 0; i + 1 < n; ++i) {
-        const double a = l.h[i] - y, b = l.h[i + 1] - y;
+        const double a = f[i] - y, b = f[i + 1] - y;
         if ((a < 0) == (b < 0) || a == b) {
             continue;
         }
         const double t = a / (a - b);
         const pattern::Point2 p{samples.uv[i].x + t * (samples.uv[i + 1].x - samples.uv[i].x),
                                 samples.uv[i].y + t * (samples.uv[i + 1].y - samples.uv[i].y)};
-        out.push_back({p, l.s[i] + t * (l.s[i + 1] - l.s[i]), line.edge_of_point[i + 1]});
+        out.push_back({p, l.s[i] + t * (l.s[i + 1] - l.s[i]), l.h[i] + t * (l.h[i + 1] - l.h[i]),
+                       line.edge_of_point[i + 1]});
     }
     return out;
+}
+
+/// The highest end, in the layout, of the seam side among `ranges` of `piece` that holds outline
+/// edge `edge`; nullopt when no range holds it.
+inline std::optional<pattern::Point2> seam_top(const pattern::Piece& piece, Region region,
+                                               const LayoutHeights& heights, std::size_t edge,
+                                               const std::vector<pattern::EdgeRange>& ranges) {
+    const std::size_t n = piece.outline.edges.size();
+    for (const pattern::EdgeRange& r : ranges) {
+        bool holds = false;
+        for (std::size_t k = 0; k < r.count && n > 0; ++k) {
+            holds = holds || (r.first_edge + k) % n == edge;
+        }
+        if (r.piece != piece.name || !holds) {
+            continue;
+        }
+        pattern::PieceMesh ends;
+        ends.uv = {pattern::start_point(piece.outline.edges[r.first_edge % n]),
+                   pattern::end_point(piece.outline.edges[(r.first_edge + r.count - 1) % n])};
+        const PieceLayout l =
+            piece_layout(piece, ends, region, heights.top_y, heights.waist_y, heights.gc_shift);
+        return ends.uv[l.h[0] >= l.h[1] ? 0 : 1];
+    }
+    return std::nullopt;
 }
 
 /// How often a piece goes round the body (a trunk piece) or the arm (a sleeve).
@@ -100,12 +151,13 @@ inline bool sleeve_region(Region r) {
 
 }  // namespace internal
 
-/// Infers the girth bindings of `base` laid out on `body` (canonical frame; its landmarks and
-/// measurements from measure_body), `gap_mm` from the skin as dressing places it. A binding is
-/// named as the pattern's own measurements name it (FreeSewing's "chest" when the pattern uses
-/// FreeSewing names), else by our name. Girths the body lacks, or that cut no piece, and pieces
-/// without a body region (bindings, collars, ...) are left out with a note. Throws InvalidInput
-/// when no girth cuts the pattern.
+/// Infers the girth and length bindings of `base` laid out on `body` (canonical frame; its
+/// landmarks and measurements from measure_body), `gap_mm` from the skin as dressing places it.
+/// A binding is named as the pattern's own measurements name it (FreeSewing's "chest" when the
+/// pattern uses FreeSewing names), else by our name. Girths and lengths the body lacks, that
+/// cut no piece, or that the pattern does not declare, girths whose pieces come to less than
+/// kLeastGirthRatio of the body's, and pieces without a body region (bindings, collars, trouser
+/// legs, ...) are left out with a note. Throws InvalidInput when nothing was bound.
 inline BindingInference infer_girth_bindings(const measurement::Body& body,
                                              const measurement::LandmarkSet& landmarks,
                                              const measurement::MeasurementSet& measurements,
@@ -160,11 +212,19 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             }
         }
     }
+    std::vector<pattern::EdgeRange> side_seams;  // the sides of seams joining trunk pieces
+    for (const pattern::Seam& seam : base.seams) {
+        const auto ra = region_of(seam.a.piece), rb = region_of(seam.b.piece);
+        if (ra && rb && trunk_region(*ra) && trunk_region(*rb)) {
+            side_seams.push_back(seam.a);
+            side_seams.push_back(seam.b);
+        }
+    }
     const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
     const LayoutHeights heights = layout_heights(base, regions, outline_points, shape, gap_mm);
     // The sleeves of each arm: their layout's distance down the arm at the top of the cap.
     std::optional<Region> sleeve_side;  // the arm whose sleeves are cut (the body's left first)
-    double cap_top[2] = {1e300, 1e300};
+    double cap_top[2] = {1e300, 1e300}, sleeve_end[2] = {-1e300, -1e300};
     for (std::size_t i = 0; i < base.pieces.size(); ++i) {
         if (!placed[i] || !sleeve_region(*placed[i])) {
             continue;
@@ -176,12 +236,84 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         const int k = *placed[i] == Region::sleeve_left ? 0 : 1;
         for (const double h : l.h) {
             cap_top[k] = std::min(cap_top[k], h);
+            sleeve_end[k] = std::max(sleeve_end[k], h);
         }
         if (!sleeve_side || (*sleeve_side == Region::sleeve_right && k == 0)) {
             sleeve_side = *placed[i];
         }
     }
+    // A draft that declares its lengths has its levels where they put them, not where the body
+    // has them (the body may be of another size): below the high point of the shoulder (the
+    // layout's top) by the declared back length to the waist, and below the waist by the
+    // declared waist-to-hip lengths; other trunk levels scale with the waist's depth, arm levels
+    // with the declared arm length.
+    const auto declared_length = [&base](const std::string& ours) -> std::optional<double> {
+        for (const std::string& k : {ours, sizes::freesewing_name(ours)}) {
+            const auto it = base.measurements_used.find(k);
+            if (!k.empty() && it != base.measurements_used.end() && it->second > 0) {
+                return it->second;
+            }
+        }
+        return std::nullopt;
+    };
+    const measurement::Measurement* body_waist = measurements.find("waist_girth");
+    const std::optional<double> back_length = declared_length("hps_to_waist_back");
+    const double waist_depth = body_waist ? shape.neck_y - body_waist->plane_point[1] : 0;
+    const bool declared_trunk = back_length && waist_depth > 0;
+    // The lowest point of the trunk pieces: a draft whose hem is its hip line (a block drafted
+    // to the hips) ends on the level; that level is taken just above the hem.
+    double trunk_bottom = 1e300;
+    for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+        if (placed[i] && trunk_region(*placed[i])) {
+            pattern::PieceMesh samples;
+            samples.uv = outline_points[i];
+            const PieceLayout l = piece_layout(base.pieces[i], samples, *placed[i], heights.top_y,
+                                               heights.waist_y, heights.gc_shift);
+            trunk_bottom = std::min(trunk_bottom, *std::min_element(l.h.begin(), l.h.end()));
+        }
+    }
+    const auto trunk_level = [&](const std::string& name, double body_y) {
+        if (!declared_trunk) {
+            return body_y;
+        }
+        const double waist_y = heights.top_y - *back_length;
+        const std::optional<double> below =
+            declared_length(name == "high_hip_girth" ? "waist_to_high_hip"
+                            : name == "hip_girth"    ? "waist_to_hips"
+                                                     : "");
+        const double y = name == "waist_girth" ? waist_y
+                         : below
+                             ? waist_y - *below
+                             : heights.top_y - (shape.neck_y - body_y) * *back_length / waist_depth;
+        return y <= trunk_bottom && y >= trunk_bottom - kHemReach ? trunk_bottom + 1 : y;
+    };
+    // The arm: the wrist's level goes to the declared shoulder-to-wrist length below the cap's
+    // top, the other levels in proportion (distances from the shoulder point, as below).
+    double arm_scale = 1, wrist_depth = 0;
+    if (const measurement::Measurement* wrist = measurements.find("wrist_girth");
+        wrist && wrist->closed) {
+        const std::optional<Vec3> a = landmarks.point(
+            std::string("acromion") + (wrist->plane_point[0] > 0 ? "_left" : "_right"));
+        wrist_depth =
+            a ? std::abs(vec3::dot(vec3::sub(wrist->plane_point, *a), wrist->plane_normal)) : 0;
+    }
+    if (const auto d = declared_length("shoulder_to_wrist"); d && wrist_depth > 0) {
+        arm_scale = *d / wrist_depth;
+    }
+    if (declared_trunk || arm_scale != 1) {
+        out.notes.push_back(std::string("levels: where the draft's declared lengths put them (") +
+                            (declared_trunk ? "back length to the waist" : "") +
+                            (declared_trunk && arm_scale != 1 ? ", " : "") +
+                            (arm_scale != 1 ? "arm length" : "") + "), not the body's");
+    }
     std::vector<pattern::MeasurementBinding> bindings;
+    const auto drop_points = [&base](const pattern::MeasurementBinding& b) {
+        for (const pattern::BoundFeature& f : b.features) {
+            pattern::Piece* piece = pattern::find_piece(base, f.piece);
+            piece->points.erase(f.from_point);
+            piece->points.erase(f.to_point);
+        }
+    };
     for (const std::string& name : inferred_girths()) {
         const bool arm =
             name == "upper_arm_girth" || name == "elbow_girth" || name == "wrist_girth";
@@ -202,16 +334,30 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         }
         // The level in the layout's terms: a height for the trunk, a distance down the arm from
         // the cap's top for a sleeve.
-        const double top = arm ? cap_top[*sleeve_side == Region::sleeve_left ? 0 : 1] : 0;
-        const double y =
-            arm ? top + std::abs(vec3::dot(vec3::sub(g->plane_point, *acromion), g->plane_normal))
-                : g->plane_point[1];
+        const int arm_k = sleeve_side && *sleeve_side == Region::sleeve_left ? 0 : 1;
+        const double top = arm ? cap_top[arm_k] : 0;
+        double y = arm ? top + arm_scale * std::abs(vec3::dot(vec3::sub(g->plane_point, *acromion),
+                                                              g->plane_normal))
+                       : trunk_level(name, g->plane_point[1]);
+        if (arm && y >= sleeve_end[arm_k] && y <= sleeve_end[arm_k] + kHemReach) {
+            // A sleeve drafted to the wrist ends on its level: the girth is the cuff's, taken
+            // just above the hem.
+            y = sleeve_end[arm_k] - 1;
+        }
         const std::string at =
             std::to_string(int(std::lround(y - top))) + (arm ? " mm below the cap's top" : " mm");
         const std::string fs = sizes::freesewing_name(name);
         const bool fs_named = !fs.empty() && base.measurements_used.count(fs) > 0;
         pattern::MeasurementBinding b;
         b.measurement = fs_named ? fs : name;
+        // A pattern that declares the measurements it was drafted for (FreeSewing's
+        // `measurements`) is graded on those alone; its declared value is the base of the ease.
+        const auto declared = base.measurements_used.find(b.measurement);
+        if (!base.measurements_used.empty() && declared == base.measurements_used.end()) {
+            out.notes.push_back(name + ": not bound (pattern '" + base.name +
+                                "' declares the measurements it was drafted for, not this one)");
+            continue;
+        }
         double garment = 0;
         std::string pieces, open;
         for (std::size_t i = 0; i < base.pieces.size(); ++i) {
@@ -255,24 +401,194 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             out.notes.push_back(name + ": not bound (at " + at + " it crosses " + open +
                                 ", which is sewn to no " + (arm ? "sleeve" : "torso") +
                                 " piece: the garment is open there)");
-            for (pattern::BoundFeature& f : b.features) {
-                pattern::Piece* piece = pattern::find_piece(base, f.piece);
-                piece->points.erase(f.from_point);
-                piece->points.erase(f.to_point);
-            }
+            drop_points(b);
             continue;
         }
-        b.ease_mm = garment - g->value;
-        out.notes.push_back(b.measurement + ": " + pieces + "; garment " +
-                            std::to_string(int(std::lround(garment))) + " mm, body " +
-                            std::to_string(int(std::lround(g->value))) + " mm, ease " +
-                            std::to_string(int(std::lround(b.ease_mm))) + " mm, at " + at);
+        if (garment < kLeastGirthRatio * g->value) {
+            // Knit garments are cut up to a fifth smaller than the body; pieces that come to
+            // less than that do not go round it (a piece missing from the layout or placed
+            // where it does not belong).
+            out.notes.push_back(name + ": not bound (at " + at + " the pieces it cuts come to " +
+                                std::to_string(int(std::lround(garment))) + " mm round a body of " +
+                                std::to_string(int(std::lround(g->value))) +
+                                " mm: they do not go round the body there)");
+            drop_points(b);
+            continue;
+        }
+        const bool own = declared != base.measurements_used.end();
+        b.ease_mm = garment - (own ? declared->second : g->value);
+        out.notes.push_back(
+            b.measurement + ": " + pieces + "; garment " +
+            std::to_string(int(std::lround(garment))) + " mm, body " +
+            std::to_string(int(std::lround(g->value))) + " mm, " +
+            (own ? "drafted for " + std::to_string(int(std::lround(declared->second))) + " mm, "
+                 : std::string()) +
+            "ease " + std::to_string(int(std::lround(b.ease_mm))) + " mm, at " + at);
         bindings.push_back(std::move(b));
+    }
+    // Vertical lengths, one binding per piece (a length each piece realises on its own), each
+    // along the layout's vertical line s = const of the piece: on trunk pieces at their centre
+    // line (the back length from the top of a back piece to the waist; the waist to the high hip
+    // and to the hip) or at their side (the waist to the bottom of the armhole), and on a sleeve
+    // that reaches the wrist from its cap's top to its end (shoulder to wrist).
+    struct LengthRule {
+        const char* name;
+        const char* upper;  ///< the girth whose level ends the span above; "": the outline
+        const char* lower;  ///< the girth whose level ends it below; "": a sleeve's end
+        bool side;          ///< at the piece's side (else its centre line)
+        bool torso_only;    ///< on torso pieces only (else skirts too)
+    };
+    static const LengthRule length_rules[] = {
+        {"hps_to_waist_back", "", "waist_girth", false, true},
+        {"waist_to_armpit", "", "waist_girth", true, true},
+        {"waist_to_high_hip", "waist_girth", "high_hip_girth", false, false},
+        {"waist_to_hips", "waist_girth", "hip_girth", false, false},
+        {"shoulder_to_wrist", "", "", false, false},
+    };
+    const auto level_of = [&](const std::string& girth) -> std::optional<double> {
+        const measurement::Measurement* g = measurements.find(girth);
+        if (!g || !g->closed || std::abs(g->plane_normal[1]) < 0.9) {
+            return std::nullopt;
+        }
+        return trunk_level(girth, g->plane_point[1]);
+    };
+    for (const LengthRule& rule : length_rules) {
+        const std::string name = rule.name;
+        const bool arm = name == "shoulder_to_wrist";
+        const std::string fs = sizes::freesewing_name(name);
+        const std::string bound_name =
+            !fs.empty() && base.measurements_used.count(fs) > 0 ? fs : name;
+        const auto declared = base.measurements_used.find(bound_name);
+        if (!base.measurements_used.empty() && declared == base.measurements_used.end()) {
+            out.notes.push_back(name + ": not bound (pattern '" + base.name +
+                                "' declares the measurements it was drafted for, not this one)");
+            continue;
+        }
+        const measurement::Measurement* m = measurements.find(name);
+        const bool own = declared != base.measurements_used.end();
+        if (!own && (!m || m->value <= 0)) {
+            out.notes.push_back(name + ": not bound (the body has no " + name + ")");
+            continue;
+        }
+        const double value = own ? declared->second : m->value;
+        const std::optional<double> lower = arm ? std::optional<double>(0) : level_of(rule.lower);
+        const std::optional<double> upper =
+            *rule.upper ? level_of(rule.upper) : std::optional<double>(1e300);
+        if (!lower || !upper || (arm && (!sleeve_side || wrist_depth <= 0))) {
+            out.notes.push_back(name + ": not bound (the body has no level for it)");
+            continue;
+        }
+        const auto takes = [&](Region r) {
+            return arm                           ? r == *sleeve_side
+                   : name == "hps_to_waist_back" ? r == Region::torso_back
+                   : rule.torso_only ? r == Region::torso_front || r == Region::torso_back
+                                     : trunk_region(r);
+        };
+        std::string pieces, why;
+        std::size_t found = 0;
+        const auto add_length = [&](pattern::Piece& piece, const pattern::Point2& p0,
+                                    const pattern::Point2& p1) {
+            const double len = std::hypot(p1.x - p0.x, p1.y - p0.y);
+            if (len < 10) {
+                return;
+            }
+            const std::string pa = "length:" + name + ":a", pb = "length:" + name + ":b";
+            piece.points[pa] = p0;
+            piece.points[pb] = p1;
+            pattern::MeasurementBinding b;
+            b.measurement = bound_name;
+            b.features.push_back({piece.name, {}, pa, pb, 1});
+            b.ease_mm = len - value;
+            bindings.push_back(std::move(b));
+            pieces += (pieces.empty() ? "" : ", ") + piece.name + " " +
+                      std::to_string(int(std::lround(len))) + " mm";
+            ++found;
+        };
+        for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+            if (!placed[i] || !takes(*placed[i])) {
+                continue;
+            }
+            pattern::Piece& piece = base.pieces[i];
+            double s_c = 0;
+            if (arm) {
+                // Down the line through the cap's top.
+                pattern::PieceMesh samples;
+                samples.uv = outline_points[i];
+                const PieceLayout l = piece_layout(piece, samples, regions[i], heights.top_y,
+                                                   heights.waist_y, heights.gc_shift);
+                s_c = l.s[std::min_element(l.h.begin(), l.h.end()) - l.h.begin()] + 0.01;
+            } else {
+                const auto c = internal::outline_crossings(piece, regions[i], heights, *lower);
+                if (c.size() < 2) {
+                    continue;
+                }
+                const auto [lo, hi] = std::minmax_element(
+                    c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
+                if (hi->s - lo->s < 4) {
+                    continue;
+                }
+                if (rule.side) {
+                    // Up the side seam the level crosses, from the level to the seam's top end
+                    // (the bottom of the armhole).
+                    const internal::Crossing& x = std::abs(hi->s) >= std::abs(lo->s) ? *hi : *lo;
+                    const std::optional<pattern::Point2> top =
+                        internal::seam_top(piece, regions[i], heights, x.edge, side_seams);
+                    if (!top) {
+                        continue;
+                    }
+                    add_length(piece, x.p, *top);
+                    continue;
+                }
+                s_c = std::clamp(0.0, lo->s + 1, hi->s - 1);
+            }
+            auto v = internal::outline_crossings(piece, regions[i], heights, s_c, true);
+            std::sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.h < b.h; });
+            // The stretch of the line inside the piece that holds the lower end (in h, the
+            // layout's height grows upwards; a sleeve's distance down the arm grows downwards).
+            const double h_lo = arm ? (v.empty() ? 0 : v.front().h) : *lower;
+            std::size_t k = 0;
+            while (k + 1 < v.size() && !(v[k].h <= h_lo && h_lo <= v[k + 1].h)) {
+                k += 2;
+            }
+            if (k + 1 >= v.size()) {
+                continue;
+            }
+            const internal::Crossing &a = v[k], &c = v[k + 1];
+            const auto at = [&](double h) {
+                const double t = (h - a.h) / (c.h - a.h);
+                return pattern::Point2{a.p.x + t * (c.p.x - a.p.x), a.p.y + t * (c.p.y - a.p.y)};
+            };
+            pattern::Point2 p0, p1;
+            if (arm) {
+                // The sleeve must reach the wrist's level (within kHemReach).
+                if (c.h - a.h < arm_scale * wrist_depth - kHemReach) {
+                    why = "the sleeve ends " +
+                          std::to_string(int(std::lround(arm_scale * wrist_depth - (c.h - a.h)))) +
+                          " mm above the wrist";
+                    continue;
+                }
+                p0 = a.p;
+                p1 = c.p;
+            } else {
+                if (*upper < 1e300 && *upper > c.h) {
+                    continue;  // the upper level is off the piece along this line
+                }
+                p0 = at(h_lo);
+                p1 = *upper < 1e300 ? at(*upper) : c.p;
+            }
+            add_length(piece, p0, p1);
+        }
+        out.notes.push_back(
+            found == 0 ? name + ": not bound (" +
+                             (why.empty() ? std::string("no piece holds both its ends") : why) + ")"
+                       : bound_name + ": " + pieces + " (" + (own ? "drafted for " : "body ") +
+                             std::to_string(int(std::lround(value))) + " mm), one per piece");
     }
     if (bindings.empty()) {
         throw InvalidInput("pattern '" + base.name +
                            "': no girth of the body goes round its torso, skirt or sleeve "
-                           "pieces, so no binding was found: give the bindings (--bindings)");
+                           "pieces and no length lies on them, so no binding was found: give "
+                           "the bindings (--bindings)");
     }
     base.bindings = std::move(bindings);
     out.pattern = std::move(base);

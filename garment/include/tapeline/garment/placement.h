@@ -340,8 +340,13 @@ inline std::optional<Region> piece_region(const pattern::Piece& piece, std::stri
                                     : "its name says neither torso, skirt nor sleeve";
         return std::nullopt;
     }
-    // FreeSewing names pieces "design.piece" ("aaron.front").
+    // FreeSewing names pieces "design.piece" ("aaron.front"); a trouser leg's front and back
+    // (titan's) carry the fork, where the inseam meets the crotch seam.
     const std::string base = n.substr(n.rfind('.') == std::string::npos ? 0 : n.rfind('.') + 1);
+    if (piece.points.count("fork")) {
+        why = "a trouser leg (it has a fork point); trouser legs are not placed yet";
+        return std::nullopt;
+    }
     if (base.rfind("front", 0) == 0 && base.find("Binding") == std::string::npos) {
         return Region::torso_front;
     }
