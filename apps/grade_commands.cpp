@@ -34,11 +34,13 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #endif
 
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace tapeline::app {
 
@@ -119,6 +121,11 @@ void run_grade(const GradeArgs& a) {
     tp::require_valid(base);
     sizes::MeasurementSet from;
     std::vector<std::string> inferred;  // how each inferred binding was found
+    // Where each measurement's binding came from, for the report.
+    std::map<std::string, std::string> origin;
+    for (const tp::MeasurementBinding& b : base.bindings) {
+        origin[b.measurement] = "pattern";
+    }
     if (!a.base_body.empty()) {
         // The base measurements are the body's; the girth bindings are found by laying the
         // pattern on it (garment/bindings.h).
@@ -129,11 +136,17 @@ void run_grade(const GradeArgs& a) {
         base = std::move(b.pattern);
         from = std::move(b.measurements);
         inferred = std::move(b.notes);
+        origin.clear();
+        for (const tp::MeasurementBinding& x : base.bindings) {
+            origin[x.measurement] = "found on the body";
+        }
     } else {
         from = sizes::read_measurement_input(a.from, a.from_set);
     }
     if (!a.bindings.empty()) {
-        tp::apply_bindings_file(base, a.bindings);
+        for (const std::string& name : tp::apply_bindings_file(base, a.bindings)) {
+            origin[name] = "bindings file";
+        }
         inferred.push_back("bindings of " + a.bindings + " given");
     }
     const sizes::MeasurementSet to = sizes::read_measurement_input(a.to, a.to_set);
@@ -151,9 +164,33 @@ void run_grade(const GradeArgs& a) {
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tgr::EaseMode::keep_mm : tgr::EaseMode::proportional;
     tgr::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
+    // What grading added (FreeSewing's table), then one line per origin.
+    std::map<std::string, std::vector<std::string>> by_origin;
+    for (const tgr::FitRow& row : g.report.fit) {
+        const std::string& o = origin.emplace(row.measurement, "FreeSewing table").first->second;
+        auto& names = by_origin[o];
+        if (std::find(names.begin(), names.end(), row.measurement) == names.end()) {
+            names.push_back(row.measurement);
+        }
+    }
+    for (const auto& [o, names] : by_origin) {
+        std::string line = "origin: " + o + ": ";
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            line += (i ? ", " : "") + names[i];
+        }
+        inferred.push_back(line);
+    }
     for (const std::string& line : inferred) {
         g.report.notes.push_back("binding: " + line);
     }
+    // The report's fit rows say where their binding came from.
+    const auto report_with_origins = [&] {
+        nlohmann::json rep = tgr::report_json(g.report);
+        for (nlohmann::json& row : rep["fit"]) {
+            row["origin"] = origin.at(row["measurement"].get<std::string>());
+        }
+        return rep;
+    };
 
     // Render every output in memory, then write each atomically.
     std::vector<std::pair<std::string, std::string>> files;
@@ -186,7 +223,7 @@ void run_grade(const GradeArgs& a) {
         files.push_back({a.rul, tgr::rul_table(g, from.name, to.name)});
     }
     if (!a.report.empty()) {
-        files.push_back({a.report, tgr::report_json(g.report).dump(1) + "\n"});
+        files.push_back({a.report, report_with_origins().dump(1) + "\n"});
     }
     if (!a.compare.empty()) {
         // Validation against a reference draft of the target size (benchmarks/run_grading.sh):
@@ -215,7 +252,7 @@ void run_grade(const GradeArgs& a) {
                          {"uniform_oracle_mean_mm", ds.mean_mm},
                          {"uniform_oracle_max_mm", ds.max_mm}});
         }
-        nlohmann::json rep = tgr::report_json(g.report);
+        nlohmann::json rep = report_with_origins();
         rep["comparison"] = c;
         rep["pattern"] = base.name;
         rep["from"] = from.name;

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """Grades patterns without measurement bindings (the four GarmentCode patterns) from the body they
 are laid on (`tapeline grade --base-body`) to the measurements of other bodies, and writes a table:
-per pattern and body the bindings found, the largest fit error and seam mismatch, the largest
-change of an outline angle, the time, and a self-check computed here from the files: every bound
-girth of the graded pattern (its points, the bindings file's counts) against the target plus the
-scaled base ease (within 2 mm).
+per pattern and body the bindings found (a length bound once per piece is listed with its count),
+the largest fit error and seam mismatch, the largest change of an outline angle, the time, and a
+self-check computed here from the files: every bound girth and length of the graded pattern (its
+points, the bindings file's counts) against the target plus the scaled base ease (within 2 mm).
 
 usage: grade_any_pattern.py TAPELINE DATA_DIR OUT.md [--base BODY] [--bodies bundled|holdout|...]
                             [--patterns NAME ...] [--threads N]
@@ -33,7 +33,7 @@ PATTERNS = {
 
 
 def girth_check(graded, bindings, base, target):
-    """Largest |graded girth - (target + ease * target / base)| over the bound girths, mm."""
+    """Largest |graded span sum - (target + ease * target / base)| over the bindings, mm."""
     pieces = {p["name"]: p for p in graded["pieces"]}
     worst = 0.0
     for b in bindings["bindings"]:
@@ -131,7 +131,7 @@ def write(rows, a, base):
                                a.threads),
              "",
              "| pattern | body | bound | max fit error mm | max seam mismatch mm | max angle "
-             "change ° | girth self-check mm | s |",
+             "change ° | binding self-check mm | s |",
              "|---|---|---|---:|---:|---:|---:|---:|"]
     for r in rows:
         if r["exit"] == 0:
@@ -142,7 +142,7 @@ def write(rows, a, base):
             lines.append("| %s | %s | refused: %s | | | | | %.1f |" % (
                 r["pattern"], r["body"], r["error"].replace("|", "/"), r["seconds"]))
     lines += ["", "Summary: %d of %d graded; largest fit error %.2f mm, largest seam mismatch "
-              "%.2f mm, largest angle change %.2f°, largest girth self-check difference %.2f mm "
+              "%.2f mm, largest angle change %.2f°, largest binding self-check difference %.2f mm "
               "(limit 2); median time %.1f s." % (
                   len(ok), len(rows), max((r["fit"] for r in ok), default=0),
                   max((r["seam"] for r in ok), default=0),

@@ -5,9 +5,9 @@ size (cisFemaleAdult36 -> 42 and 42 -> 36).
 
 Per design and direction, three gradings of the same base draft to the same target set:
   table  `grade --from SET`: the table's bindings (the run of benchmarks/run_grading.sh);
-  found  `grade --base-body BODY`: the girths found by laying the draft on BODY, eased against the
-         values the draft declares; the table fills in what was not found (lengths, and girths
-         whose level crosses an opening);
+  found  `grade --base-body BODY`: the girths and lengths found by laying the draft on BODY,
+         eased against the values the draft declares; the table fills in what was not found (the
+         neck, shoulder width, girths whose level crosses an opening);
   found only  as found with `--no-freesewing-bindings`: nothing from the table.
 For each: the mean outline deviation from FreeSewing's draft of the target size (the mean over
 pieces of `--compare`'s mean distance) and from the table grading's pieces. The bindings are
@@ -150,8 +150,8 @@ def write(rows, binding_rows, a, body):
         "",
         "Mean outline deviation (mm; per piece the mean distance of `tapeline grade --compare`, "
         "averaged over pieces) of each grading from FreeSewing's own draft of the target size, "
-        "and of the found gradings from the table grading. *found*: girths found on the body, "
-        "the table for the rest; *found only*: `--no-freesewing-bindings`.",
+        "and of the found gradings from the table grading. *found*: girths and lengths found on "
+        "the body, the table for the rest; *found only*: `--no-freesewing-bindings`.",
         "",
         "| design | run | table: bound / vs FreeSewing | found: bound / vs FreeSewing / vs table "
         "| found only: bound / vs FreeSewing / vs table |",
@@ -164,19 +164,27 @@ def write(rows, binding_rows, a, body):
         lines.append("| %s | %s | %d / %.2f | %s | %s |" % (
             r["design"], r["run"], r["table_bound"], r["table"], part("found"), part("only")))
     found = [r for r in rows if "found" in r]
+    only = [r for r in rows if "only" in r]
     lines += ["",
-              "Found (with the table's lengths): %d of %d runs graded; largest difference from "
-              "the table grading %.2f mm (mean outline deviation; goal 0.5); largest change of "
-              "the deviation from FreeSewing's draft against the table's %+.2f mm." % (
+              "Found (the table for what was not found): %d of %d runs graded; largest "
+              "difference from the table grading %.2f mm (mean outline deviation; goal 0.5); "
+              "largest change of the deviation from FreeSewing's draft against the table's "
+              "%+.2f mm. Found only: largest difference from the table grading %.2f mm; "
+              "deviation from FreeSewing's draft %.2f-%.2f mm (the table's %.2f-%.2f)." % (
                   len(found), len(rows),
                   max((r["found_vs_table"] for r in found), default=float("nan")),
-                  max((r["found"] - r["table"] for r in found), default=float("nan"))),
+                  max((r["found"] - r["table"] for r in found), default=float("nan")),
+                  max((r["only_vs_table"] for r in only), default=float("nan")),
+                  min((r["only"] for r in only), default=float("nan")),
+                  max((r["only"] for r in only), default=float("nan")),
+                  min((r["table"] for r in only), default=float("nan")),
+                  max((r["table"] for r in only), default=float("nan"))),
               "",
               "## The girths found against the table's",
               "",
               "Per girth bound both ways: the garment girth of the draft at the found level and "
               "at the table's points (mm), and the found level's height on the draft minus the "
-              "table's (mm, the draft's y axis points down).",
+              "table's (mm; the draft's y axis points up).",
               "",
               "| design | run | measurement | found mm | table mm | level offset mm |",
               "|---|---|---|---:|---:|---:|"]

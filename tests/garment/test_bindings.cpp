@@ -192,6 +192,25 @@ TEST(GarmentBindings, BindingsFileRoundTripAndOverride) {
     tapeline_test::expect_error<tapeline::InvalidInput>(
         [&] { tp::apply_bindings_file(fresh, file, "b.json"); },
         {"b.json", "has no piece 'no_such_piece'"}, "a point on a missing piece");
+
+    // A length bound once per piece (aaron's waist to armpit, front and back) keeps both of its
+    // bindings, given back once or twice.
+    const tg::BindingInference aaron = tg::infer_girth_bindings(
+        b->body, b->landmarks, b->measurements,
+        tp::read_pattern_file(bundled_path("patterns/aaron_cisFemaleAdult36.json")));
+    const nlohmann::json aaron_file = tp::bindings_file_json(aaron.pattern);
+    const auto sides = [](const tp::Pattern& p) {
+        return std::count_if(p.bindings.begin(), p.bindings.end(),
+                             [](const auto& x) { return x.measurement == "waistToArmpit"; });
+    };
+    ASSERT_EQ(sides(aaron.pattern), 2);
+    tp::Pattern again = tp::read_pattern_file(bundled_path("patterns/aaron_cisFemaleAdult36.json"));
+    again.bindings.clear();
+    for (int k = 0; k < 2; ++k) {
+        tp::apply_bindings_file(again, aaron_file, "b.json");
+        EXPECT_EQ(tp::to_json(again), tp::to_json(aaron.pattern)) << "given back " << k + 1;
+        EXPECT_EQ(sides(again), 2);
+    }
 }
 
 // FreeSewing's brian (a body block with long sleeves, one sleeve drafted for both arms), its

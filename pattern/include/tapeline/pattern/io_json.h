@@ -467,13 +467,15 @@ inline nlohmann::json bindings_file_json(const Pattern& p) {
 }
 
 /// Gives `p` the bindings of a bindings file `j` read from `source`: its points are added to
-/// their pieces (replacing points of the same name), and each of its bindings replaces the
-/// pattern's binding of the same measurement or is added.
+/// their pieces (replacing points of the same name), and its bindings of a measurement replace
+/// all of the pattern's bindings of that measurement or are added. Returns the measurements it
+/// binds.
 ///
 /// \throws InvalidInput naming `source` and the key: not a tapeline-bindings document, an
 ///         unknown unit, a point on a piece the pattern lacks, a malformed binding; or a
 ///         binding that names a piece the pattern lacks.
-inline void apply_bindings_file(Pattern& p, const nlohmann::json& j, const std::string& source) {
+inline std::vector<std::string> apply_bindings_file(Pattern& p, const nlohmann::json& j,
+                                                    const std::string& source) {
     using namespace internal;
     const Where top{source, ""};
     require_format(j, top, "tapeline-bindings");
@@ -508,21 +510,43 @@ inline void apply_bindings_file(Pattern& p, const nlohmann::json& j, const std::
     for (auto& [piece, named] : points) {
         piece->points[named.first] = named.second;
     }
+    // A measurement may be bound several times (a length, once per piece): the file's bindings
+    // of a measurement replace all of the pattern's, where its first one stood.
+    std::vector<std::string> names;
     for (const MeasurementBinding& b : bindings) {
-        auto it = std::find_if(
-            p.bindings.begin(), p.bindings.end(),
-            [&](const MeasurementBinding& x) { return x.measurement == b.measurement; });
-        if (it != p.bindings.end()) {
-            *it = b;
-        } else {
-            p.bindings.push_back(b);
+        if (std::find(names.begin(), names.end(), b.measurement) == names.end()) {
+            names.push_back(b.measurement);
         }
     }
+    std::vector<MeasurementBinding> merged;
+    std::vector<std::string> placed;
+    const auto place = [&](const std::string& name) {
+        placed.push_back(name);
+        for (const MeasurementBinding& b : bindings) {
+            if (b.measurement == name) {
+                merged.push_back(b);
+            }
+        }
+    };
+    for (MeasurementBinding& x : p.bindings) {
+        if (std::find(names.begin(), names.end(), x.measurement) == names.end()) {
+            merged.push_back(std::move(x));
+        } else if (std::find(placed.begin(), placed.end(), x.measurement) == placed.end()) {
+            place(x.measurement);
+        }
+    }
+    for (const std::string& name : names) {
+        if (std::find(placed.begin(), placed.end(), name) == placed.end()) {
+            place(name);
+        }
+    }
+    p.bindings = std::move(merged);
+    return names;
 }
 
 /// apply_bindings_file with the bindings file at `path`.
-inline void apply_bindings_file(Pattern& p, const std::string& path) {
-    apply_bindings_file(p, internal::parse_json_file(path), path);
+inline std::vector<std::string> apply_bindings_file(Pattern& p, const std::string& path) {
+    return apply_bindings_file(p, internal::parse_json_file(path), path);
 }
 
 }  // namespace tapeline::pattern
