@@ -826,6 +826,33 @@ printf '{"format": "tapeline-bindings", "units": "mm", "points": {"collar": {"a"
 expect_fail "grade: a bindings file naming a missing piece" "bad_b.json: .*has no piece 'collar'" \
   "$bin" grade "$gcs" --base-body "$bodyf" --base-units dm --to target_m.json --out x.json --bindings bad_b.json
 if [ -e x.json ]; then fail "grade: a refusal wrote x.json"; else ok "grade: refusals write nothing"; fi
+# A FreeSewing draft laid on a body other than its own: only the declared measurements are bound,
+# eased against the declared values (the base set takes them), and every binding says where it
+# came from; a target set with FreeSewing's names (it has no underbust) grades it.
+echo "$base36" | sed 's/"chest": 979/"chest": 1143/; s/"hips": 953/"hips": 1112/;
+  s/"hpsToWaistBack": 410/"hpsToWaistBack": 455/; s/"waistToHips": 130/"waistToHips": 144/;
+  s/"waistToArmpit": 177/"waistToArmpit": 190/' > fs_target.json
+expect_ok "grade a FreeSewing draft from another body" "$bin" grade "$fs" --base-body "$bodyf" \
+  --base-units dm --to fs_target.json --out fsg.json --report fsr.json --bindings-out fsb.json \
+  --generations 0
+if grep -q "^binding: origin: found on the body: hips, hpsToWaistBack, waistToArmpit, waistToHips$" out.txt &&
+   grep -q "^binding: origin: FreeSewing table: chest$" out.txt &&
+   grep -q "^binding: underbust_girth: not bound (pattern 'aaron_cisFemaleAdult36' declares" out.txt &&
+   $py - "$base36" <<'PY'
+import json, math, sys
+declared = json.loads(sys.argv[1])  # what aaron_cisFemaleAdult36 declares
+r, b = json.load(open("fsr.json")), json.load(open("fsb.json"))
+assert {x["origin"] for x in r["fit"] if x["measurement"] == "chest"} == {"FreeSewing table"}
+assert {x["origin"] for x in r["fit"] if x["measurement"] != "chest"} == {"found on the body"}
+for x in b["bindings"]:
+    total = 0
+    for f in x["features"]:
+        (ax, ay), (bx, by) = (b["points"][f["piece"]][f[k]] for k in ("from_point", "to_point"))
+        total += f["count"] * math.hypot(bx - ax, by - ay)
+    assert abs(x["ease"] - (total - declared[x["measurement"]])) < 1e-6, x["measurement"]
+PY
+then ok "grade: declared measurements bound, eased against, origins reported"
+else fail "grade: a FreeSewing draft from another body"; fi
 fi
 
 if in_section grade_options; then
