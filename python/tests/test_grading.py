@@ -34,6 +34,11 @@ def test_grade_equals_the_command_line(cli, tmp_path):
     graded, report = tapeline.grade(pattern.read(AARON), BASE, target, threads=1, **SMALL)
     assert graded == json.loads(out.read_text())
     expected = json.loads(rep.read_text())
+    # The command line's fit rows also say where each binding came from (aaron's chest: the
+    # importer's help line; the rest: FreeSewing's table).
+    assert {(r["measurement"], r.pop("origin")) for r in expected["fit"]} == {
+        ("chest", "pattern")} | {(r["measurement"], "FreeSewing table") for r in report["fit"]
+                                  if r["measurement"] != "chest"}
     assert report["fit"] == expected["fit"] and report["seams"] == expected["seams"]
     assert report["chosen"] == expected["chosen"]
 

@@ -165,6 +165,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                                              double gap_mm = PlacementOptions{}.gap_mm) {
     BindingInference out;
     std::vector<std::optional<Region>> placed;
+    std::string unplaced;         // the pieces without a body region, with the reason
     std::vector<Region> regions;  // of the placed pieces; unplaced ones: torso_front, unused
     std::vector<std::vector<pattern::Point2>> outline_points;
     for (const pattern::Piece& p : base.pieces) {
@@ -172,6 +173,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         placed.push_back(piece_region(p, why));
         if (!placed.back()) {
             out.notes.push_back("piece " + p.name + ": in no girth (no body region: " + why + ")");
+            unplaced += (unplaced.empty() ? "" : ", ") + p.name + " (" + why + ")";
         }
         regions.push_back(placed.back().value_or(Region::torso_front));
         outline_points.push_back(placed.back() ? pattern::sample(p.outline, 0.25).points
@@ -587,8 +589,9 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     if (bindings.empty()) {
         throw InvalidInput("pattern '" + base.name +
                            "': no girth of the body goes round its torso, skirt or sleeve "
-                           "pieces and no length lies on them, so no binding was found: give "
-                           "the bindings (--bindings)");
+                           "pieces and no length lies on them, so no binding was found" +
+                           (unplaced.empty() ? std::string() : "; not placed: " + unplaced) +
+                           ": give the bindings (--bindings)");
     }
     base.bindings = std::move(bindings);
     out.pattern = std::move(base);
