@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -66,6 +67,18 @@ std::string freesewing(const std::string& name) {
     const std::filesystem::path p = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) / "patterns" /
                                     "freesewing" / (name + ".json");
     return std::filesystem::exists(p) ? p.string() : std::string();
+}
+
+/// FreeSewing's aaron, brian and teagan drafted for cisFemaleAdult36 (../shared/data); all three
+/// empty when one is absent.
+std::array<std::string, 3> three_drafts() {
+    std::array<std::string, 3> p = {freesewing("aaron_cisFemaleAdult36"),
+                                    freesewing("brian_cisFemaleAdult36"),
+                                    freesewing("teagan_cisFemaleAdult36")};
+    if (p[0].empty() || p[1].empty() || p[2].empty()) {
+        return {};
+    }
+    return p;
 }
 
 /// Whether some note starts with `prefix` and holds `part`.
@@ -326,10 +339,8 @@ TEST(GarmentBindings, NoTorsoPieceIsRefused) {
 // drafted lines: aaron's hip line (cbHips–hips) and brian's wrist line (wristLeft–wristRight, at
 // the sleeve's hem: the declared arm length reaches it).
 TEST(GarmentBindings, DeclaredMeasurementsPutTheLevelsWhereTheDraftHasThem) {
-    const std::string aaron_path = freesewing("aaron_cisFemaleAdult36");
-    const std::string brian_path = freesewing("brian_cisFemaleAdult36");
-    const std::string teagan_path = freesewing("teagan_cisFemaleAdult36");
-    if (aaron_path.empty() || brian_path.empty() || teagan_path.empty()) {
+    const auto [aaron_path, brian_path, teagan_path] = three_drafts();
+    if (aaron_path.empty()) {
         GTEST_SKIP() << "the FreeSewing drafts of ../shared/data are absent";
     }
     const MeasuredBody* b = nullptr;
@@ -417,10 +428,8 @@ TEST(GarmentBindings, DeclaredMeasurementsPutTheLevelsWhereTheDraftHasThem) {
 // from the top of its cap (brian: `sleeveTop` to `centerWrist`, the declared 600 mm); a short
 // sleeve (teagan's) is not bound, saying how far above the wrist it ends.
 TEST(GarmentBindings, LengthsRunBetweenTheLevelsAndEndOnFreeSewingsOwnPoints) {
-    const std::string aaron_path = freesewing("aaron_cisFemaleAdult36");
-    const std::string brian_path = freesewing("brian_cisFemaleAdult36");
-    const std::string teagan_path = freesewing("teagan_cisFemaleAdult36");
-    if (aaron_path.empty() || brian_path.empty() || teagan_path.empty()) {
+    const auto [aaron_path, brian_path, teagan_path] = three_drafts();
+    if (aaron_path.empty()) {
         GTEST_SKIP() << "the FreeSewing drafts of ../shared/data are absent";
     }
     const MeasuredBody* b = nullptr;
