@@ -538,6 +538,13 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                     if (!top) {
                         continue;
                     }
+                    pattern::PieceMesh end;
+                    end.uv = {*top};
+                    if (piece_layout(piece, end, regions[i], heights.top_y, heights.waist_y,
+                                     heights.gc_shift)
+                            .h[0] <= *lower) {
+                        continue;  // the seam ends below the level: no armhole above it
+                    }
                     add_length(piece, x.p, *top);
                     continue;
                 }
