@@ -224,6 +224,16 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     }
     const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
     const LayoutHeights heights = layout_heights(base, regions, outline_points, shape, gap_mm);
+    // The layout of each placed piece's outline samples.
+    std::vector<PieceLayout> outline_layout(base.pieces.size());
+    for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+        if (placed[i]) {
+            pattern::PieceMesh samples;
+            samples.uv = outline_points[i];
+            outline_layout[i] = piece_layout(base.pieces[i], samples, *placed[i], heights.top_y,
+                                             heights.waist_y, heights.gc_shift);
+        }
+    }
     // The sleeves of each arm: their layout's distance down the arm at the top of the cap.
     std::optional<Region> sleeve_side;  // the arm whose sleeves are cut (the body's left first)
     double cap_top[2] = {1e300, 1e300}, sleeve_end[2] = {-1e300, -1e300};
@@ -231,10 +241,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         if (!placed[i] || !sleeve_region(*placed[i])) {
             continue;
         }
-        pattern::PieceMesh samples;
-        samples.uv = outline_points[i];
-        const PieceLayout l = piece_layout(base.pieces[i], samples, *placed[i], heights.top_y,
-                                           heights.waist_y, heights.gc_shift);
+        const PieceLayout& l = outline_layout[i];
         const int k = *placed[i] == Region::sleeve_left ? 0 : 1;
         for (const double h : l.h) {
             cap_top[k] = std::min(cap_top[k], h);
@@ -267,10 +274,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     double trunk_bottom = 1e300;
     for (std::size_t i = 0; i < base.pieces.size(); ++i) {
         if (placed[i] && trunk_region(*placed[i])) {
-            pattern::PieceMesh samples;
-            samples.uv = outline_points[i];
-            const PieceLayout l = piece_layout(base.pieces[i], samples, *placed[i], heights.top_y,
-                                               heights.waist_y, heights.gc_shift);
+            const PieceLayout& l = outline_layout[i];
             trunk_bottom = std::min(trunk_bottom, *std::min_element(l.h.begin(), l.h.end()));
         }
     }
@@ -316,6 +320,22 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             piece->points.erase(f.to_point);
         }
     };
+    // The name the pattern gives a measurement (FreeSewing's, when it declares it so). A pattern
+    // that declares the measurements it was drafted for (FreeSewing's `measurements`) is graded
+    // on those alone, and its declared value is the base of the ease: `undeclared` notes one it
+    // leaves out.
+    const auto pattern_name = [&base](const std::string& ours) {
+        const std::string fs = sizes::freesewing_name(ours);
+        return !fs.empty() && base.measurements_used.count(fs) > 0 ? fs : ours;
+    };
+    const auto undeclared = [&](const std::string& ours, const std::string& named) {
+        if (base.measurements_used.empty() || base.measurements_used.count(named) > 0) {
+            return false;
+        }
+        out.notes.push_back(ours + ": not bound (pattern '" + base.name +
+                            "' declares the measurements it was drafted for, not this one)");
+        return true;
+    };
     for (const std::string& name : inferred_girths()) {
         const bool arm =
             name == "upper_arm_girth" || name == "elbow_girth" || name == "wrist_girth";
@@ -348,18 +368,12 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         }
         const std::string at =
             std::to_string(int(std::lround(y - top))) + (arm ? " mm below the cap's top" : " mm");
-        const std::string fs = sizes::freesewing_name(name);
-        const bool fs_named = !fs.empty() && base.measurements_used.count(fs) > 0;
         pattern::MeasurementBinding b;
-        b.measurement = fs_named ? fs : name;
-        // A pattern that declares the measurements it was drafted for (FreeSewing's
-        // `measurements`) is graded on those alone; its declared value is the base of the ease.
-        const auto declared = base.measurements_used.find(b.measurement);
-        if (!base.measurements_used.empty() && declared == base.measurements_used.end()) {
-            out.notes.push_back(name + ": not bound (pattern '" + base.name +
-                                "' declares the measurements it was drafted for, not this one)");
+        b.measurement = pattern_name(name);
+        if (undeclared(name, b.measurement)) {
             continue;
         }
+        const auto declared = base.measurements_used.find(b.measurement);
         double garment = 0;
         std::string pieces, open;
         for (std::size_t i = 0; i < base.pieces.size(); ++i) {
@@ -457,15 +471,11 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     for (const LengthRule& rule : length_rules) {
         const std::string name = rule.name;
         const bool arm = name == "shoulder_to_wrist";
-        const std::string fs = sizes::freesewing_name(name);
-        const std::string bound_name =
-            !fs.empty() && base.measurements_used.count(fs) > 0 ? fs : name;
-        const auto declared = base.measurements_used.find(bound_name);
-        if (!base.measurements_used.empty() && declared == base.measurements_used.end()) {
-            out.notes.push_back(name + ": not bound (pattern '" + base.name +
-                                "' declares the measurements it was drafted for, not this one)");
+        const std::string bound_name = pattern_name(name);
+        if (undeclared(name, bound_name)) {
             continue;
         }
+        const auto declared = base.measurements_used.find(bound_name);
         const measurement::Measurement* m = measurements.find(name);
         const bool own = declared != base.measurements_used.end();
         if (!own && (!m || m->value <= 0)) {
@@ -514,10 +524,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             double s_c = 0;
             if (arm) {
                 // Down the line through the cap's top.
-                pattern::PieceMesh samples;
-                samples.uv = outline_points[i];
-                const PieceLayout l = piece_layout(piece, samples, regions[i], heights.top_y,
-                                                   heights.waist_y, heights.gc_shift);
+                const PieceLayout& l = outline_layout[i];
                 s_c = l.s[std::min_element(l.h.begin(), l.h.end()) - l.h.begin()] + 0.01;
             } else {
                 const auto c = internal::outline_crossings(piece, regions[i], heights, *lower);
