@@ -58,6 +58,7 @@ struct GradeArgs {
     std::string ease = tgr::to_string(tgr::GradingOptions{}.ease);
     bool store = false, replace = false, no_polish = !tgr::GradingOptions{}.ceres_polish;
     bool no_fs_bindings = false;
+    bool fs_seams_only = false;
     std::uint32_t seed = tgr::GradingOptions{}.seed;
     std::size_t population = tgr::GradingOptions{}.population;
     std::size_t generations = tgr::GradingOptions{}.generations;
@@ -163,7 +164,8 @@ void run_grade(const GradeArgs& a) {
     o.max_target_ratio = a.max_target_ratio;
     o.ceres_polish = !a.no_polish;
     o.ease = a.ease == "keep_mm" ? tgr::EaseMode::keep_mm : tgr::EaseMode::proportional;
-    tgr::GradeResult g = bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings);
+    tgr::GradeResult g =
+        bench::grade_as_tool(base, from, to, o, !a.no_fs_bindings, !a.fs_seams_only);
     // What grading added (FreeSewing's table), then one line per origin.
     std::map<std::string, std::vector<std::string>> by_origin;
     for (const tgr::FitRow& row : g.report.fit) {
@@ -269,7 +271,7 @@ void run_grade(const GradeArgs& a) {
         // The bindings graded with (inferred, given, or the pattern's own and FreeSewing's
         // table), on the base pattern's points.
         tp::Pattern bound = base;
-        if (!a.no_fs_bindings && bound.designer == "FreeSewing") {
+        if (!a.no_fs_bindings && !a.fs_seams_only && bound.designer == "FreeSewing") {
             tgr::add_freesewing_bindings(bound);
         }
         files.push_back({a.bindings_out, tp::bindings_file_json(bound).dump(1) + "\n"});
@@ -361,6 +363,10 @@ void register_grade_commands(CLI::App& app) {
     cmd->add_flag("--no-polish", a->no_polish, "Do not polish the front members with Ceres");
     cmd->add_flag("--no-freesewing-bindings", a->no_fs_bindings,
                   "Only the importer's bindings (no FreeSewing point-name bindings or seams)");
+    cmd->add_flag("--freesewing-seams-only", a->fs_seams_only,
+                  "FreeSewing's seam rules but no point-name bindings (with --base-body: only "
+                  "the bindings found on the body)")
+        ->excludes("--no-freesewing-bindings");
     cmd->add_option("--format", a->format, "Pattern format: auto, freesewing, garmentcode, json");
     cmd->add_option("--db", a->db, "Pattern database (SQLite file)");
     cmd->add_flag("--store", a->store, "Store the graded pattern in the database");

@@ -15,14 +15,16 @@ namespace tapeline::bench {
 
 grading::GradeResult grade_as_tool(pattern::Pattern base, const sizes::MeasurementSet& from,
                                    const sizes::MeasurementSet& to,
-                                   const grading::GradingOptions& options,
-                                   bool freesewing_bindings) {
+                                   const grading::GradingOptions& options, bool freesewing_bindings,
+                                   bool freesewing_table) {
     namespace tp = tapeline::pattern;
     const bool freesewing = freesewing_bindings && base.designer == "FreeSewing";
     std::vector<tp::SeamSpec> seams;
     std::vector<std::string> skipped;
     if (freesewing) {
-        grading::add_freesewing_bindings(base);
+        if (freesewing_table) {
+            grading::add_freesewing_bindings(base);
+        }
         // The importer stored the derived seams a pattern can hold; the rest join here.
         for (tp::SeamSpec& s : tp::freesewing_seams(base, &skipped)) {
             const bool held = std::any_of(base.seams.begin(), base.seams.end(),
