@@ -6,9 +6,10 @@ size (cisFemaleAdult36 -> 42 and 42 -> 36).
 Per design and direction, three gradings of the same base draft to the same target set:
   table  `grade --from SET`: the table's bindings (the run of benchmarks/run_grading.sh);
   found  `grade --base-body BODY`: the girths and lengths found by laying the draft on BODY,
-         eased against the values the draft declares; the table fills in what was not found (the
-         neck, shoulder width, girths whose level crosses an opening);
-  found only  as found with `--no-freesewing-bindings`: nothing from the table.
+         eased against the values the draft declares; the table fills in what was not found (a
+         scooped neckline, girths whose level crosses an opening such as a buttoned front);
+  found only  as found with `--freesewing-seams-only`: the design's seams, no binding from the
+         table.
 For each: the mean outline deviation from FreeSewing's draft of the target size (the mean over
 pieces of `--compare`'s mean distance) and from the table grading's pieces. The bindings are
 compared too: per girth bound both ways, the height of the found level on the draft against the
@@ -103,7 +104,7 @@ def main():
                 row["table"] = mean_deviation(table[0])
                 row["table_bound"] = len(table[0]["fit"])
                 body_args = ["--base-body", body, "--base-units", "dm"]
-                for tag, extra in (("found", []), ("only", ["--no-freesewing-bindings"])):
+                for tag, extra in (("found", []), ("only", ["--freesewing-seams-only"])):
                     res, err, secs = grade(tag, body_args + extra, other)
                     if res is None:
                         row[tag + "_error"] = err
@@ -151,7 +152,8 @@ def write(rows, binding_rows, a, body):
         "Mean outline deviation (mm; per piece the mean distance of `tapeline grade --compare`, "
         "averaged over pieces) of each grading from FreeSewing's own draft of the target size, "
         "and of the found gradings from the table grading. *found*: girths and lengths found on "
-        "the body, the table for the rest; *found only*: `--no-freesewing-bindings`.",
+        "the body, the table for the rest; *found only*: `--freesewing-seams-only` (the design's "
+        "seams, no binding from the table).",
         "",
         "| design | run | table: bound / vs FreeSewing | found: bound / vs FreeSewing / vs table "
         "| found only: bound / vs FreeSewing / vs table |",

@@ -31,6 +31,15 @@
 // point (acromion) along the arm: the cap's top is sewn to the end of the shoulder seam, which
 // sits on the shoulder point. A sleeve goes round one arm: a piece counts once (twice when cut on
 // the fold), whatever its cut count (its copies dress the other arm).
+//
+// Two girths are the garment's at the underarm, as garments are specified: the upper arm is the
+// sleeve's width at its underarm points (the top of its underarm seam, where the cap begins), and
+// a chest level above the bottom of the armhole (the top of the side seams), or less than
+// kChestBelowArmhole below it, is taken kChestBelowArmhole below it. The neck binds the
+// neckline's edges (from the upper end of each torso piece's shoulder seam to the centre line's
+// fold or seam) when front and back hold one and it is at most kNecklineAtNeck times the neck;
+// the back shoulder width binds, on each back piece, the span from the centre line to the
+// shoulder point level with it, counted twice.
 #pragma once
 
 #include <tapeline/core/errors.h>
@@ -64,6 +73,20 @@ inline constexpr double kLeastGirthRatio = 0.75;
 /// above it: a sleeve drafted to the wrist ends on the wrist's level, a block drafted to the hips
 /// on the hip's.
 inline constexpr double kHemReach = 10;
+
+/// How far (mm) below the bottom of the armhole a garment's chest is taken when the body's chest
+/// level lies higher: garment specifications measure the chest an inch below the armhole, where
+/// the side seams run straight.
+inline constexpr double kChestBelowArmhole = 25;
+
+/// The largest neckline, as a multiple of the neck's girth, that is bound to the neck: a wider
+/// one (a scoop, a boat neck) is a style line the neck does not set.
+inline constexpr double kNecklineAtNeck = 1.25;
+
+/// How far (mm) above the back neckline's end on the centre line the centre point level with
+/// the shoulder point may lie, in the neck: grading holds a piece's named points up to this far
+/// outside it (grading/internal/model.h, near_piece_mm).
+inline constexpr double kNeckReach = 25;
 
 /// What binding inference found.
 struct BindingInference {
@@ -112,8 +135,20 @@ inline std::vector<Crossing> outline_crossings(const pattern::Piece& piece, Regi
     return out;
 }
 
-/// The highest end, in the layout, of the seam side among `ranges` of `piece` that holds outline
-/// edge `edge`; nullopt when no range holds it.
+/// The layout height of point `p` of `piece` (a drafted piece's layout is relative to its
+/// outline's extent: the point is laid out with the outline's samples).
+inline double layout_height(const pattern::Piece& piece, Region region,
+                            const LayoutHeights& heights, const pattern::Point2& p) {
+    pattern::PieceMesh samples;
+    samples.uv = pattern::sample(piece.outline, 0.25).points;
+    samples.uv.push_back(p);
+    return piece_layout(piece, samples, region, heights.top_y, heights.waist_y, heights.gc_shift)
+        .h.back();
+}
+
+/// The upper end, in the layout, of the seam side among `ranges` of `piece` that holds outline
+/// edge `edge` (the highest on a trunk piece, the nearest the shoulder on a sleeve, whose layout
+/// height is the distance down the arm); nullopt when no range holds it.
 inline std::optional<pattern::Point2> seam_top(const pattern::Piece& piece, Region region,
                                                const LayoutHeights& heights, std::size_t edge,
                                                const std::vector<pattern::EdgeRange>& ranges) {
@@ -131,9 +166,33 @@ inline std::optional<pattern::Point2> seam_top(const pattern::Piece& piece, Regi
                    pattern::end_point(piece.outline.edges[(r.first_edge + r.count - 1) % n])};
         const PieceLayout l =
             piece_layout(piece, ends, region, heights.top_y, heights.waist_y, heights.gc_shift);
-        return ends.uv[l.h[0] >= l.h[1] ? 0 : 1];
+        const bool down = region == Region::sleeve_left || region == Region::sleeve_right;
+        return ends.uv[(l.h[0] >= l.h[1]) != down ? 0 : 1];
     }
     return std::nullopt;
+}
+
+/// The layout height of the upper end nearest level `y` among the seams of `ranges` that the
+/// level crosses on `piece`: above a trunk piece's waist, the top of its side seam (the bottom
+/// of the armhole; a centre seam ends higher, at the neck); down a sleeve, the top of its
+/// underarm seam (the underarm point, where the cap begins; a seam along the top of the arm ends
+/// higher, at the cap's top). nullopt when the level crosses no such seam.
+inline std::optional<double> nearest_seam_top(const pattern::Piece& piece, Region region,
+                                              const LayoutHeights& heights, double y,
+                                              const std::vector<pattern::EdgeRange>& ranges) {
+    const bool down = region == Region::sleeve_left || region == Region::sleeve_right;
+    std::optional<double> nearest;
+    for (const Crossing& x : outline_crossings(piece, region, heights, y)) {
+        const std::optional<pattern::Point2> top = seam_top(piece, region, heights, x.edge, ranges);
+        if (!top) {
+            continue;
+        }
+        const double h = layout_height(piece, region, heights, *top);
+        if ((down ? h < y : h > y) && (!nearest || (down ? h > *nearest : h < *nearest))) {
+            nearest = h;
+        }
+    }
+    return nearest;
 }
 
 /// How often a piece goes round the body (a trunk piece) or the arm (a sleeve).
@@ -214,12 +273,16 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             }
         }
     }
-    std::vector<pattern::EdgeRange> side_seams;  // the sides of seams joining trunk pieces
+    std::vector<pattern::EdgeRange> side_seams;    // the sides of seams joining trunk pieces
+    std::vector<pattern::EdgeRange> sleeve_seams;  // and of seams joining sleeve pieces
     for (const pattern::Seam& seam : base.seams) {
         const auto ra = region_of(seam.a.piece), rb = region_of(seam.b.piece);
-        if (ra && rb && trunk_region(*ra) && trunk_region(*rb)) {
-            side_seams.push_back(seam.a);
-            side_seams.push_back(seam.b);
+        for (const auto& [kind, ranges] :
+             {std::pair(trunk_region, &side_seams), std::pair(sleeve_region, &sleeve_seams)}) {
+            if (ra && rb && kind(*ra) && kind(*rb)) {
+                ranges->push_back(seam.a);
+                ranges->push_back(seam.b);
+            }
         }
     }
     const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
@@ -312,7 +375,71 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                             (declared_trunk && arm_scale != 1 ? ", " : "") +
                             (arm_scale != 1 ? "arm length" : "") + "), not the body's");
     }
+    const auto level_of = [&](const std::string& girth) -> std::optional<double> {
+        const measurement::Measurement* g = measurements.find(girth);
+        if (!g || !g->closed || std::abs(g->plane_normal[1]) < 0.9) {
+            return std::nullopt;
+        }
+        return trunk_level(girth, g->plane_point[1]);
+    };
+    // Where a garment's chest and a sleeve's biceps are taken: at the underarm. Above the waist
+    // the side seams end at the bottom of the armhole; a chest level above it, or less than
+    // kChestBelowArmhole below it, is taken kChestBelowArmhole below it. A sleeve's width
+    // at its underarm points, where the cap begins (the top of its underarm seam), is its biceps
+    // width (the biceps line of a sleeve draft), whatever the level of the body's own upper-arm
+    // girth.
+    std::optional<double> armhole_bottom;
+    if (const std::optional<double> waist = level_of("waist_girth")) {
+        for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+            if (placed[i] &&
+                (*placed[i] == Region::torso_front || *placed[i] == Region::torso_back)) {
+                const std::optional<double> top = internal::nearest_seam_top(
+                    base.pieces[i], regions[i], heights, *waist, side_seams);
+                if (top && (!armhole_bottom || *top < *armhole_bottom)) {
+                    armhole_bottom = top;
+                }
+            }
+        }
+    }
+    std::optional<double> underarm[2];
+    for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+        if (!placed[i] || !sleeve_region(*placed[i])) {
+            continue;
+        }
+        // The underarm seam crossed low on the sleeve (a curved hem may hide it at the end).
+        const int k = *placed[i] == Region::sleeve_left ? 0 : 1;
+        std::optional<double> top;
+        for (const double f : {0.97, 0.9, 0.75}) {
+            top = top ? top
+                      : internal::nearest_seam_top(base.pieces[i], regions[i], heights,
+                                                   cap_top[k] + f * (sleeve_end[k] - cap_top[k]),
+                                                   sleeve_seams);
+        }
+        // An underarm point within a centimetre of the cap's top is no cap (a sleeve cut on
+        // with the body, a seam along the top of the arm).
+        if (top && *top > cap_top[k] + 10 && (!underarm[k] || *top > *underarm[k])) {
+            underarm[k] = top;
+        }
+    }
     std::vector<pattern::MeasurementBinding> bindings;
+    // Binds `bound_name`, eased against `value`, to the span p0–p1 of `piece` counted `count`
+    // times, its ends named `length:<name>:a|b`; appends "piece N mm" to `pieces`.
+    const auto bind_span = [&bindings](pattern::Piece& piece, const std::string& name,
+                                       const std::string& bound_name, double value,
+                                       const pattern::Point2& p0, const pattern::Point2& p1,
+                                       double count, std::string& pieces) {
+        const std::string pa = "length:" + name + ":a", pb = "length:" + name + ":b";
+        piece.points[pa] = p0;
+        piece.points[pb] = p1;
+        const double len = count * std::hypot(p1.x - p0.x, p1.y - p0.y);
+        pattern::MeasurementBinding b;
+        b.measurement = bound_name;
+        b.features.push_back({piece.name, {}, pa, pb, count});
+        b.ease_mm = len - value;
+        bindings.push_back(std::move(b));
+        pieces += (pieces.empty() ? "" : ", ") + piece.name + " " +
+                  std::to_string(int(std::lround(len))) + " mm";
+    };
     const auto drop_points = [&base](const pattern::MeasurementBinding& b) {
         for (const pattern::BoundFeature& f : b.features) {
             pattern::Piece* piece = pattern::find_piece(base, f.piece);
@@ -366,8 +493,20 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             // just above the hem.
             y = sleeve_end[arm_k] - 1;
         }
-        const std::string at =
-            std::to_string(int(std::lround(y - top))) + (arm ? " mm below the cap's top" : " mm");
+        std::string where;  // why the level is not the body's
+        if (name == "bust_girth" && armhole_bottom && y > *armhole_bottom - kChestBelowArmhole) {
+            where = " (" + std::to_string(int(kChestBelowArmhole)) +
+                    " mm below the armhole; the body's level is " +
+                    std::to_string(int(std::lround(y - *armhole_bottom + kChestBelowArmhole))) +
+                    " mm higher)";
+            y = *armhole_bottom - kChestBelowArmhole;
+        } else if (name == "upper_arm_girth" && underarm[arm_k]) {
+            where = " (the underarm point; the body's level is " +
+                    std::to_string(int(std::lround(y - *underarm[arm_k] - 1))) + " mm lower)";
+            y = *underarm[arm_k] + 1;
+        }
+        const std::string at = std::to_string(int(std::lround(y - top))) +
+                               (arm ? " mm below the cap's top" : " mm") + where;
         pattern::MeasurementBinding b;
         b.measurement = pattern_name(name);
         if (undeclared(name, b.measurement)) {
@@ -442,6 +581,188 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             "ease " + std::to_string(int(std::lround(b.ease_mm))) + " mm, at " + at);
         bindings.push_back(std::move(b));
     }
+    // The neckline and the shoulders of each torso piece. Its shoulder seam is the trunk seam
+    // whose upper end is highest: that end (vertex `upper`) is the high point of the shoulder,
+    // the other (`lower`) the shoulder point. The neckline runs over the open edges from `upper`
+    // away from the seam to the first fold or trunk seam (the centre line, edge `centre`), all
+    // above the armhole.
+    struct Neckline {
+        std::size_t upper = 0, lower = 0, centre = 0;
+        std::size_t centre_top = 0;      ///< the vertex where the neckline meets the centre line
+        std::vector<std::size_t> edges;  ///< in outline order
+        double length = 0;
+    };
+    std::vector<std::optional<Neckline>> necklines(base.pieces.size());
+    std::string neckline_missing;  // why a torso piece has none
+    for (std::size_t i = 0; i < base.pieces.size() && armhole_bottom; ++i) {
+        if (!placed[i] || (*placed[i] != Region::torso_front && *placed[i] != Region::torso_back)) {
+            continue;
+        }
+        const pattern::Piece& piece = base.pieces[i];
+        const std::size_t n = piece.outline.edges.size();
+        const auto vertex_h = [&](std::size_t v) {
+            return internal::layout_height(piece, regions[i], heights,
+                                           pattern::start_point(piece.outline.edges[v % n]));
+        };
+        Neckline nl;
+        bool found = false, seam_before = false;  // the seam's range ends at `upper`
+        double upper_h = -1e300;
+        for (const pattern::EdgeRange& r : side_seams) {
+            if (r.piece != piece.name || n == 0) {
+                continue;
+            }
+            const std::size_t v0 = r.first_edge % n, v1 = (r.first_edge + r.count) % n;
+            for (const std::size_t v : {v0, v1}) {
+                if (const double h = vertex_h(v); h > upper_h) {
+                    upper_h = h;
+                    nl.upper = v;
+                    nl.lower = v == v0 ? v1 : v0;
+                    seam_before = v == v1;
+                    found = true;
+                }
+            }
+        }
+        // A seam that ends below the armhole (a side seam) is no shoulder seam.
+        found = found && vertex_h(nl.lower) > *armhole_bottom;
+        bool closed = false;
+        for (std::size_t k = 0; found && k < n; ++k) {
+            const std::size_t e = seam_before ? (nl.upper + k) % n : (nl.upper + n - 1 - k) % n;
+            if (closed_edges.count({piece.name, e})) {
+                nl.centre = e;
+                nl.centre_top = seam_before ? e : (e + 1) % n;
+                closed = true;
+                break;
+            }
+            if (vertex_h(seam_before ? e + 1 : e) < *armhole_bottom) {
+                break;
+            }
+            nl.edges.push_back(e);
+            nl.length += pattern::length(piece.outline.edges[e]);
+        }
+        if (!closed || nl.edges.empty()) {
+            neckline_missing = "on piece " + piece.name +
+                               (found ? " the open edges from the shoulder seam's upper end reach "
+                                        "no fold or seam above the armhole"
+                                      : " no seam above the armhole joins it to another "
+                                        "torso piece");
+            continue;
+        }
+        if (!seam_before) {
+            std::reverse(nl.edges.begin(), nl.edges.end());
+        }
+        necklines[i] = std::move(nl);
+    }
+    // The neck: the necklines of the front and back pieces, when they sit at the neck. A
+    // neckline more than kNecklineAtNeck times the neck is a style line (a scoop, a boat neck)
+    // that the neck's girth does not set.
+    [&] {
+        const std::string name = "neck_girth";
+        const std::string bound_name =
+            base.measurements_used.count(sizes::freesewing_name(name)) > 0
+                ? sizes::freesewing_name(name)
+                : std::string("neck_base_girth");
+        if (undeclared(name, bound_name)) {
+            return;
+        }
+        const measurement::Measurement* g = measurements.find("neck_base_girth");
+        g = g && g->value > 0 ? g : measurements.find(name);
+        const auto declared = base.measurements_used.find(bound_name);
+        const bool own = declared != base.measurements_used.end();
+        const double value = own ? declared->second : g && g->value > 0 ? g->value : 0;
+        pattern::MeasurementBinding b;
+        b.measurement = bound_name;
+        double garment = 0;
+        bool front = false, back = false;
+        std::string pieces;
+        for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+            if (!necklines[i]) {
+                continue;
+            }
+            const double c = internal::girth_count(base.pieces[i], false);
+            b.features.push_back({base.pieces[i].name, necklines[i]->edges, {}, {}, c});
+            garment += c * necklines[i]->length;
+            (*placed[i] == Region::torso_front ? front : back) = true;
+            pieces += (pieces.empty() ? "" : ", ") + base.pieces[i].name +
+                      (c != 1 ? " ×" + std::to_string(int(c)) : "");
+        }
+        const auto mm = [](double v) { return std::to_string(int(std::lround(v))); };
+        const std::string why =
+            value <= 0                  ? "the body has no neck girth"
+            : !armhole_bottom           ? "no armhole found below a neckline"
+            : !neckline_missing.empty() ? neckline_missing
+            : !(front && back)
+                ? std::string("no ") + (front ? "back" : "front") + " torso piece holds a neckline"
+            : garment < kLeastGirthRatio * value ? "the necklines come to " + mm(garment) +
+                                                       " mm round a neck of " + mm(value) + " mm"
+            : garment > kNecklineAtNeck * value
+                ? "the neckline, " + mm(garment) + " mm, is wider than the neck (" + mm(value) +
+                      " mm) by more than a quarter: a style line, not set by the neck"
+                : "";
+        if (!why.empty()) {
+            out.notes.push_back(name + ": not bound (" + why + ")");
+            return;
+        }
+        b.ease_mm = garment - value;
+        out.notes.push_back(b.measurement + ": the neckline of " + pieces + "; garment " +
+                            mm(garment) + " mm, " + (own ? "drafted for " : "body ") + mm(value) +
+                            " mm, ease " + mm(b.ease_mm) + " mm");
+        bindings.push_back(std::move(b));
+    }();
+    // The shoulder width across the back: on each back piece from the centre line to the
+    // shoulder point, level with it (both sides: count 2); the centre point may lie in the neck
+    // by up to kNeckReach.
+    [&] {
+        const std::string name = "shoulder_width_back";
+        const std::string bound_name = pattern_name(name);
+        if (undeclared(name, bound_name)) {
+            return;
+        }
+        const measurement::Measurement* m = measurements.find(name);
+        const auto declared = base.measurements_used.find(bound_name);
+        const bool own = declared != base.measurements_used.end();
+        const double value = own ? declared->second : m && m->value > 0 ? m->value : 0;
+        if (value <= 0) {
+            out.notes.push_back(name + ": not bound (the body has no " + name + ")");
+            return;
+        }
+        std::string pieces;
+        for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+            if (!necklines[i] || *placed[i] != Region::torso_back) {
+                continue;
+            }
+            pattern::Piece& piece = base.pieces[i];
+            const Neckline& nl = *necklines[i];
+            const std::size_t n = piece.outline.edges.size();
+            const pattern::Point2 p = pattern::start_point(piece.outline.edges[nl.lower % n]);
+            // The centre line: the fold's line, else the line of the centre edge; the point on it
+            // at the shoulder point's height must lie below the neckline's end on it.
+            const pattern::Point2 c0 = piece.fold && piece.fold->edge == nl.centre
+                                           ? piece.fold->line.a
+                                           : pattern::start_point(piece.outline.edges[nl.centre]);
+            const pattern::Point2 c1 = piece.fold && piece.fold->edge == nl.centre
+                                           ? piece.fold->line.b
+                                           : pattern::end_point(piece.outline.edges[nl.centre]);
+            if (std::abs(c1.y - c0.y) < 1e-6) {
+                continue;
+            }
+            const double t = (p.y - c0.y) / (c1.y - c0.y);
+            const pattern::Point2 c{c0.x + t * (c1.x - c0.x), p.y};
+            const pattern::Point2 centre_top =
+                pattern::start_point(piece.outline.edges[nl.centre_top]);
+            if (internal::layout_height(piece, regions[i], heights, c) >
+                    internal::layout_height(piece, regions[i], heights, centre_top) + kNeckReach ||
+                std::hypot(p.x - c.x, p.y - c.y) < 10) {
+                continue;  // the centre line at the shoulder's height is deep in the neck
+            }
+            bind_span(piece, name, bound_name, value, c, p, 2, pieces);
+        }
+        out.notes.push_back(
+            pieces.empty() ? name +
+                                 ": not bound (no back piece holds its centre line level with the "
+                                 "shoulder point)"
+                           : bound_name + ": " + pieces + " (" + (own ? "drafted for " : "body ") +
+                                 std::to_string(int(std::lround(value))) + " mm), one per piece");
+    }();
     // Vertical lengths, one binding per piece (a length each piece realises on its own), each
     // along the layout's vertical line s = const of the piece: on trunk pieces at their centre
     // line (the back length from the top of a back piece to the waist; the waist to the high hip
@@ -460,13 +781,6 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         {"waist_to_high_hip", "waist_girth", "high_hip_girth", false, false},
         {"waist_to_hips", "waist_girth", "hip_girth", false, false},
         {"shoulder_to_wrist", "", "", false, false},
-    };
-    const auto level_of = [&](const std::string& girth) -> std::optional<double> {
-        const measurement::Measurement* g = measurements.find(girth);
-        if (!g || !g->closed || std::abs(g->plane_normal[1]) < 0.9) {
-            return std::nullopt;
-        }
-        return trunk_level(girth, g->plane_point[1]);
     };
     for (const LengthRule& rule : length_rules) {
         const std::string name = rule.name;
@@ -500,20 +814,10 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         std::size_t found = 0;
         const auto add_length = [&](pattern::Piece& piece, const pattern::Point2& p0,
                                     const pattern::Point2& p1) {
-            const double len = std::hypot(p1.x - p0.x, p1.y - p0.y);
-            if (len < 10) {
+            if (std::hypot(p1.x - p0.x, p1.y - p0.y) < 10) {
                 return;
             }
-            const std::string pa = "length:" + name + ":a", pb = "length:" + name + ":b";
-            piece.points[pa] = p0;
-            piece.points[pb] = p1;
-            pattern::MeasurementBinding b;
-            b.measurement = bound_name;
-            b.features.push_back({piece.name, {}, pa, pb, 1});
-            b.ease_mm = len - value;
-            bindings.push_back(std::move(b));
-            pieces += (pieces.empty() ? "" : ", ") + piece.name + " " +
-                      std::to_string(int(std::lround(len))) + " mm";
+            bind_span(piece, name, bound_name, value, p0, p1, 1, pieces);
             ++found;
         };
         for (std::size_t i = 0; i < base.pieces.size(); ++i) {
@@ -545,11 +849,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                     if (!top) {
                         continue;
                     }
-                    pattern::PieceMesh end;
-                    end.uv = {*top};
-                    if (piece_layout(piece, end, regions[i], heights.top_y, heights.waist_y,
-                                     heights.gc_shift)
-                            .h[0] <= *lower) {
+                    if (internal::layout_height(piece, regions[i], heights, *top) <= *lower) {
                         continue;  // the seam ends below the level: no armhole above it
                     }
                     add_length(piece, x.p, *top);
