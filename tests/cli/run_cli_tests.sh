@@ -855,6 +855,24 @@ for x in b["bindings"]:
 PY
 then ok "grade: declared measurements bound, eased against, origins reported"
 else fail "grade: a FreeSewing draft from another body"; fi
+# The design's seams without the table's bindings: the same found bindings, graded with the seams
+# the design table adds (aaron's binding strips against the armhole and neckline) that
+# --no-freesewing-bindings leaves out; the two flags together are refused.
+seams_of() { $py -c "import json, sys; print(' '.join(sorted(s['name'].replace(' ', '_') for s in json.load(open(sys.argv[1]))['seams'])))" "$1"; }
+expect_ok "grade --freesewing-seams-only" "$bin" grade "$fs" --base-body "$bodyf" --base-units dm \
+  --to fs_target.json --out so.json --report so_r.json --generations 0 --freesewing-seams-only
+cp out.txt so_out.txt
+expect_ok "grade --no-freesewing-bindings" "$bin" grade "$fs" --base-body "$bodyf" --base-units dm \
+  --to fs_target.json --out no.json --report no_r.json --generations 0 --no-freesewing-bindings
+if [ "$(seams_of so_r.json)" = "armhole_binding neck_binding shoulder side" ] &&
+   [ "$(seams_of no_r.json)" = "shoulder side" ] &&
+   grep -q "^binding: origin: found on the body: chest, hips," so_out.txt &&
+   ! grep -q "FreeSewing table" so_out.txt
+then ok "grade: --freesewing-seams-only adds the design's seams, no table binding"
+else fail "grade: --freesewing-seams-only (seams: $(seams_of so_r.json) / $(seams_of no_r.json))"; fi
+expect_fail "grade: --freesewing-seams-only with --no-freesewing-bindings" \
+  "excludes --freesewing-seams-only" "$bin" grade "$fs" --base-body "$bodyf" --base-units dm \
+  --to fs_target.json --out x.json --freesewing-seams-only --no-freesewing-bindings
 fi
 
 if in_section grade_options; then
