@@ -277,12 +277,13 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     std::vector<pattern::EdgeRange> sleeve_seams;  // and of seams joining sleeve pieces
     for (const pattern::Seam& seam : base.seams) {
         const auto ra = region_of(seam.a.piece), rb = region_of(seam.b.piece);
-        for (const auto& [kind, ranges] :
-             {std::pair(trunk_region, &side_seams), std::pair(sleeve_region, &sleeve_seams)}) {
-            if (ra && rb && kind(*ra) && kind(*rb)) {
-                ranges->push_back(seam.a);
-                ranges->push_back(seam.b);
-            }
+        if (ra && rb && trunk_region(*ra) && trunk_region(*rb)) {
+            side_seams.push_back(seam.a);
+            side_seams.push_back(seam.b);
+        }
+        if (ra && rb && sleeve_region(*ra) && sleeve_region(*rb)) {
+            sleeve_seams.push_back(seam.a);
+            sleeve_seams.push_back(seam.b);
         }
     }
     const BodyShape shape = body_shape(body.points(), body.triangles(), body.height(), landmarks);
