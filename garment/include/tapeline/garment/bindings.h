@@ -136,11 +136,13 @@ inline std::vector<Crossing> outline_crossings(const pattern::Piece& piece, Regi
 }
 
 /// The layout height of point `p` of `piece` (a drafted piece's layout is relative to its
-/// outline's extent: the point is laid out with the outline's samples).
+/// outline's extent: the point is laid out with the outline's samples, `outline` when given,
+/// else sampled here every 0.25 mm).
 inline double layout_height(const pattern::Piece& piece, Region region,
-                            const LayoutHeights& heights, const pattern::Point2& p) {
+                            const LayoutHeights& heights, const pattern::Point2& p,
+                            const std::vector<pattern::Point2>* outline = nullptr) {
     pattern::PieceMesh samples;
-    samples.uv = pattern::sample(piece.outline, 0.25).points;
+    samples.uv = outline ? *outline : pattern::sample(piece.outline, 0.25).points;
     samples.uv.push_back(p);
     return piece_layout(piece, samples, region, heights.top_y, heights.waist_y, heights.gc_shift)
         .h.back();
@@ -603,7 +605,8 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
         const std::size_t n = piece.outline.edges.size();
         const auto vertex_h = [&](std::size_t v) {
             return internal::layout_height(piece, regions[i], heights,
-                                           pattern::start_point(piece.outline.edges[v % n]));
+                                           pattern::start_point(piece.outline.edges[v % n]),
+                                           &outline_points[i]);
         };
         Neckline nl;
         bool found = false, seam_before = false;  // the seam's range ends at `upper`
@@ -737,12 +740,11 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             const pattern::Point2 p = pattern::start_point(piece.outline.edges[nl.lower % n]);
             // The centre line: the fold's line, else the line of the centre edge; the point on it
             // at the shoulder point's height must lie below the neckline's end on it.
-            const pattern::Point2 c0 = piece.fold && piece.fold->edge == nl.centre
-                                           ? piece.fold->line.a
-                                           : pattern::start_point(piece.outline.edges[nl.centre]);
-            const pattern::Point2 c1 = piece.fold && piece.fold->edge == nl.centre
-                                           ? piece.fold->line.b
-                                           : pattern::end_point(piece.outline.edges[nl.centre]);
+            const bool on_fold = piece.fold && piece.fold->edge == nl.centre;
+            const pattern::Point2 c0 =
+                on_fold ? piece.fold->line.a : pattern::start_point(piece.outline.edges[nl.centre]);
+            const pattern::Point2 c1 =
+                on_fold ? piece.fold->line.b : pattern::end_point(piece.outline.edges[nl.centre]);
             if (std::abs(c1.y - c0.y) < 1e-6) {
                 continue;
             }
@@ -750,8 +752,10 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             const pattern::Point2 c{c0.x + t * (c1.x - c0.x), p.y};
             const pattern::Point2 centre_top =
                 pattern::start_point(piece.outline.edges[nl.centre_top]);
-            if (internal::layout_height(piece, regions[i], heights, c) >
-                    internal::layout_height(piece, regions[i], heights, centre_top) + kNeckReach ||
+            if (internal::layout_height(piece, regions[i], heights, c, &outline_points[i]) >
+                    internal::layout_height(piece, regions[i], heights, centre_top,
+                                            &outline_points[i]) +
+                        kNeckReach ||
                 std::hypot(p.x - c.x, p.y - c.y) < 10) {
                 continue;  // the centre line at the shoulder's height is deep in the neck
             }
