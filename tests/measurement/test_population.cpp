@@ -1,11 +1,16 @@
 // The MakeHuman population in ../shared/data/bodies/population (random gender, age, muscle,
 // weight, height, proportions, breasts; decimetres, +Y up, A-pose): on every body every landmark
 // is found, every measurement taken and no self-check warns, except on the bodies listed in
-// known_failure, where the failure must be flagged. Skipped when the data is absent.
+// known_failure, where the failure must be flagged. The ankle level is held against MakeHuman's
+// own ankle loop on the same mesh, an independent placement. Skipped when the data is absent.
 #include <tapeline_test/measurement.h>
+#include <tapeline_test/measurement_checks.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -74,6 +79,49 @@ TEST_P(Population, EveryLandmarkEveryMeasurementNoWarning) {
             EXPECT_GT(m.value, 0) << name << ": " << m.name;
             EXPECT_LT(m.value, r.frame.height) << name << ": " << m.name;
         }
+    }
+}
+
+// ISO 8559-1 takes the ankle girth just above the malleoli. MakeHuman's ankle ruler is a fixed
+// loop of the base mesh's vertices there, carried along by every shape: its mean height places the
+// level independently of our scan. Ours is within 1.5 % of the stature of it on each leg (a
+// straight shin's smallest girth lay 1.6-3.2 % above it, halfway to the calf).
+TEST_P(Population, AnkleLevelAtMakeHumansAnkleLoop) {
+    char name[32];
+    std::snprintf(name, sizeof name, "mh_pop_%03d.ply", GetParam());
+    const std::string rulers = std::string(TAPELINE_SHARED_DATA_DIR) + "/bodies/measurements.json";
+    if (!std::ifstream(kDir + name).good() || !std::ifstream(rulers).good()) {
+        GTEST_SKIP() << "no " << kDir << name << " or " << rulers;
+    }
+    const auto loop =
+        nlohmann::json::parse(std::ifstream(rulers))["ruler_vertex_sequences"]["ankle_circ"]
+            .get<std::vector<int>>();
+    const Soup soup = read_body_soup(kDir + name);
+    ASSERT_EQ(soup.points.size(), 13380u) << name << ": not MakeHuman's base-mesh vertices";
+    double floor = soup.points.front()[1], top = floor;
+    for (const auto& p : soup.points) {
+        floor = std::min(floor, p[1]);
+        top = std::max(top, p[1]);
+    }
+    // The loop is the left leg's (+x); the body mirrors, so it stands for both.
+    double mean = 0;
+    for (int v : loop) {
+        ASSERT_GT(soup.points[static_cast<std::size_t>(v)][0], 0) << name << ": loop not on +x";
+        mean += soup.points[static_cast<std::size_t>(v)][1];
+    }
+    mean /= static_cast<double>(loop.size());
+    const double stature = (top - floor) * 100, loop_mm = (mean - floor) * 100;  // dm -> mm
+    BodyOptions o;
+    o.unit = LengthUnit::dm;
+    o.name = name;
+    const Result r = measure_file(kDir + name, o);
+    ASSERT_NEAR(r.frame.height, stature, 1.0) << name;
+    for (const char* ankle : {"ankle_left", "ankle_right"}) {
+        const auto* l = r.landmarks.find(ankle);
+        ASSERT_TRUE(l && l->available()) << name << ": " << ankle;
+        EXPECT_NEAR(l->point[1], loop_mm, 0.015 * stature)
+            << name << ": " << ankle << " at " << l->point[1] / stature
+            << " of the stature, MakeHuman's ankle loop at " << loop_mm / stature;
     }
 }
 

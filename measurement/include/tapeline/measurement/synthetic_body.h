@@ -119,6 +119,21 @@ public:
     double leg_girth(double y) const {
         return ellipse_perimeter(leg_a_(y), leg_b_ratio() * leg_a_(y));
     }
+    /// Where the ankle girth is taken (ISO 8559-1: just above the malleoli): the lowest height
+    /// from 2.5 % of the stature up whose leg girth is within `tolerance` mm of the smallest leg
+    /// girth up to 12 % (kAnkle is that smallest one; the profile is flat around it).
+    double ankle_level(double tolerance) const {
+        const double lo = 0.025 * kHeight, hi = 0.12 * kHeight, dy = 0.01;
+        double smallest = leg_girth(lo);
+        for (double y = lo; y <= hi; y += dy) {
+            smallest = std::min(smallest, leg_girth(y));
+        }
+        double y = lo;
+        while (y < hi && leg_girth(y) > smallest + tolerance) {
+            y += dy;
+        }
+        return y;
+    }
     /// Exact girth of the neck at height y.
     double neck_girth(double y) const {
         return ellipse_perimeter(neck_a_(y), neck_b_ratio() * neck_a_(y));

@@ -154,6 +154,10 @@ private:
     /// Waist level on a torso without a waist indentation, as a fraction of the way from the
     /// crotch to the armpit.
     static constexpr double kWaistFraction = 0.57;
+    /// How much larger than the leg's smallest girth above the foot the ankle level's girth may
+    /// be, mm: ISO 20685-1's tolerance for small girths (4 mm), below which two tapes are one
+    /// measurement.
+    static constexpr double kAnkleGirthTolerance = 4.0;
 
     static double side_sign(int s) { return s == 0 ? 1.0 : -1.0; }
     static const char* side_name(int s) { return s == 0 ? "left" : "right"; }
@@ -1365,9 +1369,10 @@ private:
         return std::nullopt;
     }
 
-    /// Legs, on the horizontal scan: ankle = smallest leg girth between 2.5% and 12% of the
-    /// height (above the foot), knee = smallest leg girth between the calf (largest girth from
-    /// the ankle to 35% of the height) and the crotch level minus 5% of the height.
+    /// Legs, on the horizontal scan: ankle = the lowest level between 2.5% and 12% of the height
+    /// (above the foot) whose leg girth is within kAnkleGirthTolerance of the smallest there,
+    /// knee = smallest leg girth between the calf (largest girth from the ankle to 35% of the
+    /// height) and the crotch level minus 5% of the height.
     void find_legs() {
         for (int s = 0; s < 2; ++s) {
             const std::string knee = std::string("knee_") + side_name(s);
@@ -1421,11 +1426,24 @@ private:
                 }
                 return best;
             };
-            const int a = pick(y_of(0.025), y_of(0.12), false);
+            int a = pick(y_of(0.025), y_of(0.12), false);
             if (a < 0) {
                 set_missing(ankle, "no leg section between 2.5% and 12% of the height");
                 set_missing(knee, "needs the ankle");
                 continue;
+            }
+            // ISO 8559-1 takes the ankle girth just above the malleoli. A straight, slender shin
+            // narrows by a few millimetres all the way up, and its smallest girth sat at 10-12 %
+            // of the height, halfway to the calf, where the lower leg's tape is the same to the
+            // standard's tolerance: the level is the lowest one that close to the smallest girth
+            // (the malleoli's bulge below rises well past it).
+            const double ankle_limit =
+                prof[static_cast<std::size_t>(a)].perimeter + kAnkleGirthTolerance;
+            for (std::size_t i = 0; i < static_cast<std::size_t>(a); ++i) {
+                if (prof[i].t >= y_of(0.025) && prof[i].perimeter <= ankle_limit) {
+                    a = static_cast<int>(i);
+                    break;
+                }
             }
             const LimbSample& as = prof[static_cast<std::size_t>(a)];
             set_found(ankle, as.outer, &as.centre);
