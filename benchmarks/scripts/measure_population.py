@@ -2,7 +2,9 @@
 """Runs `tapeline measure` on the MakeHuman population and the bundled bodies and writes a table:
 per body, landmarks found, missing measurements, self-check warnings, each girth against
 MakeHuman's ruler (difference in mm; MakeHuman's ruler is a vertex loop on the base mesh, a sanity
-band, not truth) and the time.
+band, not truth) and the time. On bodies with MakeHuman's base-mesh vertices it also holds the bust,
+waist, hip, knee and ankle levels against the mean height of MakeHuman's ruler loops there (fixed
+vertex loops carried along by every shape: an independent placement of those levels).
 
 usage: measure_population.py TAPELINE DATA_DIR OUT.md [--bodies dev|holdout|all] [--json OUT.json]
                              [--population DIR]
@@ -17,6 +19,7 @@ import argparse
 import json
 import os
 import statistics
+import struct
 import subprocess
 import sys
 import tempfile
@@ -30,6 +33,42 @@ RULERS = [("neck_circ", "neck_girth"), ("bust_circ", "bust_girth"),
           ("knee_circ", "knee_girth"), ("calf_circ", "calf_girth"),
           ("ankle_circ", "ankle_girth")]
 HOLDOUT = range(30, 40)
+# Our landmark -> MakeHuman ruler loop whose mean height places the same level (by MakeHuman's
+# own definition, which need not be ours: its waist loop is lower than the narrowest girth).
+LEVELS = [("bust_left", "bust_circ"), ("waist_front", "waist_circ"), ("hip_back", "hips_circ"),
+          ("knee_left", "knee_circ"), ("ankle_left", "ankle_circ")]
+BASE_MESH_VERTICES = 13380
+
+
+def vertex_heights(path):
+    """The y of every vertex of a binary little-endian PLY (float x y z first) or an OBJ."""
+    if path.endswith(".obj"):
+        return [float(line.split()[2]) for line in open(path) if line.startswith("v ")]
+    data = open(path, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().splitlines()
+    if "format binary_little_endian 1.0" not in header:
+        return []
+    n = int(next(h for h in header if h.startswith("element vertex")).split()[2])
+    props = []
+    for h in header[header.index(next(h for h in header if h.startswith("element vertex"))) + 1:]:
+        if not h.startswith("property"):
+            break
+        props.append(h.split()[1])
+    if props[:3] != ["float"] * 3 or any(t != "float" for t in props):
+        return []
+    stride = 4 * len(props)
+    return [struct.unpack_from("<f", data, end + i * stride + 4)[0] for i in range(n)]
+
+
+def loop_levels(path, loops):
+    """Mean height above the floor (mm, decimetre input) of each ruler loop, or {} when the mesh
+    does not carry MakeHuman's base-mesh vertices."""
+    ys = vertex_heights(path)
+    if len(ys) != BASE_MESH_VERTICES:
+        return {}
+    floor = min(ys)
+    return {k: 100.0 * (statistics.mean(ys[i] for i in loops[k]) - floor) for _, k in LEVELS}
 
 
 def bodies(data, which):
@@ -75,6 +114,8 @@ def main():
         a.bodies = "population of %s, seed %s" % (os.path.basename(a.population.rstrip("/")), seed)
     else:
         todo = bodies(a.data, a.bodies)
+    loops = json.load(open(os.path.join(a.data, "measurements.json"))).get(
+        "ruler_vertex_sequences", {})
     rows = []
     with tempfile.TemporaryDirectory() as work:
         for name, path, ruler in todo:
@@ -103,6 +144,12 @@ def main():
             for mh, ours in RULERS:
                 if mh in ruler and ours in vals:
                     row["diff"][ours] = vals[ours] - 10.0 * ruler[mh]
+            points = {l["name"]: l.get("point") for l in j["landmarks"]}
+            row["level"] = {}
+            levels = loop_levels(path, loops) if all(k in loops for _, k in LEVELS) else {}
+            for ours, mh in LEVELS:
+                if mh in levels and points.get(ours):
+                    row["level"][ours] = points[ours][1] - levels[mh]
             rows.append(row)
             print("%-36s %s" % (name, row.get("landmarks", row.get("error"))), file=sys.stderr)
     if a.json:
@@ -138,6 +185,19 @@ def write_table(rows, a):
         worst = max(d, key=lambda x: abs(x[0]))
         L.append("| %s | %d | %+.1f | %.1f | %+.1f (%s) |" % (
             g, len(d), statistics.mean(x for x, _ in d), statistics.mean(abs(x) for x, _ in d),
+            worst[0], worst[1]))
+    L += ["", "Landmark levels against MakeHuman's ruler loops (our height minus the loop's mean "
+          "height, mm; bodies with MakeHuman's base-mesh vertices):", "",
+          "| landmark | loop | n | mean diff mm | sd mm | mean abs mm | worst mm (body) |",
+          "|---|---|---|---|---|---|---|"]
+    for ours, mh in LEVELS:
+        d = [(r["level"][ours], r["body"]) for r in ok if ours in r.get("level", {})]
+        if not d:
+            continue
+        worst = max(d, key=lambda x: abs(x[0]))
+        L.append("| %s | %s | %d | %+.1f | %.1f | %.1f | %+.1f (%s) |" % (
+            ours, mh, len(d), statistics.mean(x for x, _ in d),
+            statistics.pstdev(x for x, _ in d), statistics.mean(abs(x) for x, _ in d),
             worst[0], worst[1]))
     L += ["", "| body | landmarks | missing | warnings | " +
           " | ".join(short[g] for g in names) + " | time s |",
