@@ -158,6 +158,9 @@ private:
     /// be, mm: ISO 20685-1's tolerance for small girths (4 mm), below which two tapes are one
     /// measurement.
     static constexpr double kAnkleGirthTolerance = 4.0;
+    /// How far below the knee hollow's rearmost point (mm, in z) the leg's back outline still
+    /// counts as the hollow (popliteal_hollow).
+    static constexpr double kHollowDepth = 2.0;
 
     static double side_sign(int s) { return s == 0 ? 1.0 : -1.0; }
     static const char* side_name(int s) { return s == 0 ? "left" : "right"; }
@@ -1369,10 +1372,51 @@ private:
         return std::nullopt;
     }
 
+    /// The level of the knee's back hollow on a leg profile: the first sample at or above
+    /// `from` (less one scan step) whose back z is the largest within 2 % of the height either
+    /// way, below the crotch less 5 % of the height. The hollow is shallow (its back z within
+    /// 3 mm over 30-50 mm of height on long legs): the level is the centroid of the samples in
+    /// that window weighted by how far their back z is above the peak's less kHollowDepth. The
+    /// peak sample itself, or a parabola through it, moved the knee girth by more than ISO
+    /// 20685-1's 4 mm between a body and its re-meshed copy on 6 of 49 bodies; the centroid on
+    /// none.
+    std::optional<double> popliteal_hollow(const std::vector<LimbSample>& prof, double from) const {
+        const double window = 0.02 * height_, top = *crotch_y_ - 0.05 * height_;
+        for (std::size_t i = 0; i < prof.size(); ++i) {
+            if (prof[i].t < from - step_) {
+                continue;
+            }
+            if (prof[i].t + window > top) {
+                break;
+            }
+            bool peak = true;
+            for (std::size_t j = 0; j < prof.size() && peak; ++j) {
+                if (j != i && std::abs(prof[j].t - prof[i].t) <= window) {
+                    peak = prof[j].back[2] <= prof[i].back[2];
+                }
+            }
+            if (!peak) {
+                continue;
+            }
+            const double limit = prof[i].back[2] - kHollowDepth;
+            double sw = 0, swy = 0;
+            for (const auto& sample : prof) {
+                if (std::abs(sample.t - prof[i].t) <= window) {
+                    const double w = std::max(0.0, sample.back[2] - limit);
+                    sw += w;
+                    swy += w * sample.t;
+                }
+            }
+            return swy / sw;
+        }
+        return std::nullopt;
+    }
+
     /// Legs, on the horizontal scan: ankle = the lowest level between 2.5% and 12% of the height
-    /// (above the foot) whose leg girth is within kAnkleGirthTolerance of the smallest there,
-    /// knee = smallest leg girth between the calf (largest girth from the ankle to 35% of the
-    /// height) and the crotch level minus 5% of the height.
+    /// (above the foot) whose leg girth is within kAnkleGirthTolerance of the smallest there;
+    /// knee = the hollow of the knee's back (popliteal_hollow) above the smallest leg girth
+    /// between the calf (largest girth from the ankle to 35% of the height) and the crotch level
+    /// minus 5% of the height.
     void find_legs() {
         for (int s = 0; s < 2; ++s) {
             const std::string knee = std::string("knee_") + side_name(s);
@@ -1396,7 +1440,7 @@ private:
                 sample.area = sec.area;
                 sample.centre = ps.plane.to3(sec.centroid);
                 const double sg = side_sign(s);
-                Vec2 outer = sec.hull.front(), front = sec.hull.front();
+                Vec2 outer = sec.hull.front(), front = sec.hull.front(), back = sec.hull.front();
                 for (const auto& q : sec.hull) {
                     if (sg * q[0] > sg * outer[0]) {
                         outer = q;
@@ -1404,9 +1448,13 @@ private:
                     if (q[1] < front[1]) {  // w = -z
                         front = q;
                     }
+                    if (q[1] > back[1]) {
+                        back = q;
+                    }
                 }
                 sample.outer = ps.plane.to3(outer);
                 sample.front = ps.plane.to3(front);
+                sample.back = ps.plane.to3(back);
                 prof.push_back(sample);
             }
             leg_profile[s] = prof;
@@ -1496,7 +1544,17 @@ private:
                 sw += w;
                 swy += w * prof[i].t;
             }
-            const double y = sw > 0 ? swy / sw : prof[*k].t;
+            double y = sw > 0 ? swy / sw : prof[*k].t;
+            // That narrowing is the shin just below the kneecap (the tibia's top): 40-140 mm
+            // below MakeHuman's own knee loop on its bodies, and below 0.23 of the stature on
+            // short legs. The knee joint is higher, at the hollow of the knee's back (popliteal
+            // fossa), between the calf's and the thigh's bulges: the first local maximum of the
+            // leg's back outline (its rearmost point's z, ±2 % of the height) going up from
+            // the narrowing, at the centre of the hollow. A leg with no such hollow below the
+            // thigh keeps the narrowing.
+            if (const auto hollow = popliteal_hollow(prof, y); hollow) {
+                y = *hollow;
+            }
             const Plane plane = Plane::horizontal(y);
             const PlaneSection ps = horizontal(y);
             const int ls = ps.locate(plane.to2(prof[*k].centre));
