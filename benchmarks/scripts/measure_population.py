@@ -112,6 +112,8 @@ def main():
     if a.population:
         todo, seed = population_bodies(a.population)
         a.bodies = "population of %s, seed %s" % (os.path.basename(a.population.rstrip("/")), seed)
+        a.drawn = ("`MAKEHUMAN_GIT=… MAKEHUMAN_ASSETS_GIT=… ../shared/data_tools/mh_population.py "
+                   "%s %d %s`, then " % (a.population.rstrip("/"), len(todo), seed))
     else:
         todo = bodies(a.data, a.bodies)
     loops = json.load(open(os.path.join(a.data, "measurements.json"))).get(
@@ -165,12 +167,13 @@ def write_table(rows, a):
     nwarn = sum(len(r["warnings"]) for r in ok)
     times = [r["time"] for r in ok]
     L = ["# Body measurement on a population of bodies", "",
-         "`%s` (bodies: %s). Girth columns: our value minus MakeHuman's ruler, mm (the ruler is "
+         getattr(a, "drawn", "") + "`%s` (bodies: %s). Girth columns: our value minus MakeHuman's ruler, mm (the ruler is "
          "a fixed vertex loop on MakeHuman's base mesh: a sanity band, not truth). `time`: the "
          "CLI's total seconds (load, landmarks, girths, lengths along the skin) on a shared, "
          "loaded machine." % (" ".join(["benchmarks/scripts/measure_population.py",
                                          "build/apps/tapeline", "../shared/data/bodies", "OUT.md"] +
-                                        (["--population", "DIR"] if a.population else
+                                        (["--population", a.population.rstrip("/")]
+                                         if a.population else
                                          ["--bodies", a.bodies])), a.bodies), "",
          "Bodies measured: %d of %d; all landmarks found on %d; self-check warnings: %d; "
          "bodies with a missing measurement: %d; time median %.2f s, max %.2f s." % (
