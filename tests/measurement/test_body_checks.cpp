@@ -5,6 +5,8 @@
 #include <tapeline_test/expect.h>
 #include <tapeline_test/measurement.h>
 #include <tapeline_test/measurement_checks.h>
+#include <tapeline_test/measurement_holes.h>
+#include <tapeline_test/measurement_landmarks.h>
 
 #include <gtest/gtest.h>
 
@@ -28,6 +30,13 @@ bool have_population() {
 BodyOptions decimetres(const std::string& name) {
     BodyOptions o;
     o.unit = LengthUnit::dm;
+    o.name = name;
+    return o;
+}
+
+BodyOptions millimetres(const std::string& name) {
+    BodyOptions o;
+    o.unit = LengthUnit::mm;
     o.name = name;
     return o;
 }
@@ -75,6 +84,22 @@ TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
     EXPECT_EQ(r.landmarks.available_count(), r.landmarks.landmarks.size());
 }
 
+// Arms raised sideways but measured as the default A-pose: refused naming --pose (measured so,
+// the armpits are lost and the shoulder points go out along the arms).
+TEST(BodyChecks, TPoseMeasuredAsAnAPoseIsRefusedNamingPose) {
+    const BodyOptions dm = decimetres("a.obj");
+    const Soup soup = canonical_soup(kBundled, dm);
+    const Result a = measure_mesh(soup.points, soup.triangles, millimetres("a.obj"));
+    const auto posed = raise_arms_to_t_pose(soup.points, a.landmarks, 0.02 * a.frame.height);
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(posed, soup.triangles, millimetres("t.obj")); },
+        {"t.obj", "the arms are spread sideways", "the hands at 0.", "--pose T"}, "T-pose as A");
+    BodyOptions t = millimetres("t.obj");
+    t.pose = Pose::t_pose;
+    const Result r = measure_mesh(posed, soup.triangles, t);
+    EXPECT_EQ(r.landmarks.available_count(), r.landmarks.landmarks.size());
+}
+
 TEST(BodyChecks, UpsideDownBodyIsRefusedNamingUp) {
     Soup s = read_body_soup(kBundled);
     for (auto& p : s.points) {
@@ -102,19 +127,25 @@ TEST(BodyChecks, ArmadilloIsNotABody) {
     BodyOptions o;
     o.unit = LengthUnit::m;  // 1.0 units tall
     o.name = "armadillo.obj";
-    // Whichever check catches it first, the message names the mesh and says what to try.
-    try {
-        measure_mesh(s.points, s.triangles, o);
-        ADD_FAILURE() << "the armadillo was measured";
-    } catch (const InvalidInput& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find("armadillo.obj: "), std::string::npos) << what;
-        EXPECT_TRUE(what.find("does not look like a body") != std::string::npos ||
-                    what.find("implausible proportions") != std::string::npos ||
-                    what.find("not upright") != std::string::npos ||
-                    what.find("upside down") != std::string::npos)
-            << what;
-        EXPECT_NE(what.find("--"), std::string::npos) << what;
+    // Whichever check catches it first, the message names the mesh and says what to try; its
+    // raised forelimbs read as a T-pose's arms, and doing what that message says (--pose T) is
+    // refused too.
+    for (const Pose pose : {Pose::a_pose, Pose::t_pose}) {
+        o.pose = pose;
+        try {
+            measure_mesh(s.points, s.triangles, o);
+            ADD_FAILURE() << "the armadillo was measured";
+        } catch (const InvalidInput& e) {
+            const std::string what = e.what();
+            EXPECT_NE(what.find("armadillo.obj: "), std::string::npos) << what;
+            EXPECT_TRUE(what.find("does not look like a body") != std::string::npos ||
+                        what.find("implausible proportions") != std::string::npos ||
+                        what.find("not upright") != std::string::npos ||
+                        what.find("upside down") != std::string::npos ||
+                        (pose == Pose::a_pose && what.find("as in a T-pose") != std::string::npos))
+                << what;
+            EXPECT_NE(what.find("--"), std::string::npos) << what;
+        }
     }
 }
 
@@ -177,6 +208,27 @@ TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
                                                       ", \"bust_right\": " + point_json(rr)));
     EXPECT_TRUE(has_warning(r, "bust_left", "landmark_height"));
     EXPECT_TRUE(has_warning(r, "bust_right", "landmark_height"));
+}
+
+// Shoulder points beside the neck (where a skinned T-pose's outline has its only corner): the
+// straight distance between them is far under a quarter of the stature.
+TEST(SelfChecks, ShoulderPointsBesideTheNeckBreakTheShoulderBreadth) {
+    const BodyOptions o = decimetres("mh_female_average.obj");
+    const Result base = measure_file(kBundled, o);
+    EXPECT_FALSE(has_warning(base, "acromion_left", "shoulder_breadth"));
+    const double h = base.frame.height;
+    std::string json;
+    for (const char* side : {"left", "right"}) {
+        const auto snp = base.landmarks.point(std::string("side_neck_") + side);
+        const auto ac = base.landmarks.point(std::string("acromion_") + side);
+        ASSERT_TRUE(snp && ac) << side;
+        const double out = (*snp)[0] > (*ac)[0] ? -0.03 * h : 0.03 * h;
+        const Vec3 p{(*snp)[0] + out, (*ac)[1], (*ac)[2]};
+        json +=
+            std::string(json.empty() ? "" : ", ") + "\"acromion_" + side + "\": " + point_json(p);
+    }
+    const Result r = measure_file(kBundled, o, write_overrides("shoulders.json", json));
+    EXPECT_TRUE(has_warning(r, "acromion_left", "shoulder_breadth"));
 }
 
 // A front neck point taken well down the chest tilts the neck base plane so that it runs over

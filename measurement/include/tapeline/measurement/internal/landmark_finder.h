@@ -161,6 +161,10 @@ private:
     /// How far below the knee hollow's rearmost point (mm, in z) the leg's back outline still
     /// counts as the hollow (popliteal_hollow).
     static constexpr double kHollowDepth = 2.0;
+    /// How far ahead of the midline's front (mm, in z) a level's most forward point off the
+    /// midline must be to be a breast's or pectoral's apex (find_bust): a belly's front just off
+    /// the midline is within scan noise of the midline's.
+    static constexpr double kApexAhead = 2.0;
 
     static double side_sign(int s) { return s == 0 ? 1.0 : -1.0; }
     static const char* side_name(int s) { return s == 0 ? "left" : "right"; }
@@ -910,8 +914,9 @@ private:
     /// half-width off the midline, per scan level). The level is the highest local maximum of
     /// that profile (over 1.5% of the height each way) below the armpit: a breast's apex, or a
     /// flat chest's pectoral prominence; a belly further forward lower down is not the chest.
-    /// A chest with no prominence of its own (the profile only grows towards the belly) takes
-    /// the level `kNippleDrop` of the height below the armpit.
+    /// A side with no prominence of its own (the profile only grows towards the belly) takes
+    /// the other side's level; a chest with none, the level `kNippleDrop` of the height below
+    /// the armpit.
     void find_bust() {
         if (!crotch_y_) {
             set_missing("bust_left", "needs the crotch");
@@ -921,9 +926,11 @@ private:
         const double a = armpit_level();
         const double w = waist_y_ ? *waist_y_ : *crotch_y_ + 0.6 * (a - *crotch_y_);
         const double lo = std::max(w, a - 0.12 * height_), hi = a;
+        std::vector<std::pair<double, Vec3>> profiles[2];  // (y, most forward point), top down
+        std::optional<std::size_t> apexes[2];
         for (int s = 0; s < 2; ++s) {
             const double sg = side_sign(s);
-            std::vector<std::pair<double, Vec3>> profile;  // (y, most forward point), top down
+            std::vector<std::pair<double, Vec3>>& profile = profiles[s];
             std::vector<std::pair<double, Vec3>> midline_ahead;  // the levels left out below
             for (std::size_t k = levels_.size(); k-- > 0;) {
                 if (levels_[k].y < lo || levels_[k].y > hi || levels_[k].torso < 0) {
@@ -951,7 +958,7 @@ private:
                 // A chest ahead of its midline nowhere keeps every level.
                 const auto fb = front_back(ps, sec, x_mid_);
                 if (std::isfinite(best)) {
-                    (fb && best <= fb->first ? midline_ahead : profile)
+                    (fb && best <= fb->first + kApexAhead ? midline_ahead : profile)
                         .emplace_back(levels_[k].y, at);
                 }
             }
@@ -970,26 +977,42 @@ private:
                 if (y < lo + window || y > hi - 0.01 * height_) {
                     continue;
                 }
-                bool peak = true;
+                // A maximum with no level kept just below it is where the levels ahead on the
+                // midline begin (a front growing into a belly), not an apex.
+                bool peak = true, below = false;
                 for (std::size_t j = 0; j < profile.size() && peak; ++j) {
                     peak = std::abs(profile[j].first - y) > window ||
                            profile[j].second[2] <= profile[i].second[2];
+                    below = below || (profile[j].first < y && profile[j].first >= y - window);
                 }
-                if (peak) {
+                if (peak && below) {
                     apex = i;
                 }
             }
-            if (!apex) {
-                const double y = std::max(lo, a - kNippleDrop * height_);
-                std::size_t near = 0;
+            apexes[s] = apex;
+        }
+        // A side without an apex of its own (a flat chest whose front grows towards a belly
+        // below the pectorals: SMPL's male average body) takes the other side's level, else the
+        // usual nipple level below the armpit.
+        for (int s = 0; s < 2; ++s) {
+            const auto& profile = profiles[s];
+            if (profile.empty()) {
+                continue;
+            }
+            std::size_t at = 0;
+            if (apexes[s]) {
+                at = *apexes[s];
+            } else {
+                const auto& other = profiles[1 - s];
+                const double y = apexes[1 - s] ? other[*apexes[1 - s]].first
+                                               : std::max(lo, a - kNippleDrop * height_);
                 for (std::size_t i = 1; i < profile.size(); ++i) {
-                    if (std::abs(profile[i].first - y) < std::abs(profile[near].first - y)) {
-                        near = i;
+                    if (std::abs(profile[i].first - y) < std::abs(profile[at].first - y)) {
+                        at = i;
                     }
                 }
-                apex = near;
             }
-            set_found(name, profile[*apex].second);
+            set_found(std::string("bust_") + side_name(s), profile[at].second);
         }
     }
 
@@ -1068,8 +1091,45 @@ private:
             // and the point is interpolated on the outline there.
             const std::size_t last = outline.size() - 1;
             const std::size_t best = farthest_from_chord(outline, sg, 0, last, p0);
-            set_found(name, refine_on_outline(outline, sg, best, p0));
+            Vec3 point = refine_on_outline(outline, sg, best, p0);
+            // A skinned T-pose (SMPL's) has no corner at the shoulder's end: the arm's top
+            // continues the shoulder's, and the only corner is where the neck meets the
+            // shoulder, 50-60 mm beside the neck (shoulder points 0.10-0.13 of the stature
+            // apart). A corner medial of the torso's side is that one; the point is then the
+            // outline above the torso's side 5% of the height below the armpit: 1-27 mm from
+            // the shoulder vertices SMPL-Anthropometry takes the shoulder breadth between, on
+            // SMPL's and SMPL-X's average bodies (the neck's corner: 66-84 mm). Arms raised
+            // from an A-pose keep their corner outside the torso's side.
+            if (pose_ == Pose::t_pose && ap) {
+                if (const auto side = torso_side((*ap)[1] - 0.05 * height_, sg);
+                    side && sg * point[0] < *side) {
+                    for (std::size_t i = 1; i < outline.size(); ++i) {
+                        const double a = sg * outline[i - 1][0], b = sg * outline[i][0];
+                        if (a <= *side && b >= *side) {
+                            const double t = b > a ? (*side - a) / (b - a) : 0;
+                            point = add(outline[i - 1], mul(sub(outline[i], outline[i - 1]), t));
+                            break;
+                        }
+                    }
+                }
+            }
+            set_found(name, point);
         }
+    }
+
+    /// The torso chain's lateral extent (sg * x) on the scan level nearest height y.
+    std::optional<double> torso_side(double y, double sg) const {
+        const Level* best = nullptr;
+        for (const auto& l : levels_) {
+            if (l.torso >= 0 && (!best || std::abs(l.y - y) < std::abs(best->y - y))) {
+                best = &l;
+            }
+        }
+        if (!best || std::abs(best->y - y) > 2 * step_) {
+            return std::nullopt;
+        }
+        const Section& sec = best->ps.sections[static_cast<std::size_t>(best->torso)];
+        return sg > 0 ? sec.hi[0] : -sec.lo[0];
     }
 
     /// The outline point near outline[best] farthest from the chord from p0 to outline.back():
