@@ -1103,14 +1103,7 @@ private:
             if (pose_ == Pose::t_pose && ap) {
                 if (const auto side = torso_side((*ap)[1] - 0.05 * height_, sg);
                     side && sg * point[0] < *side) {
-                    for (std::size_t i = 1; i < outline.size(); ++i) {
-                        const double a = sg * outline[i - 1][0], b = sg * outline[i][0];
-                        if (a <= *side && b >= *side) {
-                            const double t = b > a ? (*side - a) / (b - a) : 0;
-                            point = add(outline[i - 1], mul(sub(outline[i], outline[i - 1]), t));
-                            break;
-                        }
-                    }
+                    point = on_outline(outline, sg, *side, 0, outline.size() - 1).value_or(point);
                 }
             }
             set_found(name, point);
@@ -1119,17 +1112,25 @@ private:
 
     /// The torso chain's lateral extent (sg * x) on the scan level nearest height y.
     std::optional<double> torso_side(double y, double sg) const {
-        const Level* best = nullptr;
-        for (const auto& l : levels_) {
-            if (l.torso >= 0 && (!best || std::abs(l.y - y) < std::abs(best->y - y))) {
-                best = &l;
-            }
-        }
-        if (!best || std::abs(best->y - y) > 2 * step_) {
+        const auto k = nearest_level(y);
+        if (!k || levels_[*k].torso < 0) {
             return std::nullopt;
         }
-        const Section& sec = best->ps.sections[static_cast<std::size_t>(best->torso)];
+        const Section& sec = levels_[*k].ps.sections[static_cast<std::size_t>(levels_[*k].torso)];
         return sg > 0 ? sec.hi[0] : -sec.lo[0];
+    }
+
+    /// The outline (x mirrored by sg, samples going outwards) interpolated at lateral position
+    /// r between samples i0 and i1; none when r is outside them.
+    static std::optional<Vec3> on_outline(const std::vector<Vec3>& outline, double sg, double r,
+                                          std::size_t i0, std::size_t i1) {
+        for (std::size_t i = i0; i < i1; ++i) {
+            const double ta = sg * outline[i][0], tb = sg * outline[i + 1][0];
+            if (r >= ta && r <= tb && tb > ta) {
+                return add(outline[i], mul(sub(outline[i + 1], outline[i]), (r - ta) / (tb - ta)));
+            }
+        }
+        return std::nullopt;
     }
 
     /// The outline point near outline[best] farthest from the chord from p0 to outline.back():
@@ -1178,14 +1179,7 @@ private:
         }
         const double lo = sg * outline[a][0] - r0, hi = sg * outline[b][0] - r0;
         const double tv = std::clamp(-c1 / (2 * c2), lo, hi);
-        for (std::size_t i = a; i < b; ++i) {
-            const double ta = sg * outline[i][0] - r0, tb = sg * outline[i + 1][0] - r0;
-            if (tv >= ta && tv <= tb && tb > ta) {
-                const double f = (tv - ta) / (tb - ta);
-                return add(outline[i], mul(sub(outline[i + 1], outline[i]), f));
-            }
-        }
-        return outline[best];
+        return on_outline(outline, sg, r0 + tv, a, b).value_or(outline[best]);
     }
 
     /// Index in [i0, i1] of the outline point (x mirrored by sg) farthest from the chord from p0
