@@ -20,12 +20,7 @@ using namespace tapeline_test::measurement;
 using tapeline::InvalidInput;
 using tapeline_test::expect_error;
 
-const std::string kPopulation = std::string(TAPELINE_SHARED_DATA_DIR) + "/bodies/population/";
 const std::string kBundled = std::string(TAPELINE_DATA_DIR) + "/bodies/mh_female_average.obj";
-
-bool have_population() {
-    return std::ifstream(kPopulation + "mh_pop_000.ply").good();
-}
 
 BodyOptions decimetres(const std::string& name) {
     BodyOptions o;
@@ -208,6 +203,26 @@ TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
                                                       ", \"bust_right\": " + point_json(rr)));
     EXPECT_TRUE(has_warning(r, "bust_left", "landmark_height"));
     EXPECT_TRUE(has_warning(r, "bust_right", "landmark_height"));
+}
+
+// Bust points on the lower ribs (where a thin, flat-chested body's front is furthest forward
+// below a sternum as far forward as its nipples), 6 % of the stature under the bust, still
+// within the bust's height band: the tape there is far under the chest's.
+TEST(SelfChecks, BustPointsOnTheLowerRibsAreUnderTheHighBust) {
+    const BodyOptions o = decimetres("mh_female_average.obj");
+    const Result base = measure_file(kBundled, o);
+    EXPECT_FALSE(has_warning(base, "bust_girth", "bust_high_bust"));
+    const double drop = 0.06 * base.frame.height;
+    std::string json;
+    for (const char* side : {"left", "right"}) {
+        const auto b = base.landmarks.point(std::string("bust_") + side);
+        ASSERT_TRUE(b) << side;
+        json += std::string(json.empty() ? "" : ", ") + "\"bust_" + side +
+                "\": " + point_json({(*b)[0], (*b)[1] - drop, (*b)[2]});
+    }
+    const Result r = measure_file(kBundled, o, write_overrides("ribs.json", json));
+    EXPECT_TRUE(has_warning(r, "bust_girth", "bust_high_bust"));
+    EXPECT_FALSE(has_warning(r, "bust_left", "landmark_height"));
 }
 
 // Shoulder points beside the neck (where a skinned T-pose's outline has its only corner): the

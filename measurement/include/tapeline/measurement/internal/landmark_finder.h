@@ -963,7 +963,7 @@ private:
                 }
             }
             if (profile.empty()) {
-                profile = std::move(midline_ahead);
+                profile.swap(midline_ahead);
             }
             const std::string name = std::string("bust_") + side_name(s);
             if (profile.empty()) {
@@ -977,13 +977,25 @@ private:
                 if (y < lo + window || y > hi - 0.01 * height_) {
                     continue;
                 }
-                // A maximum with no level kept just below it is where the levels ahead on the
-                // midline begin (a front growing into a belly), not an apex.
+                // A maximum with no level kept just below it, where the levels ahead on the
+                // midline begin, is an apex only if the front there stays within kApexAhead of
+                // it: a sternum as far forward as a flat chest's nipples (the apex 0-3 mm ahead
+                // of the midline). A front coming further forward is a belly's (SMPL's male
+                // average body: 7.7 mm within the window), and the maximum is where it was cut.
                 bool peak = true, below = false;
                 for (std::size_t j = 0; j < profile.size() && peak; ++j) {
                     peak = std::abs(profile[j].first - y) > window ||
                            profile[j].second[2] <= profile[i].second[2];
                     below = below || (profile[j].first < y && profile[j].first >= y - window);
+                }
+                if (peak && !below) {
+                    double ahead = -std::numeric_limits<double>::infinity();
+                    for (const auto& m : midline_ahead) {
+                        if (m.first < y && m.first >= y - window) {
+                            ahead = std::max(ahead, m.second[2]);
+                        }
+                    }
+                    below = std::isfinite(ahead) && ahead <= profile[i].second[2] + kApexAhead;
                 }
                 if (peak && below) {
                     apex = i;
