@@ -35,15 +35,19 @@ RULERS = [("neck_circ", "neck_girth"), ("bust_circ", "bust_girth"),
 HOLDOUT = range(30, 40)
 # Our landmark -> MakeHuman ruler loop whose mean height places the same level (by MakeHuman's
 # own definition, which need not be ours: its waist loop is lower than the narrowest girth).
-LEVELS = [("bust_left", "bust_circ"), ("waist_front", "waist_circ"), ("hip_back", "hips_circ"),
-          ("knee_left", "knee_circ"), ("ankle_left", "ankle_circ")]
+# "neck_circ side": the height of the neck loop's vertex furthest to the body's left (+x), where
+# the loop passes the side of the neck; MakeHuman's loop is tilted, its mean height is not a side's.
+LEVELS = [("side_neck_left", "neck_circ side"), ("bust_left", "bust_circ"),
+          ("waist_front", "waist_circ"), ("hip_back", "hips_circ"), ("knee_left", "knee_circ"),
+          ("ankle_left", "ankle_circ")]
 BASE_MESH_VERTICES = 13380
 
 
-def vertex_heights(path):
-    """The y of every vertex of a binary little-endian PLY (float x y z first) or an OBJ."""
+def vertex_xy(path):
+    """The (x, y) of every vertex of a binary little-endian PLY (float x y z first) or an OBJ."""
     if path.endswith(".obj"):
-        return [float(line.split()[2]) for line in open(path) if line.startswith("v ")]
+        return [(float(line.split()[1]), float(line.split()[2])) for line in open(path)
+                if line.startswith("v ")]
     data = open(path, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
     header = data[:end].decode().splitlines()
@@ -58,17 +62,24 @@ def vertex_heights(path):
     if props[:3] != ["float"] * 3 or any(t != "float" for t in props):
         return []
     stride = 4 * len(props)
-    return [struct.unpack_from("<f", data, end + i * stride + 4)[0] for i in range(n)]
+    return [struct.unpack_from("<ff", data, end + i * stride) for i in range(n)]
 
 
 def loop_levels(path, loops):
-    """Mean height above the floor (mm, decimetre input) of each ruler loop, or {} when the mesh
-    does not carry MakeHuman's base-mesh vertices."""
-    ys = vertex_heights(path)
-    if len(ys) != BASE_MESH_VERTICES:
+    """Height above the floor (mm, decimetre input) of each ruler loop of LEVELS (its mean height;
+    for "LOOP side", the height of LOOP's vertex furthest to +x), or {} when the mesh does not
+    carry MakeHuman's base-mesh vertices."""
+    xy = vertex_xy(path)
+    if len(xy) != BASE_MESH_VERTICES:
         return {}
-    floor = min(ys)
-    return {k: 100.0 * (statistics.mean(ys[i] for i in loops[k]) - floor) for _, k in LEVELS}
+    floor = min(y for _, y in xy)
+    out = {}
+    for _, k in LEVELS:
+        if k.endswith(" side"):
+            out[k] = 100.0 * (max((xy[i] for i in loops[k[:-5]]), key=lambda p: p[0])[1] - floor)
+        else:
+            out[k] = 100.0 * (statistics.mean(xy[i][1] for i in loops[k]) - floor)
+    return out
 
 
 def bodies(data, which):
@@ -148,7 +159,8 @@ def main():
                     row["diff"][ours] = vals[ours] - 10.0 * ruler[mh]
             points = {l["name"]: l.get("point") for l in j["landmarks"]}
             row["level"] = {}
-            levels = loop_levels(path, loops) if all(k in loops for _, k in LEVELS) else {}
+            levels = (loop_levels(path, loops)
+                      if all(k.replace(" side", "") in loops for _, k in LEVELS) else {})
             for ours, mh in LEVELS:
                 if mh in levels and points.get(ours):
                     row["level"][ours] = points[ours][1] - levels[mh]
@@ -190,7 +202,9 @@ def write_table(rows, a):
             g, len(d), statistics.mean(x for x, _ in d), statistics.mean(abs(x) for x, _ in d),
             worst[0], worst[1]))
     L += ["", "Landmark levels against MakeHuman's ruler loops (our height minus the loop's mean "
-          "height, mm; bodies with MakeHuman's base-mesh vertices):", "",
+          "height, mm; `neck_circ side`: the height where the tilted neck loop passes the left "
+          "side of the neck, its vertex furthest to the left; bodies with MakeHuman's base-mesh "
+          "vertices):", "",
           "| landmark | loop | n | mean diff mm | sd mm | mean abs mm | worst mm (body) |",
           "|---|---|---|---|---|---|---|"]
     for ours, mh in LEVELS:
