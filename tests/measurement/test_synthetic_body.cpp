@@ -60,11 +60,11 @@ TEST_P(SyntheticBodyTest, LandmarkLevelsMatchTheConstruction) {
         const std::string s = side;
         const int sign = s == "left" ? 1 : -1;
         EXPECT_NEAR(r.landmarks.find("knee_" + s)->axis_point[1], SyntheticBody::kKnee, 4.0);
-        // The ankle: the lowest scan level whose girth is within 4 mm of the smallest, one scan
-        // step at most above the profile's own such level.
+        // The ankle: the lowest scan level whose girth is within kAnkleGirthTolerance of the
+        // smallest, one scan step at most above the profile's own such level.
         const double ankle = r.landmarks.find("ankle_" + s)->axis_point[1];
-        EXPECT_GE(ankle, body.ankle_level(4.0) - 0.5);
-        EXPECT_LE(ankle, body.ankle_level(4.0) + step + 0.5);
+        EXPECT_GE(ankle, body.ankle_level() - 0.5);
+        EXPECT_LE(ankle, body.ankle_level() + step + 0.5);
         EXPECT_NEAR(r.landmarks.find("knee_" + s)->axis_point[0], sign * SyntheticBody::kLegX, 0.5);
         // Elbow and wrist along the arm's axis (the profile is sampled every height/340 mm).
         const Vec3 e = r.landmarks.find("elbow_" + s)->axis_point;

@@ -258,8 +258,8 @@ TEST_P(SyntheticLengthsTest, ClosedFormLengthsWithinIsoTolerance) {
           Ends{"waist_to_armpit", body.armpit_height(), SyntheticBody::kWaist},
           Ends{"back_neck_to_waist", SyntheticBody::kShoulder, SyntheticBody::kWaist},
           Ends{"front_neck_to_waist", SyntheticBody::kShoulder, SyntheticBody::kWaist},
-          Ends{"inseam", SyntheticBody::kCrotch, body.ankle_level(4.0)},
-          Ends{"outseam", SyntheticBody::kWaist, body.ankle_level(4.0)}}) {
+          Ends{"inseam", SyntheticBody::kCrotch, body.ankle_level()},
+          Ends{"outseam", SyntheticBody::kWaist, body.ankle_level()}}) {
         const auto seg = segments(r, e.name);
         ASSERT_FALSE(seg.empty()) << e.name;
         const double y0 = seg.front()->from[1], y1 = seg.back()->to[1];

@@ -31,6 +31,11 @@ using tapeline::to_string;
 
 enum class Pose { a_pose, t_pose };
 
+/// How much larger than the leg's smallest girth above the foot the ankle level's girth may be,
+/// mm (the ankle rule of the landmark finder, and SyntheticBody::ankle_level): ISO 20685-1's
+/// tolerance for small girths (4 mm), below which two tapes are one measurement.
+inline constexpr double kAnkleGirthTolerance = 4.0;
+
 /// "m", "dm", "cm" or "mm"; anything else is InvalidInput naming `where` (e.g. "--units").
 inline LengthUnit parse_length_unit(const std::string& text, const std::string& where) {
     for (LengthUnit u : {LengthUnit::m, LengthUnit::dm, LengthUnit::cm, LengthUnit::mm}) {

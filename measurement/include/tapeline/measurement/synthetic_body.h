@@ -122,7 +122,7 @@ public:
     /// Where the ankle girth is taken (ISO 8559-1: just above the malleoli): the lowest height
     /// from 2.5 % of the stature up whose leg girth is within `tolerance` mm of the smallest leg
     /// girth up to 12 % (kAnkle is that smallest one; the profile is flat around it).
-    double ankle_level(double tolerance) const {
+    double ankle_level(double tolerance = kAnkleGirthTolerance) const {
         const double lo = 0.025 * kHeight, hi = 0.12 * kHeight, dy = 0.01;
         double smallest = leg_girth(lo);
         for (double y = lo; y <= hi; y += dy) {

@@ -154,10 +154,6 @@ private:
     /// Waist level on a torso without a waist indentation, as a fraction of the way from the
     /// crotch to the armpit.
     static constexpr double kWaistFraction = 0.57;
-    /// How much larger than the leg's smallest girth above the foot the ankle level's girth may
-    /// be, mm: ISO 20685-1's tolerance for small girths (4 mm), below which two tapes are one
-    /// measurement.
-    static constexpr double kAnkleGirthTolerance = 4.0;
     /// How far below the knee hollow's rearmost point (mm, in z) the leg's back outline still
     /// counts as the hollow (popliteal_hollow).
     static constexpr double kHollowDepth = 2.0;
@@ -1428,22 +1424,34 @@ private:
         }
     }
 
+    /// Whether sample `i` of `prof` has the largest (smallest) `key` of the samples within
+    /// `window` mm of it along the limb; `neighbours` receives how many those are.
+    template <class Key>
+    static bool extreme_within(const std::vector<LimbSample>& prof, std::size_t i, double window,
+                               bool largest, Key key, std::size_t& neighbours) {
+        neighbours = 0;
+        const double v = key(prof[i]);
+        for (std::size_t j = 0; j < prof.size(); ++j) {
+            if (j == i || std::abs(prof[j].t - prof[i].t) > window) {
+                continue;
+            }
+            ++neighbours;
+            if (largest ? key(prof[j]) > v : key(prof[j]) < v) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     /// First sample from `from` on that is the largest (smallest) girth within `window` times
     /// the height on both sides.
     std::optional<std::size_t> local_extremum(const std::vector<LimbSample>& prof, std::size_t from,
                                               bool largest, double window = 0.02) const {
+        const auto perimeter = [](const LimbSample& s) { return s.perimeter; };
         for (std::size_t i = from; i < prof.size(); ++i) {
-            bool ok = true;
             std::size_t n = 0;
-            for (std::size_t j = 0; j < prof.size() && ok; ++j) {
-                if (j == i || std::abs(prof[j].t - prof[i].t) > window * height_) {
-                    continue;
-                }
-                ++n;
-                ok = largest ? prof[j].perimeter <= prof[i].perimeter
-                             : prof[j].perimeter >= prof[i].perimeter;
-            }
-            if (ok && n > 2 && prof.back().t - prof[i].t > window * height_) {
+            if (extreme_within(prof, i, window * height_, largest, perimeter, n) && n > 2 &&
+                prof.back().t - prof[i].t > window * height_) {
                 return i;
             }
         }
@@ -1467,13 +1475,9 @@ private:
             if (prof[i].t + window > top) {
                 break;
             }
-            bool peak = true;
-            for (std::size_t j = 0; j < prof.size() && peak; ++j) {
-                if (j != i && std::abs(prof[j].t - prof[i].t) <= window) {
-                    peak = prof[j].back[2] <= prof[i].back[2];
-                }
-            }
-            if (!peak) {
+            std::size_t n = 0;
+            if (!extreme_within(
+                    prof, i, window, true, [](const LimbSample& s) { return s.back[2]; }, n)) {
                 continue;
             }
             const double limit = prof[i].back[2] - kHollowDepth;
