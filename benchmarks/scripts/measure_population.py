@@ -35,11 +35,15 @@ RULERS = [("neck_circ", "neck_girth"), ("bust_circ", "bust_girth"),
 HOLDOUT = range(30, 40)
 # Our landmark -> MakeHuman ruler loop whose mean height places the same level (by MakeHuman's
 # own definition, which need not be ours: its waist loop is lower than the narrowest girth).
-# "neck_circ side": the height of the neck loop's vertex furthest to the body's left (+x), where
-# the loop passes the side of the neck; MakeHuman's loop is tilted, its mean height is not a side's.
-LEVELS = [("side_neck_left", "neck_circ side"), ("bust_left", "bust_circ"),
-          ("waist_front", "waist_circ"), ("hip_back", "hips_circ"), ("knee_left", "knee_circ"),
-          ("ankle_left", "ankle_circ")]
+# How a loop places the level: "mean", its mean height; "side", the height of its vertex furthest
+# to the body's left (+x), where MakeHuman's tilted neck loop passes the side of the neck.
+LEVELS = [("side_neck_left", "neck_circ", "side"), ("bust_left", "bust_circ", "mean"),
+          ("waist_front", "waist_circ", "mean"), ("hip_back", "hips_circ", "mean"),
+          ("knee_left", "knee_circ", "mean"), ("ankle_left", "ankle_circ", "mean")]
+
+
+def level_label(loop, how):
+    return loop + " side" if how == "side" else loop
 BASE_MESH_VERTICES = 13380
 
 
@@ -66,19 +70,18 @@ def vertex_xy(path):
 
 
 def loop_levels(path, loops):
-    """Height above the floor (mm, decimetre input) of each ruler loop of LEVELS (its mean height;
-    for "LOOP side", the height of LOOP's vertex furthest to +x), or {} when the mesh does not
-    carry MakeHuman's base-mesh vertices."""
+    """Height above the floor (mm, decimetre input) at which each loop of LEVELS places its level,
+    keyed by level_label, or {} when the mesh does not carry MakeHuman's base-mesh vertices."""
     xy = vertex_xy(path)
     if len(xy) != BASE_MESH_VERTICES:
         return {}
     floor = min(y for _, y in xy)
     out = {}
-    for _, k in LEVELS:
-        if k.endswith(" side"):
-            out[k] = 100.0 * (max((xy[i] for i in loops[k[:-5]]), key=lambda p: p[0])[1] - floor)
-        else:
-            out[k] = 100.0 * (statistics.mean(xy[i][1] for i in loops[k]) - floor)
+    for _, loop, how in LEVELS:
+        points = [xy[i] for i in loops[loop]]
+        y = (max(points, key=lambda p: p[0])[1] if how == "side" else
+             statistics.mean(p[1] for p in points))
+        out[level_label(loop, how)] = 100.0 * (y - floor)
     return out
 
 
@@ -159,11 +162,10 @@ def main():
                     row["diff"][ours] = vals[ours] - 10.0 * ruler[mh]
             points = {l["name"]: l.get("point") for l in j["landmarks"]}
             row["level"] = {}
-            levels = (loop_levels(path, loops)
-                      if all(k.replace(" side", "") in loops for _, k in LEVELS) else {})
-            for ours, mh in LEVELS:
-                if mh in levels and points.get(ours):
-                    row["level"][ours] = points[ours][1] - levels[mh]
+            levels = loop_levels(path, loops) if all(k in loops for _, k, _ in LEVELS) else {}
+            for ours, loop, how in LEVELS:
+                if level_label(loop, how) in levels and points.get(ours):
+                    row["level"][ours] = points[ours][1] - levels[level_label(loop, how)]
             rows.append(row)
             print("%-36s %s" % (name, row.get("landmarks", row.get("error"))), file=sys.stderr)
     if a.json:
@@ -207,7 +209,8 @@ def write_table(rows, a):
           "vertices):", "",
           "| landmark | loop | n | mean diff mm | sd mm | mean abs mm | worst mm (body) |",
           "|---|---|---|---|---|---|---|"]
-    for ours, mh in LEVELS:
+    for ours, loop, how in LEVELS:
+        mh = level_label(loop, how)
         d = [(r["level"][ours], r["body"]) for r in ok if ours in r.get("level", {})]
         if not d:
             continue

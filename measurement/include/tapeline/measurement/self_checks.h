@@ -185,9 +185,9 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
     const auto high = set.value("high_bust_girth");
     if (bust && high && *bust < kBustOfHighBust * *high) {
         out.push_back({"bust_girth", "bust_high_bust",
-                       fmt_num("bust_girth %.1f mm is ", *bust) +
-                           fmt_num("under %.0f %% of high_bust_girth ", 100 * kBustOfHighBust) +
-                           fmt_num("%.1f mm: the bust points are below the chest", *high)});
+                       fmt_num("bust_girth %.1f mm is under %.0f %% of high_bust_girth %.1f mm: "
+                               "the bust points are below the chest",
+                               *bust, 100 * kBustOfHighBust, *high)});
     }
     for (const char* side : {"", "_left", "_right"}) {
         const auto w = set.value(std::string("wrist_girth") + side);

@@ -1424,12 +1424,13 @@ private:
         }
     }
 
-    /// Whether sample `i` of `prof` has the largest (smallest) `key` of the samples within
-    /// `window` mm of it along the limb; `neighbours` receives how many those are.
+    /// When sample `i` of `prof` has the largest (smallest) `key` of the samples within
+    /// `window` mm of it along the limb: how many those samples are; otherwise none.
     template <class Key>
-    static bool extreme_within(const std::vector<LimbSample>& prof, std::size_t i, double window,
-                               bool largest, Key key, std::size_t& neighbours) {
-        neighbours = 0;
+    static std::optional<std::size_t> extreme_within(const std::vector<LimbSample>& prof,
+                                                     std::size_t i, double window, bool largest,
+                                                     Key key) {
+        std::size_t neighbours = 0;
         const double v = key(prof[i]);
         for (std::size_t j = 0; j < prof.size(); ++j) {
             if (j == i || std::abs(prof[j].t - prof[i].t) > window) {
@@ -1437,10 +1438,10 @@ private:
             }
             ++neighbours;
             if (largest ? key(prof[j]) > v : key(prof[j]) < v) {
-                return false;
+                return std::nullopt;
             }
         }
-        return true;
+        return neighbours;
     }
 
     /// First sample from `from` on that is the largest (smallest) girth within `window` times
@@ -1449,9 +1450,8 @@ private:
                                               bool largest, double window = 0.02) const {
         const auto perimeter = [](const LimbSample& s) { return s.perimeter; };
         for (std::size_t i = from; i < prof.size(); ++i) {
-            std::size_t n = 0;
-            if (extreme_within(prof, i, window * height_, largest, perimeter, n) && n > 2 &&
-                prof.back().t - prof[i].t > window * height_) {
+            const auto n = extreme_within(prof, i, window * height_, largest, perimeter);
+            if (n && *n > 2 && prof.back().t - prof[i].t > window * height_) {
                 return i;
             }
         }
@@ -1475,9 +1475,8 @@ private:
             if (prof[i].t + window > top) {
                 break;
             }
-            std::size_t n = 0;
-            if (!extreme_within(
-                    prof, i, window, true, [](const LimbSample& s) { return s.back[2]; }, n)) {
+            if (!extreme_within(prof, i, window, true,
+                                [](const LimbSample& s) { return s.back[2]; })) {
                 continue;
             }
             const double limit = prof[i].back[2] - kHollowDepth;
