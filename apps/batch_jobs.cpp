@@ -50,6 +50,7 @@ const std::set<std::string> kKeys = {"id",    "body",     "bodies",  "units",   
 const std::map<std::string, Json::value_t> kOptionKeys = {
     {"resolution_mm", Json::value_t::number_float},
     {"gap_mm", Json::value_t::number_float},
+    {"sdf_cell_mm", Json::value_t::number_float},
     {"sew_seconds", Json::value_t::number_float},
     {"settle_seconds", Json::value_t::number_float},
     {"substeps", Json::value_t::number_unsigned},
@@ -431,6 +432,9 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
         }
         if (o.contains("gap_mm")) {
             d.placement.gap_mm = o["gap_mm"].get<double>();
+        }
+        if (o.contains("sdf_cell_mm")) {
+            d.sdf_cell_mm = o["sdf_cell_mm"].get<double>();
         }
         if (o.contains("sew_seconds")) {
             d.sewing.sew_seconds = o["sew_seconds"].get<double>();

@@ -26,6 +26,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -52,6 +53,7 @@ struct DressArgs {
     double sew_seconds = tg::SewingOptions{}.sew_seconds;
     double settle_seconds = tg::SewingOptions{}.settle_seconds;
     double gap = tg::PlacementOptions{}.gap_mm;
+    double sdf_cell = tg::DressOptions{}.sdf_cell_mm;
     int substeps = tg::DressOptions{}.drape.substeps;
     bool no_self_collision = false;
     bool edge_edge = false;
@@ -117,6 +119,10 @@ void run_dress(const DressArgs& a) {
             "--sew-seconds and --settle-seconds must be >= 0, --gap > 0 and "
             "--substeps >= 1");
     }
+    if (!(std::isfinite(a.sdf_cell) && a.sdf_cell > 0)) {
+        throw InvalidInput("--sdf-cell must be a finite number of mm > 0");
+    }
+    o.sdf_cell_mm = a.sdf_cell;
     o.sewing.sew_seconds = a.sew_seconds;
     bench::set_settle_seconds(o.sewing, a.settle_seconds);
     o.placement.gap_mm = a.gap;
@@ -297,6 +303,10 @@ void register_dress_commands(CLI::App& app) {
                     "no settling at all)")
         ->capture_default_str();
     cmd->add_option("--gap", a->gap, "Clearance of the placed pieces from the body, mm")
+        ->capture_default_str();
+    cmd->add_option("--sdf-cell", a->sdf_cell,
+                    "Cell of the body's signed-distance grid, mm (coarser: a faster start, the "
+                    "cloth kept off a smoother body)")
         ->capture_default_str();
     cmd->add_option("--substeps", a->substeps, "Solver sub-steps per frame")
         ->check(CLI::Range(1, 10000))

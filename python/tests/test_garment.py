@@ -37,12 +37,19 @@ def placement_only(**fields):
         **fields)
 
 
-def test_dress_equals_the_command_line(cli, body, tmp_path):
+@pytest.fixture(scope="module")
+def short_dress(body):
+    """The shirt dressed on the body by tapeline.dress with short_options() (one run, shared)."""
+    _, V, F = body
+    return tapeline.dress(V, F, pattern.read(SHIRT), units="dm", options=short_options())
+
+
+def test_dress_equals_the_command_line(cli, body, short_dress, tmp_path):
     path, V, F = body
     out, rep = tmp_path / "g.obj", tmp_path / "r.json"
     cli("dress", path, "--units", "dm", SHIRT, "--out", str(out), "--report", str(rep), *SHORT_CLI)
     shirt = pattern.read(SHIRT)
-    d = tapeline.dress(V, F, shirt, units="dm", options=short_options())
+    d = short_dress
     GV, GF = read_obj(str(out))
     assert d["V"].shape == GV.shape and d["V"].dtype == np.float64
     np.testing.assert_allclose(d["V"], GV, rtol=1e-8, atol=1e-12)  # the OBJ has 9 digits
@@ -57,9 +64,8 @@ def test_dress_equals_the_command_line(cli, body, tmp_path):
     assert got["simulation"]["frames"] == expected["simulation"]["frames"] > 0
 
 
-def test_the_reported_stretch_is_that_of_the_returned_arrays(body):
-    _, V, F = body
-    d = tapeline.dress(V, F, pattern.read(SHIRT), units="dm", options=short_options())
+def test_the_reported_stretch_is_that_of_the_returned_arrays(short_dress):
+    d = short_dress
     X = d["V"] * 100.0  # dm -> mm, the unit of the pattern coordinates
     tri, uv = d["F"], d["uv"]
     m = len(tri)

@@ -1091,14 +1091,16 @@ fi
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
 expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units dm "$gc" --out x.obj \
   --fold-cycles 0
+expect_fail "dress: --sdf-cell 0" "--sdf-cell must be a finite number of mm > 0" "$bin" dress "$body" \
+  --units dm "$gc" --out x.obj --sdf-cell 0
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
 expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \
   --sew-seconds 0 --settle-seconds 0 --out placed.obj --ply placed.ply --report placed.json \
-  --picture placed.png --edge-edge
+  --picture placed.png --edge-edge --sdf-cell 7
 if $py - <<'PY'
 import json
 r = json.load(open("placed.json"))
-assert r["options"]["edge_edge_collision"] is True, r["options"]
+assert r["options"]["edge_edge_collision"] is True and r["options"]["sdf_cell_mm"] == 7, r["options"]
 # placement only: nothing sewn or draped, so nothing flattened or solved
 assert r["simulation"]["fold_smoothing"] == [] and r["simulation"]["static_solves"] == 0, r["simulation"]
 q = r["quality"]  # the self-intersections located and split by pieces, as many as counted
@@ -1291,10 +1293,11 @@ expect_ok "batch: --resume on a folder without a batch" "$bin" batch one.jsonl -
 if [ -s fresh/jobs/m/measure.json ]; then ok "batch: --resume on a new folder starts the batch"
 else fail "batch: --resume on a new folder"; fi
 
-# Six dressing jobs (a tenth of a second of sewing, no static solve, one thread each): uninterrupted, killed and resumed, over MPI.
+# Six dressing jobs (a tenth of a second of sewing, no static solve, one thread each, the body's
+# distance grid at 12 mm): uninterrupted, killed and resumed, over MPI.
 : >six.jsonl
 for k in 1 2 3 4 5 6; do
-  printf '{"id": "d%s", "body": "%s", "units": "dm", "pattern": "%s", "steps": ["dress"], "options": {"resolution_mm": %s, "sew_seconds": 0.1, "settle_seconds": 0, "relax": false, "without": ["aaron.armBinding", "aaron.neckBinding"], "threads": 1}}\n' \
+  printf '{"id": "d%s", "body": "%s", "units": "dm", "pattern": "%s", "steps": ["dress"], "options": {"resolution_mm": %s, "sew_seconds": 0.1, "settle_seconds": 0, "relax": false, "sdf_cell_mm": 12, "without": ["aaron.armBinding", "aaron.neckBinding"], "threads": 1}}\n' \
     $k "$body" "$fs" $((26 + k)) >>six.jsonl
 done
 same_outputs() {  # same_outputs DIR: every job's files equal those of the uninterrupted run
@@ -1325,6 +1328,7 @@ assert s["run"]["jobs_run"] == 6 and s["run"]["ranks"] == 1, s["run"]
 assert all(j["outcome"]["dress"]["garment_vertices"] > 0 for j in s["jobs"]), s["jobs"]
 d1 = json.load(open("full/jobs/d1/dress.json"))  # "relax": false reached the dressing
 assert d1["options"]["static_solve"] is False and not d1["simulation"]["static_solve"]["ran"], d1
+assert d1["options"]["sdf_cell_mm"] == 12, d1["options"]  # and so did the grid's cell
 sheet = open("full/contact_sheet.png", "rb").read()
 assert sheet[:8] == bytes([0x89]) + b"PNG" + bytes([13, 10, 26, 10])
 w, h = struct.unpack(">II", sheet[16:24])
