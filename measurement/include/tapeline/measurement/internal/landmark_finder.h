@@ -20,6 +20,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace tapeline::measurement::internal {
@@ -154,6 +155,11 @@ private:
     /// Waist level on a torso without a waist indentation, as a fraction of the way from the
     /// crotch to the armpit.
     static constexpr double kWaistFraction = 0.57;
+    /// Highest waist, as a fraction of the way from the crotch to the armpit: about the lowest
+    /// ribs. A narrowest girth above it is the fold under the chest over a belly, not a waist
+    /// (the development population's narrowest girths: 0.50-0.65 on bodies without a belly,
+    /// 0.72-0.78 with one, where MakeHuman's waist loop stays at 0.47-0.51).
+    static constexpr double kWaistTop = 0.68;
     /// How far below the knee hollow's rearmost point (mm, in z) the leg's back outline still
     /// counts as the hollow (popliteal_hollow).
     static constexpr double kHollowDepth = 2.0;
@@ -586,10 +592,19 @@ private:
         const double lo = c + 0.3 * (a - c), hi = c + 0.85 * (a - c);
         const int samples = std::max(8, static_cast<int>((hi - lo) / step_));
         auto [wy, wg] = scan_minimum(girth, lo, hi, samples, options_.level_tolerance);
+        // The narrowest girth above the lowest ribs (kWaistTop) is the fold under the chest:
+        // the waist is then a narrowing below them, if there is one.
+        const double ribs = c + kWaistTop * (a - c);
+        bool at_end = wy < lo + 2 * step_ || wy > hi - 2 * step_;
+        if (std::isfinite(wg) && wy > ribs) {
+            const int n = std::max(8, static_cast<int>((ribs - lo) / step_));
+            std::tie(wy, wg) = scan_minimum(girth, lo, ribs, n, options_.level_tolerance);
+            at_end = wy < lo + 2 * step_ || wy > ribs - 2 * step_;
+        }
         // No waist indentation (a belly or a straight torso): the smallest girth sits at an end
         // of the band. The waist is then at its usual place between crotch and armpit
         // (kWaistFraction of the way, the population's median where a waist is found).
-        if (std::isfinite(wg) && (wy < lo + 2 * step_ || wy > hi - 2 * step_)) {
+        if (std::isfinite(wg) && at_end) {
             wy = c + kWaistFraction * (a - c);
             wg = girth(wy);
         }
