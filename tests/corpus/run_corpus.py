@@ -9,8 +9,8 @@ no file in its output directory. Named cases also check the message or the resul
 --sanitized: the binary is built with AddressSanitizer + UndefinedBehaviorSanitizer
 (TAPELINE_SANITIZE). The memory limit is then ASan's RSS limit (an address-space limit stops
 ASan's shadow memory), the time limit is doubled, and any sanitizer report counts as a crash.
-LeakSanitizer's scan at exit costs more than most refusals take; the sweep runs it on a quarter of
-its runs, a diagonal (command c, input i with (c + i) % 4 == 0: every command on a quarter of the
+LeakSanitizer's scan at exit is a third of a refusal's time there; the sweep runs it on a quarter
+of its runs, a diagonal (command c, input i with (c + i) % 4 == 0: every command on a quarter of the
 inputs, every input under a quarter of the commands), the named cases on all of theirs.
 """
 import json
