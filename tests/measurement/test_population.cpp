@@ -117,6 +117,15 @@ TEST_P(Population, LevelsAtMakeHumansLoops) {
     o.name = name;
     const Result r = measure_file(kDir + name, o);
     ASSERT_NEAR(r.frame.height, stature, 1.0) << name;
+    // A loop's mean height above the floor, mm.
+    auto loop_height = [&](const char* loop_name) {
+        double mean = 0;
+        const auto loop = loops[loop_name].get<std::vector<int>>();
+        for (int v : loop) {
+            mean += soup.points[static_cast<std::size_t>(v)][1];
+        }
+        return (mean / static_cast<double>(loop.size()) - floor) * 100;
+    };
     struct Level {
         const char* loop;
         const char* landmark;
@@ -127,15 +136,12 @@ TEST_P(Population, LevelsAtMakeHumansLoops) {
           Level{"knee_circ", "knee", 0.04}}) {
         // The bust loop goes round the chest; the leg loops are the left leg's (+x), and the
         // body mirrors, so they stand for both legs.
-        double mean = 0;
-        const auto loop = loops[level.loop].get<std::vector<int>>();
-        for (int v : loop) {
+        for (int v : loops[level.loop].get<std::vector<int>>()) {
             ASSERT_TRUE(std::string(level.landmark) == "bust" ||
                         soup.points[static_cast<std::size_t>(v)][0] > 0)
                 << name << ": " << level.loop;
-            mean += soup.points[static_cast<std::size_t>(v)][1];
         }
-        const double loop_mm = (mean / static_cast<double>(loop.size()) - floor) * 100;
+        const double loop_mm = loop_height(level.loop);
         for (const char* side : {"_left", "_right"}) {
             const std::string landmark = std::string(level.landmark) + side;
             const auto* l = r.landmarks.find(landmark);
@@ -145,20 +151,12 @@ TEST_P(Population, LevelsAtMakeHumansLoops) {
                 << " of the stature, MakeHuman's " << level.loop << " at " << loop_mm / stature;
         }
     }
-    {
-        double mean = 0;
-        const auto loop = loops["waist_circ"].get<std::vector<int>>();
-        for (int v : loop) {
-            mean += soup.points[static_cast<std::size_t>(v)][1];
-        }
-        const double loop_mm = (mean / static_cast<double>(loop.size()) - floor) * 100;
-        const auto* l = r.landmarks.find("waist_front");
-        ASSERT_TRUE(l && l->available()) << name << ": waist_front";
-        const double above = (l->point[1] - loop_mm) / stature;
-        EXPECT_GE(above, 0.0) << name << ": the waist under MakeHuman's waist loop";
-        EXPECT_LE(above, 0.06) << name << ": the waist " << above * 100
-                               << " % of the stature above MakeHuman's waist loop";
-    }
+    const auto* waist = r.landmarks.find("waist_front");
+    ASSERT_TRUE(waist && waist->available()) << name << ": waist_front";
+    const double above = (waist->point[1] - loop_height("waist_circ")) / stature;
+    EXPECT_GE(above, 0.0) << name << ": the waist under MakeHuman's waist loop";
+    EXPECT_LE(above, 0.06) << name << ": the waist " << above * 100
+                           << " % of the stature above MakeHuman's waist loop";
     const auto neck = loops["neck_circ"].get<std::vector<int>>();
     for (const double sign : {1.0, -1.0}) {
         const std::string landmark = sign > 0 ? "side_neck_left" : "side_neck_right";

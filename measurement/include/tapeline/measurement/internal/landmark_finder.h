@@ -594,17 +594,16 @@ private:
         auto [wy, wg] = scan_minimum(girth, lo, hi, samples, options_.level_tolerance);
         // The narrowest girth above the lowest ribs (kWaistTop) is the fold under the chest:
         // the waist is then a narrowing below them, if there is one.
-        const double ribs = c + kWaistTop * (a - c);
-        bool at_end = wy < lo + 2 * step_ || wy > hi - 2 * step_;
-        if (std::isfinite(wg) && wy > ribs) {
-            const int n = std::max(8, static_cast<int>((ribs - lo) / step_));
-            std::tie(wy, wg) = scan_minimum(girth, lo, ribs, n, options_.level_tolerance);
-            at_end = wy < lo + 2 * step_ || wy > ribs - 2 * step_;
+        double band_top = hi;
+        if (std::isfinite(wg) && wy > c + kWaistTop * (a - c)) {
+            band_top = c + kWaistTop * (a - c);
+            const int n = std::max(8, static_cast<int>((band_top - lo) / step_));
+            std::tie(wy, wg) = scan_minimum(girth, lo, band_top, n, options_.level_tolerance);
         }
         // No waist indentation (a belly or a straight torso): the smallest girth sits at an end
-        // of the band. The waist is then at its usual place between crotch and armpit
+        // of the band searched. The waist is then at its usual place between crotch and armpit
         // (kWaistFraction of the way, the population's median where a waist is found).
-        if (std::isfinite(wg) && at_end) {
+        if (std::isfinite(wg) && (wy < lo + 2 * step_ || wy > band_top - 2 * step_)) {
             wy = c + kWaistFraction * (a - c);
             wg = girth(wy);
         }
