@@ -22,23 +22,9 @@ using tapeline_test::expect_error;
 
 const std::string kBundled = std::string(TAPELINE_DATA_DIR) + "/bodies/mh_female_average.obj";
 
-BodyOptions decimetres(const std::string& name) {
-    BodyOptions o;
-    o.unit = LengthUnit::dm;
-    o.name = name;
-    return o;
-}
-
-BodyOptions millimetres(const std::string& name) {
-    BodyOptions o;
-    o.unit = LengthUnit::mm;
-    o.name = name;
-    return o;
-}
-
 TEST(BodyChecks, DecimetreBodyMeasuredInMetresIsRefusedNamingUnits) {
     const Soup s = read_body_soup(kBundled);
-    BodyOptions o = decimetres("body.obj");
+    BodyOptions o = body_options("body.obj", LengthUnit::dm);
     o.unit = LengthUnit::m;
     expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
                                {"body.obj", "stature 15.9 m", "not a human height", "--units"},
@@ -60,9 +46,9 @@ TEST(BodyChecks, TwoBodiesSideBySideAreRefused) {
                                static_cast<std::uint32_t>(t[1] + n),
                                static_cast<std::uint32_t>(t[2] + n)});
     }
-    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, decimetres("two.obj")); },
-                               {"two.obj", "not one body", "2 separate parts", "one body per file"},
-                               "two bodies");
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(s.points, s.triangles, body_options("two.obj", LengthUnit::dm)); },
+        {"two.obj", "not one body", "2 separate parts", "one body per file"}, "two bodies");
 }
 
 TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
@@ -70,10 +56,10 @@ TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
     for (auto& p : s.points) {
         p = {-p[1], p[0], p[2]};  // a quarter turn about z: the body's up is now -X
     }
-    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, decimetres("side.obj")); },
-                               {"side.obj", "not upright", "tall along the up axis +Y", "--up"},
-                               "on its side");
-    BodyOptions o = decimetres("side.obj");
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(s.points, s.triangles, body_options("side.obj", LengthUnit::dm)); },
+        {"side.obj", "not upright", "tall along the up axis +Y", "--up"}, "on its side");
+    BodyOptions o = body_options("side.obj", LengthUnit::dm);
     o.up = Axis::parse("-X", "--up");
     const Result r = measure_mesh(s.points, s.triangles, o);
     EXPECT_EQ(r.landmarks.available_count(), r.landmarks.landmarks.size());
@@ -82,14 +68,15 @@ TEST(BodyChecks, BodyOnItsSideIsRefusedNamingUpAndMeasuresWithTheRightAxis) {
 // Arms raised sideways but measured as the default A-pose: refused naming --pose (measured so,
 // the armpits are lost and the shoulder points go out along the arms).
 TEST(BodyChecks, TPoseMeasuredAsAnAPoseIsRefusedNamingPose) {
-    const BodyOptions dm = decimetres("a.obj");
+    const BodyOptions dm = body_options("a.obj", LengthUnit::dm);
     const Soup soup = canonical_soup(kBundled, dm);
-    const Result a = measure_mesh(soup.points, soup.triangles, millimetres("a.obj"));
+    const Result a =
+        measure_mesh(soup.points, soup.triangles, body_options("a.obj", LengthUnit::mm));
     const auto posed = raise_arms_to_t_pose(soup.points, a.landmarks, 0.02 * a.frame.height);
     expect_error<InvalidInput>(
-        [&] { measure_mesh(posed, soup.triangles, millimetres("t.obj")); },
+        [&] { measure_mesh(posed, soup.triangles, body_options("t.obj", LengthUnit::mm)); },
         {"t.obj", "the arms are spread sideways", "the hands at 0.", "--pose T"}, "T-pose as A");
-    BodyOptions t = millimetres("t.obj");
+    BodyOptions t = body_options("t.obj", LengthUnit::mm);
     t.pose = Pose::t_pose;
     const Result r = measure_mesh(posed, soup.triangles, t);
     EXPECT_EQ(r.landmarks.available_count(), r.landmarks.landmarks.size());
@@ -100,15 +87,14 @@ TEST(BodyChecks, UpsideDownBodyIsRefusedNamingUp) {
     for (auto& p : s.points) {
         p = {-p[0], -p[1], p[2]};  // half a turn about the front axis
     }
-    expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, decimetres("flip.obj")); },
-                               {"flip.obj", "upside down", "--up"}, "upside down");
+    expect_error<InvalidInput>(
+        [&] { measure_mesh(s.points, s.triangles, body_options("flip.obj", LengthUnit::dm)); },
+        {"flip.obj", "upside down", "--up"}, "upside down");
 }
 
 TEST(BodyChecks, EllipsoidIsNotABody) {
     const Soup s = ellipsoid({0, 0.85, 0}, {0.22, 0.85, 0.15});
-    BodyOptions o;
-    o.unit = LengthUnit::m;
-    o.name = "egg.obj";
+    const BodyOptions o = body_options("egg.obj", LengthUnit::m);
     expect_error<InvalidInput>([&] { measure_mesh(s.points, s.triangles, o); },
                                {"egg.obj", "does not look like a body", "no legs"}, "ellipsoid");
 }
@@ -119,9 +105,7 @@ TEST(BodyChecks, ArmadilloIsNotABody) {
         GTEST_SKIP() << "no " << path;
     }
     const Soup s = read_body_soup(path);
-    BodyOptions o;
-    o.unit = LengthUnit::m;  // 1.0 units tall
-    o.name = "armadillo.obj";
+    BodyOptions o = body_options("armadillo.obj", LengthUnit::m);  // 1.0 units tall
     // Whichever check catches it first, the message names the mesh and says what to try; its
     // raised forelimbs read as a T-pose's arms, and doing what that message says (--pose T) is
     // refused too.
@@ -145,7 +129,7 @@ TEST(BodyChecks, ArmadilloIsNotABody) {
 }
 
 TEST(SelfChecks, PlausibleBodyHasNoWarnings) {
-    BodyOptions o = decimetres("mh_female_average.obj");
+    BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result r = measure_file(kBundled, o);
     for (const auto& w : r.warnings) {
         ADD_FAILURE() << w.rule << ": " << w.message;
@@ -175,7 +159,7 @@ bool has_warning(const Result& r, const std::string& measurement, const std::str
 }
 
 TEST(SelfChecks, WristMidForearmBreaksSymmetryAndForearmLength) {
-    const BodyOptions o = decimetres("mh_female_average.obj");
+    const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result base = measure_file(kBundled, o);
     const Landmark* elbow = base.landmarks.find("elbow_right");
     const Landmark* wrist = base.landmarks.find("wrist_right");
@@ -190,7 +174,7 @@ TEST(SelfChecks, WristMidForearmBreaksSymmetryAndForearmLength) {
 }
 
 TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
-    const BodyOptions o = decimetres("mh_female_average.obj");
+    const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result base = measure_file(kBundled, o);
     const auto waist = base.landmarks.point("waist_front");
     const auto bl = base.landmarks.point("bust_left");
@@ -209,7 +193,7 @@ TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
 // below a sternum as far forward as its nipples), 6 % of the stature under the bust, still
 // within the bust's height band: the tape there is far under the chest's.
 TEST(SelfChecks, BustPointsOnTheLowerRibsAreUnderTheHighBust) {
-    const BodyOptions o = decimetres("mh_female_average.obj");
+    const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result base = measure_file(kBundled, o);
     EXPECT_FALSE(has_warning(base, "bust_girth", "bust_high_bust"));
     const double drop = 0.06 * base.frame.height;
@@ -228,7 +212,7 @@ TEST(SelfChecks, BustPointsOnTheLowerRibsAreUnderTheHighBust) {
 // Shoulder points beside the neck (where a skinned T-pose's outline has its only corner): the
 // straight distance between them is far under a quarter of the stature.
 TEST(SelfChecks, ShoulderPointsBesideTheNeckBreakTheShoulderBreadth) {
-    const BodyOptions o = decimetres("mh_female_average.obj");
+    const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result base = measure_file(kBundled, o);
     EXPECT_FALSE(has_warning(base, "acromion_left", "shoulder_breadth"));
     const double h = base.frame.height;
@@ -249,7 +233,7 @@ TEST(SelfChecks, ShoulderPointsBesideTheNeckBreakTheShoulderBreadth) {
 // A front neck point taken well down the chest tilts the neck base plane so that it runs over
 // the shoulders: the tape is then far longer than the neck's.
 TEST(SelfChecks, NeckBasePlaneOverTheShouldersIsFlagged) {
-    const BodyOptions o = decimetres("mh_female_average.obj");
+    const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result base = measure_file(kBundled, o);
     EXPECT_FALSE(has_warning(base, "neck_base_girth", "neck_base_wide"));
     const auto fn = base.landmarks.point("front_neck");

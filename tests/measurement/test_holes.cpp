@@ -37,10 +37,7 @@ bool have_data() {
 }
 
 Soup soup_of(const std::string& file) {
-    BodyOptions o;
-    o.unit = LengthUnit::dm;
-    o.name = file;
-    return canonical_soup(kDir + file, o);
+    return canonical_soup(kDir + file, body_options(file, LengthUnit::dm));
 }
 
 // The hole sets: where the faces are cut out, from the closed body.

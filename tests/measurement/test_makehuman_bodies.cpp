@@ -30,10 +30,7 @@ bool have_data() {
 }
 
 Result measure(const std::string& body) {
-    BodyOptions o;
-    o.unit = LengthUnit::dm;
-    o.name = body + ".obj";
-    return measure_file(kDir + body + ".obj", o);
+    return measure_file(kDir + body + ".obj", body_options(body + ".obj", LengthUnit::dm));
 }
 
 // MakeHuman ruler name -> our girth.

@@ -92,10 +92,7 @@ TEST(RemeshedBodies, MeasureLikeTheOriginalMesh) {
     }
     const Variant variants[] = {{"isotropic 5 mm", 5, 0}, {"decimated to 5k vertices", 0, 5000}};
     for (const char* file : {"mh_female_average.obj", "population/mh_pop_036.ply"}) {
-        BodyOptions options;
-        options.unit = LengthUnit::dm;
-        options.name = file;
-        const Soup soup = canonical_soup(kDir + file, options);
+        const Soup soup = canonical_soup(kDir + file, body_options(file, LengthUnit::dm));
         const Result original = measure_soup_with_skin_lengths(soup, file);
         ASSERT_TRUE(original.warnings.empty()) << file;
         for (const Variant& v : variants) {

@@ -62,10 +62,7 @@ TEST_P(SkinLengths, EveryLengthIsFoundPlausibleAndAgreesWithExactPaths) {
     if (!std::ifstream(path)) {
         GTEST_SKIP() << path << " absent";
     }
-    BodyOptions o;
-    o.unit = LengthUnit::dm;
-    o.name = path;
-    const LengthsResult r = measure_file_with_lengths(path, o);
+    const LengthsResult r = measure_file_with_lengths(path, body_options(path, LengthUnit::dm));
     const auto& set = r.result.measurements;
     for (const auto& [name, range] : kRanges) {
         const Measurement* m = set.find(name);

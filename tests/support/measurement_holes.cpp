@@ -16,16 +16,6 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using SurfaceMesh = CGAL::Surface_mesh<Epick::Point_3>;
 namespace meas = tapeline::measurement;
 
-BodyOptions millimetres(const std::string& name, Pose pose) {
-    BodyOptions o;
-    o.unit = meas::LengthUnit::mm;
-    o.up = meas::Axis{1, 1};
-    o.front = meas::Axis{2, 1};
-    o.pose = pose;
-    o.name = name;
-    return o;
-}
-
 }  // namespace
 
 Soup canonical_soup(const std::string& path, const BodyOptions& options) {
@@ -35,7 +25,8 @@ Soup canonical_soup(const std::string& path, const BodyOptions& options) {
 }
 
 Result measure_soup_with_skin_lengths(const Soup& soup, const std::string& name, Pose pose) {
-    const meas::Body body = meas::make_body(soup.points, soup.triangles, millimetres(name, pose));
+    const meas::Body body = meas::make_body(soup.points, soup.triangles,
+                                            body_options(name, meas::LengthUnit::mm, pose));
     const auto t0 = std::chrono::steady_clock::now();
     auto m = meas::measure_body(body);
     // The soup has no CGAL mesh of its own: the body's (filled) mesh is the input.
@@ -46,7 +37,7 @@ Result measure_soup_with_skin_lengths(const Soup& soup, const std::string& name,
 
 FilledSoup fill_soup(const Soup& soup, const std::string& name) {
     const meas::Body body =
-        meas::make_body(soup.points, soup.triangles, millimetres(name, Pose::a_pose));
+        meas::make_body(soup.points, soup.triangles, body_options(name, meas::LengthUnit::mm));
     FilledSoup out;
     out.faces = body.mesh.triangles.size();
     for (std::size_t f = 0; f < out.faces; ++f) {

@@ -18,6 +18,16 @@ namespace tapeline_test::measurement {
 using namespace tapeline::measurement;
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
+/// How to read a body: `name` (for messages), its unit, up +Y, front +Z, `pose`.
+inline BodyOptions body_options(const std::string& name, LengthUnit unit,
+                                Pose pose = Pose::a_pose) {
+    BodyOptions o;
+    o.name = name;
+    o.unit = unit;
+    o.pose = pose;
+    return o;
+}
+
 /// A body as plain points and triangles (the body-check and hole tests rotate, combine and cut
 /// it); the coordinates are those of whatever made it (see the function that returns it).
 struct Soup {
