@@ -7,8 +7,10 @@
 // (docs/bench_measure/remeshed.md, measurement/README.md): the cross seam and the inseam (they
 // hang on the crotch point's level); they get the slack below. The 20 mm
 // re-meshing is left to the benchmark: its chords cut small girths by more than ISO allows (a
-// 108 mm wrist drawn with 18.5 mm chords loses about 5 mm). One bundled body and one of the
-// hold-out population. Skipped without the data.
+// 108 mm wrist drawn with 18.5 mm chords loses about 5 mm). One bundled body, one of the hold-out
+// population, and two whose elbow (mh_pop_032: shoulder to elbow +29 / +31 mm) and wrist
+// (mh_pop_022: shoulder to wrist +7 mm decimated) followed the triangles when they were taken at
+// the farthest bend and the narrowest section. Skipped without the data.
 #include <tapeline_test/measurement.h>
 #include <tapeline_test/measurement_holes.h>
 #include <tapeline_test/measurement_remesh.h>
@@ -91,7 +93,8 @@ TEST(RemeshedBodies, MeasureLikeTheOriginalMesh) {
         GTEST_SKIP() << "no " << kDir;
     }
     const Variant variants[] = {{"isotropic 5 mm", 5, 0}, {"decimated to 5k vertices", 0, 5000}};
-    for (const char* file : {"mh_female_average.obj", "population/mh_pop_036.ply"}) {
+    for (const char* file : {"mh_female_average.obj", "population/mh_pop_036.ply",
+                             "population/mh_pop_032.ply", "population/mh_pop_022.ply"}) {
         const Soup soup = canonical_soup(kDir + file, body_options(file, LengthUnit::dm));
         const Result original = measure_soup_with_skin_lengths(soup, file);
         ASSERT_TRUE(original.warnings.empty()) << file;

@@ -256,4 +256,48 @@ TEST(SyntheticBody, TPoseArmpitsElbowsAndWristsMatchTheConstruction) {
     }
 }
 
+// The elbow's level along the arm is the breakpoint of the best two-segment fit to the section
+// centres' distances from the upper-arm-to-wrist chord. Analytic truth: a tent (two straight
+// segments of different slopes, as an arm bent at a point) has its apex there, wherever it falls
+// between the samples (every 5.5 mm, the profile's spacing on a 1.87 m body); a bend rounded by a
+// circle tangent to two segments of equal slope is symmetric about the apex, with or without
+// 0.5 mm of noise on the samples. Moving every t by 1000 mm moves the breakpoint by as much.
+TEST(SyntheticBody, ElbowBendIsWhereTheUpperArmAndForearmLinesMeet) {
+    std::vector<double> ts;
+    for (int i = 0; i < 64; ++i) {
+        ts.push_back(100 + 5.5 * i);
+    }
+    for (const double apex : {265.5, 263.3, 300.1, 200.7}) {
+        std::vector<std::pair<double, double>> tent, shifted;
+        for (const double t : ts) {
+            const double y = 40 - (t < apex ? 0.15 * (apex - t) : 0.35 * (t - apex));
+            tent.emplace_back(t, y);
+            shifted.emplace_back(t + 1000, y);
+        }
+        const auto b = hinge_breakpoint(tent);
+        ASSERT_TRUE(b) << apex;
+        EXPECT_NEAR(*b, apex, 0.25) << apex;
+        EXPECT_NEAR(*hinge_breakpoint(shifted), *b + 1000, 1e-6) << apex;
+    }
+    for (const double apex : {265.5, 263.3}) {
+        for (const double radius : {60.0, 150.0}) {
+            for (const double noise : {0.0, 0.5}) {
+                const double slope = 0.25, a = std::atan(slope);
+                std::vector<std::pair<double, double>> bend;
+                for (std::size_t i = 0; i < ts.size(); ++i) {
+                    const double x = ts[i] - apex;
+                    const double y =
+                        std::abs(x) < radius * std::sin(a)
+                            ? 40 - radius / std::cos(a) + std::sqrt(radius * radius - x * x)
+                            : 40 - slope * std::abs(x);
+                    bend.emplace_back(ts[i], y + noise * std::sin(1.7 * static_cast<double>(i)));
+                }
+                EXPECT_NEAR(*hinge_breakpoint(bend), apex, 1.0)
+                    << apex << " radius " << radius << " noise " << noise;
+            }
+        }
+    }
+    EXPECT_FALSE(hinge_breakpoint({{0, 0}, {1, 1}, {2, 2}, {3, 1}, {4, 0}, {5, -1}}));
+}
+
 }  // namespace

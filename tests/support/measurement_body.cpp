@@ -83,6 +83,10 @@ Result measure_synthetic(const SyntheticBodyOptions& synthetic, const BodyOption
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
+std::optional<double> hinge_breakpoint(const std::vector<std::pair<double, double>>& samples) {
+    return meas::internal::hinge_breakpoint(samples);
+}
+
 SliceComparison compare_with_cgal_slicer(const SyntheticBodyOptions& synthetic, const Vec3& point,
                                          const Vec3& normal) {
     const meas::SyntheticBody body(synthetic);

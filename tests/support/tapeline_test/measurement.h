@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -103,6 +104,10 @@ struct SliceComparison {
 };
 SliceComparison compare_with_cgal_slicer(const SyntheticBodyOptions& synthetic, const Vec3& point,
                                          const Vec3& normal);
+
+/// The landmark finder's two-segment breakpoint (internal::hinge_breakpoint; the elbow's level
+/// along the arm) of samples (t, y), t ascending.
+std::optional<double> hinge_breakpoint(const std::vector<std::pair<double, double>>& samples);
 
 /// parse_landmark_overrides on a string (throws as the library does).
 std::size_t parse_overrides(const std::string& json);
