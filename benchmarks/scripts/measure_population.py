@@ -47,10 +47,11 @@ def level_label(loop, how):
 BASE_MESH_VERTICES = 13380
 
 
-def vertex_xy(path):
-    """The (x, y) of every vertex of a binary little-endian PLY (float x y z first) or an OBJ."""
+def vertices(path):
+    """The (x, y, z) of every vertex of a binary little-endian PLY (float properties, x y z first)
+    or an OBJ; [] for any other PLY."""
     if path.endswith(".obj"):
-        return [(float(line.split()[1]), float(line.split()[2])) for line in open(path)
+        return [tuple(float(c) for c in line.split()[1:4]) for line in open(path)
                 if line.startswith("v ")]
     data = open(path, "rb").read()
     end = data.index(b"end_header\n") + len(b"end_header\n")
@@ -66,13 +67,13 @@ def vertex_xy(path):
     if props[:3] != ["float"] * 3 or any(t != "float" for t in props):
         return []
     stride = 4 * len(props)
-    return [struct.unpack_from("<ff", data, end + i * stride) for i in range(n)]
+    return [struct.unpack_from("<fff", data, end + i * stride) for i in range(n)]
 
 
 def loop_levels(path, loops):
     """Height above the floor (mm, decimetre input) at which each loop of LEVELS places its level,
     keyed by level_label, or {} when the mesh does not carry MakeHuman's base-mesh vertices."""
-    xy = vertex_xy(path)
+    xy = [(x, y) for x, y, _ in vertices(path)]
     if len(xy) != BASE_MESH_VERTICES:
         return {}
     floor = min(y for _, y in xy)
