@@ -1301,11 +1301,11 @@ private:
         return sample;
     }
 
-    /// Samples a limb with planes perpendicular to the polyline `axis` every `h` mm; `reference`
-    /// picks the "outer" hull point (largest component along it).
-    std::vector<LimbSample> limb_profile(const std::vector<Vec3>& axis, double h,
-                                         const Vec3& reference) {
-        std::vector<LimbSample> out;
+    /// Calls f(start, unit direction, length, t0) on each segment of positive length of the
+    /// polyline `axis` in order (t0: the distance along the polyline to its start) while f
+    /// returns true.
+    template <class F>
+    static void for_each_segment(const std::vector<Vec3>& axis, F&& f) {
         double t0 = 0;
         for (std::size_t i = 0; i + 1 < axis.size(); ++i) {
             const Vec3 d = sub(axis[i + 1], axis[i]);
@@ -1313,33 +1313,41 @@ private:
             if (len <= 0) {
                 continue;
             }
-            const Vec3 dir = mul(d, 1 / len);
-            for (double t = (i == 0 ? 0.0 : std::fmod(h - std::fmod(t0, h), h)); t < len; t += h) {
-                out.push_back(limb_sample(add(axis[i], mul(dir, t)), dir, t0 + t, reference));
+            if (!f(axis[i], mul(d, 1 / len), len, t0)) {
+                return;
             }
             t0 += len;
         }
+    }
+
+    /// Samples a limb with planes perpendicular to the polyline `axis` every `h` mm; `reference`
+    /// picks the "outer" hull point (largest component along it).
+    std::vector<LimbSample> limb_profile(const std::vector<Vec3>& axis, double h,
+                                         const Vec3& reference) {
+        std::vector<LimbSample> out;
+        for_each_segment(axis, [&](const Vec3& a, const Vec3& dir, double len, double t0) {
+            for (double t = std::fmod(h - std::fmod(t0, h), h); t < len; t += h) {
+                out.push_back(limb_sample(add(a, mul(dir, t)), dir, t0 + t, reference));
+            }
+            return true;
+        });
         return out;
     }
 
     /// The sample of limb_profile(axis, ..., reference) at distance `t` along the polyline `axis`
     /// (clamped to its ends).
     LimbSample limb_sample_at(const std::vector<Vec3>& axis, double t, const Vec3& reference) {
-        double t0 = 0;
-        for (std::size_t i = 0; i + 1 < axis.size(); ++i) {
-            const Vec3 d = sub(axis[i + 1], axis[i]);
-            const double len = norm(d);
-            if (len <= 0) {
-                continue;
-            }
-            if (t <= t0 + len || i + 2 == axis.size()) {
-                const double u = std::clamp(t - t0, 0.0, len);
-                return limb_sample(add(axis[i], mul(d, u / len)), mul(d, 1 / len), t0 + u,
-                                   reference);
-            }
-            t0 += len;
-        }
-        return limb_sample(axis.front(), {0, -1, 0}, 0, reference);
+        Vec3 start = axis.front(), dir{0, -1, 0};
+        double length = 0, from = 0;
+        for_each_segment(axis, [&](const Vec3& a, const Vec3& d, double len, double t0) {
+            start = a;
+            dir = d;
+            length = len;
+            from = t0;
+            return t > t0 + len;
+        });
+        const double u = std::clamp(t - from, 0.0, length);
+        return limb_sample(add(start, mul(dir, u)), dir, from + u, reference);
     }
 
     /// Arms: axis from the shoulder joint (between armpit and acromion) to the fingertip, sampled
@@ -1417,8 +1425,8 @@ private:
             // (shoulder to wrist 13 mm). The wrist is the centroid of the band's sections less
             // than 4 % longer than the narrowest, weighted by how much less, on a fresh section
             // there: within 8.3 mm over 60 bodies never used to set it (the wrist girth, the
-            // smallest around it, does not move), 17.5 mm (sd 4.8) before MakeHuman's own wrist
-            // joint along the arm over the population (14.6, sd 5.7).
+            // smallest around it, does not move), 17.5 mm (sd 4.8) nearer the shoulder than
+            // MakeHuman's own wrist joint over the population (14.6, sd 5.7, the narrowest).
             std::optional<std::size_t> palm;
             for (std::size_t i = 0; i < prof.size(); ++i) {
                 const double hand = total - prof[i].t;
@@ -1481,9 +1489,9 @@ private:
             // to 1-2 mm over 20-30 mm of arm: the elbow point moved by up to 34 mm between a
             // body and its re-meshed copy (5 mm edges or 5k vertices), by 4.8 mm at most with
             // the breakpoint over 60 bodies never used to set it, and lies along the arm 2.2 mm
-            // (sd 9.7) from MakeHuman's own elbow joint over the population (6.4, sd 12.2). The
-            // point is the olecranon: the section's point farthest out on the convex side of the
-            // bend, away from the chord (on a straight arm, the back).
+            // (sd 9.7) from MakeHuman's own elbow joint over the population (the farthest
+            // centre: 6.4, sd 12.2). The point is the olecranon: the section's point farthest out
+            // on the convex side of the bend, away from the chord (on a straight arm, the back).
             std::size_t e = *em;
             Vec3 convex{0, 0, -1};
             LimbSample es = prof[e];
@@ -1519,7 +1527,10 @@ private:
                         }
                     }
                     const Vec3 d = sub(es.centre, ca);
-                    convex = sub(d, mul(chord, dot(d, chord)));
+                    const Vec3 out = sub(d, mul(chord, dot(d, chord)));
+                    if (norm(out) > 1e-3 * height_) {
+                        convex = out;
+                    }
                 } else if (ws->t - prof[e].t < 0.10 * height_) {
                     // A straight arm whose first narrowing leaves a forearm shorter than 0.10 of
                     // the height (0.146 in Drillis & Contini 1966) found a dip of the forearm:
