@@ -26,7 +26,7 @@ import tempfile
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from measure_population import vertices  # noqa: E402
+from measure_population import BASE_MESH_VERTICES, vertices  # noqa: E402
 
 # Our landmark -> MakeHuman joint (default skeleton) on each side.
 JOINTS = {"elbow": "lowerarm01.%s____head", "wrist": "wrist.%s____head"}
@@ -70,12 +70,23 @@ def main():
     ap.add_argument("--data-tools", required=True)
     ap.add_argument("--jobs", type=int, default=2)
     a = ap.parse_args()
+    meta_path = os.path.join(a.population, "population.json")
+    if not os.path.isfile(meta_path):
+        sys.exit("arm_joints.py: %s: no population.json (a folder written by mh_population.py)"
+                 % a.population)
+    if not os.path.isfile(os.path.join(a.data_tools, "mh_bodies.py")):
+        sys.exit("arm_joints.py: --data-tools %s: no mh_bodies.py there" % a.data_tools)
+    for var in ("MAKEHUMAN_GIT", "MAKEHUMAN_ASSETS_GIT"):
+        if not os.path.isdir(os.environ.get(var, "")):
+            sys.exit("arm_joints.py: %s is not set to the git folder of MakeHuman's repository "
+                     "(makehumancommunity/makehuman%s)"
+                     % (var, "-assets" if var == "MAKEHUMAN_ASSETS_GIT" else ""))
     sys.path.insert(0, a.data_tools)
     import mh_bodies as mb  # reads MAKEHUMAN_GIT / MAKEHUMAN_ASSETS_GIT
 
     skel = json.loads(mb.git_show(os.environ["MAKEHUMAN_GIT"],
                                   "makehuman/data/rigs/default.mhskel").decode())
-    meta = json.load(open(os.path.join(a.population, "population.json")))
+    meta = json.load(open(meta_path))
     base, _, _ = mb.read_base()
     cache = {"targets": mb.macro_targets()}
     names = sorted(meta["bodies"])
@@ -85,13 +96,19 @@ def main():
         futures = {n: pool.submit(measure, a.tapeline, os.path.join(a.population, n + ".ply"),
                                   os.path.join(work, n + ".json")) for n in names}
         for k, n in enumerate(names, 1):
+            try:
+                lm = futures[n].result()
+            except RuntimeError as e:
+                sys.exit("arm_joints.py: tapeline measure failed on %s" % e)
             V = morph(mb, base, meta["bodies"][n]["sliders"], cache)
             body = np.array(vertices(os.path.join(a.population, n + ".ply")))
+            if body.shape != (BASE_MESH_VERTICES, 3):
+                sys.exit("arm_joints.py: %s.ply: not a binary PLY of MakeHuman's %d base-mesh "
+                         "vertices" % (n, BASE_MESH_VERTICES))
             drift = float(np.abs(V[:len(body)] - body).max()) * 100  # dm -> mm
             if drift > 0.5:
-                sys.exit("%s: the body morphed from population.json's sliders is %.2f mm from its "
-                         "PLY file: not the same draw" % (n, drift))
-            lm = futures[n].result()
+                sys.exit("arm_joints.py: %s: the body morphed from population.json's sliders is "
+                         "%.2f mm from its PLY file: not the same draw" % (n, drift))
             for side, s in SIDES:
                 joint = {k: V[skel["joints"][j % s]].mean(axis=0) * 100 for k, j in JOINTS.items()}
                 shoulder = V[skel["joints"][SHOULDER % s]].mean(axis=0) * 100
