@@ -85,7 +85,8 @@ def main():
         write_table(rows, a)
         return
     rows = []
-    work = tempfile.mkdtemp(prefix="drape_")
+    tmp = tempfile.TemporaryDirectory(prefix="drape_")  # removed when the script ends
+    work = tmp.name
     todo = [(b, p) for b in bodies(a.data, a.bodies) for p in a.patterns]
     for k, (body, pat) in enumerate(todo):
         rel, without = PATTERNS[pat]

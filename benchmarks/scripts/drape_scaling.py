@@ -72,7 +72,8 @@ def main():
     body = a.body or os.path.join(a.data, "bodies", "mh_female_average.obj")
     pattern = a.pattern or os.path.join(a.data, "patterns", "freesewing",
                                         "teagan_cisFemaleAdult36.json")
-    work = tempfile.mkdtemp(prefix="drape_scaling_")
+    tmp = tempfile.TemporaryDirectory(prefix="drape_scaling_")  # removed when the script ends
+    work = tmp.name
     runs = []
     todo = [(r, t) for r in a.resolutions for t in a.threads]
     for k, (res, threads) in enumerate(todo):

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <tapeline_test/fabric_records.h>
 #include <tapeline_test/garment_shapes.h>
+#include <tapeline_test/temp_dir.h>
 
 #include <cmath>
 #include <fstream>
@@ -177,7 +178,8 @@ TEST(GarmentFabricLab, LibraryAndFileRoundTrip) {
     EXPECT_DOUBLE_EQ(d->params.stretch_warp_n_m, 410);
     // A FAST record converted and written reads back with its lab figures.
     const tg::Fabric f = tg::fabric_from_fast(fast_record(), "f.json");
-    const std::string path = ::testing::TempDir() + "fabric_fast.json";
+    const tapeline_test::TempDir tmp;
+    const std::string path = tmp.file("fabric_fast.json");
     { std::ofstream(path) << tg::fabric_json(f).dump(1); }
     const tg::Fabric back = tg::fabric_record_from(path);
     EXPECT_DOUBLE_EQ(back.extension_warp_pct[1], 1.87);

@@ -8,6 +8,7 @@
 #include <tapeline/garment/quality.h>
 #include <tapeline/garment/stitching.h>
 #include <tapeline_test/garment_shapes.h>
+#include <tapeline_test/temp_dir.h>
 
 #include <gtest/gtest.h>
 
@@ -430,7 +431,8 @@ TEST(GarmentFabric, CatalogueAndFileRefusals) {
     } catch (const tapeline::InvalidInput& e) {
         EXPECT_NE(std::string(e.what()).find("unknown fabric 'tweed'"), std::string::npos);
     }
-    const std::string path = ::testing::TempDir() + "fabric_bad.json";
+    const tapeline_test::TempDir tmp;
+    const std::string path = tmp.file("fabric_bad.json");
     { std::ofstream(path) << R"({"density_g_m2": -3})"; }
     try {
         tg::fabric_from(path);

@@ -55,13 +55,6 @@ std::string nested_xml(std::size_t levels) {
     return s + "</vit>";
 }
 
-std::string temp_path(const std::string& name) {
-    const auto dir =
-        std::filesystem::temp_directory_path() / ("tapeline_hostile_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return (dir / name).string();
-}
-
 }  // namespace
 
 TEST(HostileDocuments, JsonDepthLimitIsExact) {
@@ -82,7 +75,8 @@ TEST(HostileDocuments, JsonDepthIgnoresBracketsInStrings) {
 }
 
 TEST(HostileDocuments, MeasurementFileWithThreeHundredThousandLevels) {
-    const std::string path = temp_path("T.json");
+    const tapeline_test::TempDir tmp;
+    const std::string path = tmp.file("T.json");
     std::ofstream(path) << nested_json(300000);
     const std::string m = invalid_message([&] { read_measurement_json(path, "mm"); });
     EXPECT_NE(m.find(path + ": JSON nested deeper than 256 levels"), std::string::npos) << m;
@@ -97,14 +91,16 @@ TEST(HostileDocuments, XmlDepthLimit) {
 }
 
 TEST(HostileDocuments, SeamlyFileWithThirtyThousandLevels) {
-    const std::string path = temp_path("deep.vit");
+    const tapeline_test::TempDir tmp;
+    const std::string path = tmp.file("deep.vit");
     std::ofstream(path) << nested_xml(30000);
     const std::string m = invalid_message([&] { read_seamly_individual(path); });
     EXPECT_NE(m.find("nested deeper than 256 levels"), std::string::npos) << m;
 }
 
 TEST(HostileDocuments, DirectoryAsDocument) {
-    const std::string dir = temp_path("a_directory.json");
+    const tapeline_test::TempDir tmp;
+    const std::string dir = tmp.file("a_directory.json");
     std::filesystem::create_directories(dir);
     const std::string m = invalid_message([&] { read_pattern_json(dir); });
     EXPECT_EQ(m, dir + ": is a directory, not a file");
@@ -124,17 +120,11 @@ std::vector<std::string> files_in(const std::string& dir) {
     return out;
 }
 
-std::string fresh_dir(const std::string& name) {
-    const std::string dir = temp_path(name);
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    return dir;
-}
-
 }  // namespace
 
 TEST(HostileOutputs, MissingDirectoryRefusedBeforeAnythingIsWritten) {
-    const std::string dir = fresh_dir("outputs_missing");
+    const tapeline_test::TempDir tmp;  // empty, removed at the end
+    const std::string dir = tmp.path.string();
     const std::string m = invalid_message([&] {
         tapeline::OutputFiles outs({dir + "/g.json", dir + "/nodir/x.svg"});
     });
@@ -143,7 +133,8 @@ TEST(HostileOutputs, MissingDirectoryRefusedBeforeAnythingIsWritten) {
 }
 
 TEST(HostileOutputs, FailureLeavesNoFileAndCommitRenamesAll) {
-    const std::string dir = fresh_dir("outputs_commit");
+    const tapeline_test::TempDir tmp;  // empty, removed at the end
+    const std::string dir = tmp.path.string();
     {
         tapeline::OutputFiles outs({dir + "/a.json", dir + "/b.svg"});
         outs.write(dir + "/a.json", [](std::ostream& o) { o << "{}"; });
@@ -160,7 +151,8 @@ TEST(HostileOutputs, FailureLeavesNoFileAndCommitRenamesAll) {
 }
 
 TEST(HostileOutputs, SamePathTwiceAndDirectoryAsOutput) {
-    const std::string dir = fresh_dir("outputs_twice");
+    const tapeline_test::TempDir tmp;  // empty, removed at the end
+    const std::string dir = tmp.path.string();
     EXPECT_NE(invalid_message([&] {
                   tapeline::OutputFiles outs({dir + "/a.svg", dir + "/./a.svg"});
               }).find("given as two different outputs"),
@@ -170,7 +162,8 @@ TEST(HostileOutputs, SamePathTwiceAndDirectoryAsOutput) {
 }
 
 TEST(HostileOutputs, LongNameGetsAShortTemporary) {
-    const std::string dir = fresh_dir("outputs_long");
+    const tapeline_test::TempDir tmp;  // empty, removed at the end
+    const std::string dir = tmp.path.string();
     const std::string name = std::string(250, 'n') + ".json";  // 255 bytes: NAME_MAX on Linux
     tapeline::write_file_atomically(dir + "/" + name, [](std::ostream& o) { o << "{}"; });
     EXPECT_EQ(files_in(dir), std::vector<std::string>{name});
@@ -180,7 +173,8 @@ TEST(HostileOutputs, LongNameGetsAShortTemporary) {
 }
 
 TEST(HostileOutputs, StaleTemporariesOfADeadProcessAreRemoved) {
-    const std::string dir = fresh_dir("outputs_stale");
+    const tapeline_test::TempDir tmp;  // empty, removed at the end
+    const std::string dir = tmp.path.string();
     // A PID that is not running: a child that has exited and been reaped.
     const pid_t child = ::fork();
     if (child == 0) {

@@ -9,6 +9,7 @@
 #include <tapeline/wrinkles/picture.h>
 
 #include <gtest/gtest.h>
+#include <tapeline_test/temp_dir.h>
 
 #include "invalid_input.h"
 
@@ -335,7 +336,8 @@ TEST(GarmentObj, RoundTripKeepsPositionsPatternAndGrain) {
     }
     std::ostringstream os;
     tg::write_garment_obj(os, g, [](const Vec3& p) { return p; });
-    const std::string path = testing::TempDir() + "wrinkles_roundtrip.obj";
+    const tapeline_test::TempDir tmp;
+    const std::string path = tmp.file("wrinkles_roundtrip.obj");
     std::ofstream(path) << os.str();
     const tg::GarmentMesh r = tg::read_garment_obj(path);
     ASSERT_EQ(r.triangles.size(), g.triangles.size());
@@ -368,9 +370,9 @@ TEST(GarmentObj, RoundTripKeepsPositionsPatternAndGrain) {
 }
 
 TEST(GarmentObj, BadFilesAreNamedWithTheirLine) {
-    const std::string dir = testing::TempDir();
+    const tapeline_test::TempDir tmp;
     auto with = [&](const std::string& name, const std::string& text) {
-        const std::string p = dir + name;
+        const std::string p = tmp.file(name);
         std::ofstream(p) << text;
         return error_of([&] { tg::read_garment_obj(p); });
     };
@@ -387,7 +389,7 @@ TEST(GarmentObj, BadFilesAreNamedWithTheirLine) {
               std::string::npos);
     EXPECT_NE(with("empty.obj", head).find("no triangles"), std::string::npos);
     EXPECT_NE(
-        error_of([&] { tg::read_garment_obj(dir + "does_not_exist.obj"); }).find("cannot open"),
+        error_of([&] { tg::read_garment_obj(tmp.file("does_not_exist.obj")); }).find("cannot open"),
         std::string::npos);
 }
 
