@@ -196,7 +196,7 @@ private:
 /// One broken self-check rule (self_checks.h).
 struct CheckWarning {
     std::string measurement;  ///< the measurement or landmark it concerns
-    /// left_right, bust_underbust, bust_high_bust, wrist_elbow, landmark_height,
+    /// left_right, bust_underbust, bust_high_bust, bust_armpit, wrist_elbow, landmark_height,
     /// segment_length, shoulder_breadth, loop_around_part, neck_base_wide, neck_below_chin
     std::string rule;
     std::string message;  ///< one line naming both
