@@ -211,6 +211,21 @@ TEST(SelfChecks, BustPointsOnTheLowerRibsAreUnderTheHighBust) {
     EXPECT_FALSE(has_warning(r, "bust_left", "landmark_height"));
 }
 
+// Overrides moving both bust points to `drop` of the stature under their armpits.
+std::string busts_under_armpits(const Result& base, double drop) {
+    std::string json;
+    for (const char* side : {"left", "right"}) {
+        const auto b = base.landmarks.point(std::string("bust_") + side);
+        const auto ap = base.landmarks.point(std::string("armpit_") + side);
+        EXPECT_TRUE(b && ap) << side;
+        if (b && ap) {
+            json += std::string(json.empty() ? "" : ", ") + "\"bust_" + side +
+                    "\": " + point_json({(*b)[0], (*ap)[1] - drop * base.frame.height, (*b)[2]});
+        }
+    }
+    return json;
+}
+
 // Bust points 0.10 of the stature under the armpits (the lowest of 419 MakeHuman bodies lie
 // 0.084 under them, with the largest, least firm breasts): below the chest, whatever the girth.
 TEST(SelfChecks, BustPointsFarUnderTheArmpitsAreBelowTheChest) {
@@ -218,18 +233,27 @@ TEST(SelfChecks, BustPointsFarUnderTheArmpitsAreBelowTheChest) {
     const Result base = measure_file(kBundled, o);
     EXPECT_FALSE(has_warning(base, "bust_left", "bust_armpit"));
     EXPECT_FALSE(has_warning(base, "bust_right", "bust_armpit"));
-    const double h = base.frame.height;
-    std::string json;
-    for (const char* side : {"left", "right"}) {
-        const auto b = base.landmarks.point(std::string("bust_") + side);
-        const auto ap = base.landmarks.point(std::string("armpit_") + side);
-        ASSERT_TRUE(b && ap) << side;
-        json += std::string(json.empty() ? "" : ", ") + "\"bust_" + side +
-                "\": " + point_json({(*b)[0], (*ap)[1] - 0.10 * h, (*b)[2]});
-    }
-    const Result r = measure_file(kBundled, o, write_overrides("low_bust.json", json));
+    const Result r = measure_file(
+        kBundled, o, write_overrides("low_bust.json", busts_under_armpits(base, 0.10)));
     EXPECT_TRUE(has_warning(r, "bust_left", "bust_armpit"));
     EXPECT_TRUE(has_warning(r, "bust_right", "bust_armpit"));
+}
+
+// Bust points at the armpits' level: the bust tape runs around the arms as well as the chest (a
+// thin male body of seed 20261207 had its bust points there by itself before the bust points of a
+// chest without an apex went to the nipple level: bust girth 356 mm over MakeHuman's ruler, 1.42
+// times the high bust girth, with no warning).
+TEST(SelfChecks, BustTapeAroundTheArmsIsFarOverTheHighBust) {
+    const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
+    const Result base = measure_file(kBundled, o);
+    EXPECT_FALSE(has_warning(base, "bust_girth", "bust_high_bust"));
+    const Result r = measure_file(
+        kBundled, o, write_overrides("armpit_bust.json", busts_under_armpits(base, 0)));
+    const auto bust = r.measurements.value("bust_girth");
+    const auto high = r.measurements.value("high_bust_girth");
+    ASSERT_TRUE(bust && high);
+    EXPECT_GT(*bust, 1.3 * *high);  // the tape does run around the arms
+    EXPECT_TRUE(has_warning(r, "bust_girth", "bust_high_bust"));
 }
 
 // A thin, flat chest whose sternum is its front from the armpits down to the lower ribs

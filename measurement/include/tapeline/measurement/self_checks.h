@@ -57,6 +57,12 @@ inline const std::vector<HeightBand>& landmark_height_bands() {
 inline constexpr double kShoulderBreadthBand[2] = {0.15, 0.36};
 /// The least bust girth as a fraction of the high bust girth (bust_high_bust).
 inline constexpr double kBustOfHighBust = 0.9;
+/// The largest bust girth as a fraction of the high bust girth (bust_high_bust): 0.94-1.15 over
+/// 479 MakeHuman bodies (the bundled ones and ten random draws; the largest with breast size 0.8
+/// and more); a bust tape at the armpits' level runs around the arms too, 1.40-1.42 on three
+/// bodies, and did so silently on a thin male body of seed 20261207 (bust girth 356 mm over
+/// MakeHuman's ruler).
+inline constexpr double kBustOverHighBust = 1.3;
 /// The farthest a bust point lies under its armpit, a fraction of stature (bust_armpit): the
 /// bust points of 419 MakeHuman bodies (the bundled ones and nine random draws) lie 0.010-0.084
 /// of the stature under the armpits (the lowest with breast size 0.97 and firmness 0.06); one
@@ -193,6 +199,12 @@ inline std::vector<CheckWarning> self_check(const Body& body, const LandmarkSet&
                        fmt_num("bust_girth %.1f mm is under %.0f %% of high_bust_girth %.1f mm: "
                                "the bust points are below the chest",
                                *bust, 100 * kBustOfHighBust, *high)});
+    }
+    if (bust && high && *bust > kBustOverHighBust * *high) {
+        out.push_back({"bust_girth", "bust_high_bust",
+                       fmt_num("bust_girth %.1f mm is over %.0f %% of high_bust_girth %.1f mm: "
+                               "the bust tape runs around the arms",
+                               *bust, 100 * kBustOverHighBust, *high)});
     }
     for (const char* side : {"", "_left", "_right"}) {
         const auto w = set.value(std::string("wrist_girth") + side);
