@@ -191,6 +191,22 @@ TEST(SelfChecks, BustPointsAtWaistHeightBreakTheHeightBand) {
     EXPECT_TRUE(has_warning(r, "bust_right", "landmark_height"));
 }
 
+// Overrides moving both bust points down to `drop` of the stature under the landmark `under`
+// ("bust" or "armpit") of their side.
+std::string busts_lowered(const Result& base, const std::string& under, double drop) {
+    std::string json;
+    for (const char* side : {"left", "right"}) {
+        const auto b = base.landmarks.point(std::string("bust_") + side);
+        const auto ref = base.landmarks.point(under + "_" + side);
+        EXPECT_TRUE(b && ref) << side;
+        if (b && ref) {
+            json += std::string(json.empty() ? "" : ", ") + "\"bust_" + side +
+                    "\": " + point_json({(*b)[0], (*ref)[1] - drop * base.frame.height, (*b)[2]});
+        }
+    }
+    return json;
+}
+
 // Bust points on the lower ribs (where a thin, flat-chested body's front is furthest forward
 // below a sternum as far forward as its nipples), 6 % of the stature under the bust, still
 // within the bust's height band: the tape there is far under the chest's.
@@ -198,32 +214,10 @@ TEST(SelfChecks, BustPointsOnTheLowerRibsAreUnderTheHighBust) {
     const BodyOptions o = body_options("mh_female_average.obj", LengthUnit::dm);
     const Result base = measure_file(kBundled, o);
     EXPECT_FALSE(has_warning(base, "bust_girth", "bust_high_bust"));
-    const double drop = 0.06 * base.frame.height;
-    std::string json;
-    for (const char* side : {"left", "right"}) {
-        const auto b = base.landmarks.point(std::string("bust_") + side);
-        ASSERT_TRUE(b) << side;
-        json += std::string(json.empty() ? "" : ", ") + "\"bust_" + side +
-                "\": " + point_json({(*b)[0], (*b)[1] - drop, (*b)[2]});
-    }
-    const Result r = measure_file(kBundled, o, write_overrides("ribs.json", json));
+    const Result r =
+        measure_file(kBundled, o, write_overrides("ribs.json", busts_lowered(base, "bust", 0.06)));
     EXPECT_TRUE(has_warning(r, "bust_girth", "bust_high_bust"));
     EXPECT_FALSE(has_warning(r, "bust_left", "landmark_height"));
-}
-
-// Overrides moving both bust points to `drop` of the stature under their armpits.
-std::string busts_under_armpits(const Result& base, double drop) {
-    std::string json;
-    for (const char* side : {"left", "right"}) {
-        const auto b = base.landmarks.point(std::string("bust_") + side);
-        const auto ap = base.landmarks.point(std::string("armpit_") + side);
-        EXPECT_TRUE(b && ap) << side;
-        if (b && ap) {
-            json += std::string(json.empty() ? "" : ", ") + "\"bust_" + side +
-                    "\": " + point_json({(*b)[0], (*ap)[1] - drop * base.frame.height, (*b)[2]});
-        }
-    }
-    return json;
 }
 
 // Bust points 0.10 of the stature under the armpits (the lowest of 419 MakeHuman bodies lie
@@ -234,7 +228,7 @@ TEST(SelfChecks, BustPointsFarUnderTheArmpitsAreBelowTheChest) {
     EXPECT_FALSE(has_warning(base, "bust_left", "bust_armpit"));
     EXPECT_FALSE(has_warning(base, "bust_right", "bust_armpit"));
     const Result r = measure_file(
-        kBundled, o, write_overrides("low_bust.json", busts_under_armpits(base, 0.10)));
+        kBundled, o, write_overrides("low_bust.json", busts_lowered(base, "armpit", 0.10)));
     EXPECT_TRUE(has_warning(r, "bust_left", "bust_armpit"));
     EXPECT_TRUE(has_warning(r, "bust_right", "bust_armpit"));
 }
@@ -248,7 +242,7 @@ TEST(SelfChecks, BustTapeAroundTheArmsIsFarOverTheHighBust) {
     const Result base = measure_file(kBundled, o);
     EXPECT_FALSE(has_warning(base, "bust_girth", "bust_high_bust"));
     const Result r = measure_file(
-        kBundled, o, write_overrides("armpit_bust.json", busts_under_armpits(base, 0)));
+        kBundled, o, write_overrides("armpit_bust.json", busts_lowered(base, "armpit", 0)));
     const auto bust = r.measurements.value("bust_girth");
     const auto high = r.measurements.value("high_bust_girth");
     ASSERT_TRUE(bust && high);
