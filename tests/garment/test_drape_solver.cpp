@@ -939,6 +939,13 @@ TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
     ro.initial_step_seconds = std::nan("");
     EXPECT_NE(message_of([&] { solver.relax(ro); }).find("initial_step_seconds"),
               std::string::npos);
+    ro = {};
+    ro.friction_from_iteration = -1;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("friction_from_iteration"),
+              std::string::npos);
+    ro = {};
+    ro.release_until_iteration = -3;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 30 and -3"), std::string::npos);
 }
 
 }  // namespace

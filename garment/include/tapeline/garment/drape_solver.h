@@ -2118,26 +2118,34 @@ inline void DrapeSolver::solve_self_contacts() {
 // compression is left out), the proximal term M/h² (Levenberg–Marquardt: h doubles after a
 // step that lowered E, is divided by four after one that did not) and, for every contact point
 // near the body, a stiff hold of its distance from it (an active set updated once per iteration:
-// a point the step pulls away is released, one it takes into the body held; in the second half
-// of the iterations points are only added). From the first third of the iterations on, Coulomb
-// friction holds the vertices resting on the body (anchored tangential springs that slip at μ
-// times the normal force). The step is bounded by a trust radius on the largest
-// vertex move, then shortened until E falls; points a trial step takes into the body are put
-// back at their clearance. The sparse system (three unknowns per free vertex) is factored by
-// CHOLMOD's supernodal Cholesky, its pattern analysed once. Hard stitches and attachments
-// (compliance 0) and k_c are a thousand times as stiff as the stiffest triangle term (per mm of
-// vertex motion).
+// a point the step pulls away is released, one it takes into the body held; from
+// RelaxOptions::release_until_iteration on points are only added). From
+// RelaxOptions::friction_from_iteration on, Coulomb friction holds the vertices resting on the
+// body (anchored tangential springs that slip at μ times the normal force). The step is
+// bounded by a trust radius on the largest vertex move, then shortened until E falls; points a
+// trial step takes into the body are put back at their clearance. The sparse system (three unknowns
+// per free vertex) is factored by CHOLMOD's supernodal Cholesky, its pattern analysed once. Hard
+// stitches and attachments (compliance 0) and k_c are a thousand times as stiff as the stiffest
+// triangle term (per mm of vertex motion).
+//
 // Why: with one constraint pass per sub-step XPBD leaves cloth hanging from a support stretched
 // by about g·h²·N (see the header), far more than its fabric; a direct solve has no such limit,
 // so the drape ends at the fabric's own stretch. Left out: cloth–cloth contact (the quality gate
-// on self-intersections judges what that leaves out). Serial,
-// apart from independent distance queries: the same result for any thread count.
+// on self-intersections judges what that leaves out). Serial, apart from independent distance
+// queries: the same result for any thread count.
 inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     using namespace tapeline::vec3;
     const auto start = std::chrono::steady_clock::now();
     if (ro.max_iterations < 1) {
         throw InvalidInput("DrapeSolver::relax: max_iterations must be >= 1, got " +
                            std::to_string(ro.max_iterations));
+    }
+    if (ro.friction_from_iteration < 0 || ro.release_until_iteration < 0) {
+        throw InvalidInput(
+            "DrapeSolver::relax: friction_from_iteration and release_until_iteration "
+            "must be >= 0, got " +
+            std::to_string(ro.friction_from_iteration) + " and " +
+            std::to_string(ro.release_until_iteration));
     }
     if (!(std::isfinite(ro.tolerance_mm) && ro.tolerance_mm > 0)) {
         throw InvalidInput("DrapeSolver::relax: tolerance_mm must be finite and > 0, got " +
@@ -2270,9 +2278,10 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     std::vector<double> grad(3 * m);
     // Coulomb friction at the vertices resting on the body (the fabric's coefficient μ): a
     // tangential spring of stiffness 10·k_ref to an anchor, which slips when the spring's force
-    // exceeds μ times the normal force (a return mapping after each step). It acts from the
-    // first third of the iterations on: before, the cloth slides to give up the stretch that
-    // the sub-stepped drape left at the contacts (anchors set at once would keep it).
+    // exceeds μ times the normal force (a return mapping after each step). It acts from
+    // iteration RelaxOptions::friction_from_iteration on: before, the cloth slides to give up
+    // the stretch that the sub-stepped drape left at the contacts (anchors set at once would
+    // keep it).
     bool friction = false;
     const double kt = 10 * k_ref;
     std::vector<Vec3> anchor(n);
@@ -2530,7 +2539,7 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     double trust = 1;  // mm: the largest vertex move of a step; grows while whole steps succeed
     double e = energy(x, true, true);
     rep.energy_before_j = e * 1e-6;
-    const int friction_from = ro.max_iterations / 3;
+    const int friction_from = ro.friction_from_iteration;
     std::vector<std::uint8_t> held(np, 0);
     Eigen::VectorXd rhs(dim), step(dim);
     for (int it = 0; it < ro.max_iterations; ++it) {
@@ -2620,10 +2629,10 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
                 step = llt.solve(rhs);
             }
             // Release the held points the solution pulls off the body; hold the free ones it
-            // takes into it (from the next iteration on). In the second half of the iterations
+            // takes into it (from the next iteration on). From release_until_iteration on
             // points are only added: the set stops changing and Newton converges (a point the
             // cloth would lift off by then stays on the body).
-            const bool may_release = 2 * it < ro.max_iterations;
+            const bool may_release = it < ro.release_until_iteration;
             for (std::size_t k = 0; k < np && solved; ++k) {
                 double out = 0;
                 for (int a = 0; a < 2; ++a) {

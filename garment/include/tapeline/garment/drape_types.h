@@ -130,7 +130,15 @@ struct ClothModel {
 
 /// How DrapeSolver::relax() looks for the static equilibrium.
 struct RelaxOptions {
-    int max_iterations = 30;  ///< Newton iterations at most (>= 1)
+    int max_iterations = 100;  ///< Newton iterations at most (>= 1); it stops when converged
+    /// Coulomb friction holds the vertices resting on the body from this iteration on (>= 0);
+    /// before it the cloth slides to give up the stretch the sub-stepped drape left at the
+    /// contacts.
+    int friction_from_iteration = 30;
+    /// Contact points the Newton step pulls off the body leave the active set only before this
+    /// iteration (>= 0); afterwards points are only added, the set stops changing and Newton
+    /// converges.
+    int release_until_iteration = 45;
     /// It has converged when a whole Newton step moved no vertex more than this, mm (> 0).
     double tolerance_mm = 0.1;
     /// Damping of the first iteration: the proximal term M/h² with this h, s (> 0). It doubles

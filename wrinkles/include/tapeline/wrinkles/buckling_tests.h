@@ -228,6 +228,8 @@ inline std::string fmt(const char* f, double v) {
 inline bool relax_round(garment::DrapeSolver& solver, const BucklingOptions& o, BucklingResult& r) {
     garment::RelaxOptions ro;
     ro.max_iterations = o.iterations_per_round;
+    ro.friction_from_iteration = o.iterations_per_round / 3;
+    ro.release_until_iteration = o.iterations_per_round / 2;
     ro.tolerance_mm = 1e-4;
     const garment::RelaxReport rr = solver.relax(ro);
     r.relax_iterations += rr.iterations;

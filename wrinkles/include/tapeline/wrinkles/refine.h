@@ -70,6 +70,8 @@ struct RefineOptions {
     garment::RelaxOptions relax_options = [] {
         garment::RelaxOptions r;
         r.max_iterations = 80;
+        r.friction_from_iteration = 80 / 3;  // friction off for the first third,
+        r.release_until_iteration = 80 / 2;  // contacts released in the first half
         return r;
     }();
     garment::ColliderOptions collider;  ///< the body's signed-distance grid
