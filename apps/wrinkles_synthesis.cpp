@@ -112,9 +112,7 @@ void run_refine(const RefineArgs& a) {
     const LoadedBody b = load_body(a.body, a.units);
     const tg::GarmentMesh coarse = garment_on_body(a.coarse, b);
     tw::RefineOptions o = a.options;
-    o.relax_options.max_iterations = a.relax_iterations;
-    o.relax_options.friction_from_iteration = a.relax_iterations / 3;
-    o.relax_options.release_until_iteration = a.relax_iterations / 2;
+    o.relax_options = tg::RelaxOptions::proportional(a.relax_iterations);
     o.drape.threads = a.threads;
     o.collider.threads = a.threads;
     const tw::RefineResult r =

@@ -947,4 +947,18 @@ TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
     EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 30 and -3"), std::string::npos);
 }
 
+// The proportional schedule: friction from the third of the iterations, releases during the
+// first half, every other option the default's.
+TEST(GarmentDrapeSolver, ProportionalRelaxSchedule) {
+    using tapeline::garment::RelaxOptions;
+    const RelaxOptions d, p = RelaxOptions::proportional(80), q = RelaxOptions::proportional(7);
+    EXPECT_EQ(p.max_iterations, 80);
+    EXPECT_EQ(p.friction_from_iteration, 26);
+    EXPECT_EQ(p.release_until_iteration, 40);
+    EXPECT_EQ(q.friction_from_iteration, 2);
+    EXPECT_EQ(q.release_until_iteration, 3);
+    EXPECT_EQ(p.tolerance_mm, d.tolerance_mm);
+    EXPECT_EQ(p.initial_step_seconds, d.initial_step_seconds);
+}
+
 }  // namespace

@@ -144,6 +144,17 @@ struct RelaxOptions {
     /// Damping of the first iteration: the proximal term M/h² with this h, s (> 0). It doubles
     /// after every step that lowered the energy and is divided by four after one that did not.
     double initial_step_seconds = 1.0 / 30;
+
+    /// Options for `iterations` Newton iterations whose schedule scales with them: friction
+    /// from the third of them on, releases during the first half (the schedule of the wrinkle
+    /// refinement, whose solves start near rest).
+    static RelaxOptions proportional(int iterations) {
+        RelaxOptions r;
+        r.max_iterations = iterations;
+        r.friction_from_iteration = iterations / 3;
+        r.release_until_iteration = iterations / 2;
+        return r;
+    }
 };
 
 /// What relax() did.

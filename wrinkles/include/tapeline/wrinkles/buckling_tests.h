@@ -226,10 +226,7 @@ inline std::string fmt(const char* f, double v) {
 /// One relax() round of `o.iterations_per_round` Newton iterations to 1e-4 mm, its iterations
 /// and convergence written into `r`; true when it converged.
 inline bool relax_round(garment::DrapeSolver& solver, const BucklingOptions& o, BucklingResult& r) {
-    garment::RelaxOptions ro;
-    ro.max_iterations = o.iterations_per_round;
-    ro.friction_from_iteration = o.iterations_per_round / 3;
-    ro.release_until_iteration = o.iterations_per_round / 2;
+    garment::RelaxOptions ro = garment::RelaxOptions::proportional(o.iterations_per_round);
     ro.tolerance_mm = 1e-4;
     const garment::RelaxReport rr = solver.relax(ro);
     r.relax_iterations += rr.iterations;

@@ -67,13 +67,7 @@ struct RefineOptions {
     }();
     bool relax = true;  ///< static solve at the end (DrapeSolver::relax)
     /// How the static solve runs.
-    garment::RelaxOptions relax_options = [] {
-        garment::RelaxOptions r;
-        r.max_iterations = 80;
-        r.friction_from_iteration = 80 / 3;  // friction off for the first third,
-        r.release_until_iteration = 80 / 2;  // contacts released in the first half
-        return r;
-    }();
+    garment::RelaxOptions relax_options = garment::RelaxOptions::proportional(80);
     garment::ColliderOptions collider;  ///< the body's signed-distance grid
     /// Coarse vertices held where they are (ClothModel::pinned), e.g. the clamped ends of a test
     /// strip. A fine vertex is held when every coarse corner its barycentric coordinates weigh
