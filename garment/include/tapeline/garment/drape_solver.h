@@ -2136,13 +2136,13 @@ inline void DrapeSolver::solve_self_contacts() {
 //
 // Tried and left out: keeping the solve from folding cloth over, by refusing steps that turn a
 // hinge through ±π and by bending energies that grow like 2·tan(θ/2) (continued along its tangent
-// beyond θ₀). On the GarmentCode shirt on five bodies and the tank top on one at 20 mm, with
-// θ₀ = 150° the flattenings after the solves found fewer crossings (mh_child_10y 72/99/64/52 ->
-// 37/21/102/37, mh_female_heavy_short 26/29/37/25 -> 12/0) and one more drape passed, but on
-// held-out mh_pop_037 a stitch opened to 1.2 mm and p95 stretch rose to 1.08, and solves that
-// had converged ran out of iterations; θ₀ = 120° was worse (stitch gaps 1.4 and 2.9 mm). Hinges
-// across seams are sharp by design, and the barrier fights the stitches there. Refusing the
-// wrapping steps alone left the solve stuck (p95 1.11, not converged).
+// beyond θ₀). On the GarmentCode shirt on five bodies, the tank top and the T-shirt on one each
+// at 20 mm, with θ₀ = 150° the flattenings after the solves found fewer crossings (mh_child_10y
+// 72/99/64/52 -> 37/21/102/37, mh_female_heavy_short 26/29/37/25 -> 12/0) and one more drape
+// passed, but on held-out mh_pop_037 a stitch opened to 1.2 mm and p95 stretch rose to 1.08, and
+// solves that had converged ran out of iterations; θ₀ = 120° was worse (stitch gaps 1.4 and 2.9
+// mm). Hinges across seams are sharp by design, and the barrier fights the stitches there. Refusing
+// the wrapping steps alone left the solve stuck (p95 1.11, not converged).
 //
 // Where its time goes (GarmentCode hoody without its hood on mh_female_average at 10 mm, 10.4k
 // vertices, 100 iterations, 58 s): the Cholesky factorizations 45 s (2.3 GFlop each with the
