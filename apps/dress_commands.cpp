@@ -321,7 +321,9 @@ void register_dress_commands(CLI::App& app) {
                   "End with the drape's last frame instead of solving for the static equilibrium");
     cmd->add_option("--relax-iterations", a->relax_iterations,
                     "Newton iterations of the static solve at most (it stops when converged; "
-                    "friction acts from the 30th on, so fewer leave it out)")
+                    "friction acts from iteration " +
+                        std::to_string(tg::RelaxOptions{}.friction_from_iteration) +
+                        " on, so fewer leave it out)")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->add_flag("--no-fold-smoothing", a->no_fold_smoothing,
