@@ -60,6 +60,7 @@ struct DressArgs {
     bool no_untangle = false;
     bool no_relax = false;
     bool no_fold_smoothing = false;
+    bool no_body_points = false;
     int fold_cycles = tg::DressOptions{}.fold_cycles;
     int relax_iterations = tg::RelaxOptions{}.max_iterations;
     bool strict = false;
@@ -133,6 +134,7 @@ void run_dress(const DressArgs& a) {
     o.relax = !a.no_relax;
     o.relax_options.max_iterations = a.relax_iterations;
     o.smooth_folds = !a.no_fold_smoothing;
+    o.body_points = !a.no_body_points;
     o.fold_cycles = a.fold_cycles;
     o.without_pieces = a.without;
 
@@ -326,6 +328,10 @@ void register_dress_commands(CLI::App& app) {
                         " on, so fewer leave it out)")
         ->check(CLI::Range(1, 100000))
         ->capture_default_str();
+    cmd->add_flag("--no-body-points", a->no_body_points,
+                  "Hold the cloth against the body's distance grid only in the static solve "
+                  "(default: above every body vertex too, so that a bump narrower than the "
+                  "cloth's edges cannot poke through it)");
     cmd->add_flag("--no-fold-smoothing", a->no_fold_smoothing,
                   "Keep cloth folded over itself as the drape left it (default: flatten each "
                   "fold-over and solve again)");

@@ -1,6 +1,7 @@
 // DrapeSolver against analytic truth (free fall, catenary), contact with analytic solids (sphere,
 // thin cylinder at a large step), stitches and attachments, determinism across thread counts,
 // blow-up detection and the refusals of bad input.
+#include <tapeline/draw/mesh_render.h>
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/crossings.h>
 #include <tapeline/garment/drape_solver.h>
@@ -10,8 +11,16 @@
 #include <gtest/gtest.h>
 #include <tapeline_test/garment_shapes.h>
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <cmath>
+#include <limits>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -767,6 +776,150 @@ TEST(GarmentDrapeSolver, RelaxedSheetOverASphereStaysOutsideAndBalances) {
     EXPECT_EQ(result[0], result[1]);
 }
 
+// A closed slab, `depth` thick, whose top (y = 0) is a grid of n × n cells of `cell` mm centred
+// on the origin, with the top vertices `spikes` (grid i, j) raised by `height`: bumps two cells
+// wide at their base on a flat body. Oriented outward (each face away from the centre while flat).
+tapeline_test::GarmentTriMesh spiked_slab(int n, double cell, double depth,
+                                          const std::vector<std::pair<int, int>>& spikes,
+                                          double height) {
+    using namespace tapeline::vec3;
+    tapeline_test::GarmentTriMesh m;
+    const double half = n * cell / 2;
+    const auto top = [&](int i, int j) { return std::uint32_t(i * (n + 1) + j); };
+    const auto bottom = [&](int i, int j) { return std::uint32_t((n + 1) * (n + 1)) + top(i, j); };
+    for (const double y : {0.0, -depth}) {
+        for (int i = 0; i <= n; ++i) {
+            for (int j = 0; j <= n; ++j) {
+                m.points.push_back({-half + i * cell, y, -half + j * cell});
+            }
+        }
+    }
+    const auto quad = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+        m.triangles.push_back({a, b, c});
+        m.triangles.push_back({a, c, d});
+    };
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            quad(top(i, j), top(i + 1, j), top(i + 1, j + 1), top(i, j + 1));
+            quad(bottom(i, j), bottom(i + 1, j), bottom(i + 1, j + 1), bottom(i, j + 1));
+        }
+        quad(top(i, 0), top(i + 1, 0), bottom(i + 1, 0), bottom(i, 0));
+        quad(top(i, n), top(i + 1, n), bottom(i + 1, n), bottom(i, n));
+        quad(top(0, i), top(0, i + 1), bottom(0, i + 1), bottom(0, i));
+        quad(top(n, i), top(n, i + 1), bottom(n, i + 1), bottom(n, i));
+    }
+    const Vec3 centre{0, -depth / 2, 0};
+    for (auto& t : m.triangles) {
+        const Vec3 &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+        const Vec3 mid = scale(add(add(a, b), c), 1.0 / 3);
+        if (dot(cross(sub(b, a), sub(c, a)), sub(mid, centre)) < 0) {
+            std::swap(t[1], t[2]);
+        }
+    }
+    for (const auto& [i, j] : spikes) {
+        m.points[top(i, j)][1] += height;
+    }
+    return m;
+}
+
+// Cloth edges crossing the body's triangles (CGAL's exact predicates, as the quality gate).
+std::size_t edges_through(const tapeline_test::GarmentTriMesh& body, const ClothModel& cloth,
+                          const std::vector<Vec3>& x) {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    std::vector<K::Triangle_3> tris;
+    const auto pt = [](const Vec3& p) { return K::Point_3(p[0], p[1], p[2]); };
+    for (const auto& t : body.triangles) {
+        tris.emplace_back(pt(body.points[t[0]]), pt(body.points[t[1]]), pt(body.points[t[2]]));
+    }
+    using Tree = CGAL::AABB_tree<CGAL::AABB_traits<
+        K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>>>;
+    const Tree tree(tris.cbegin(), tris.cend());
+    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& t : cloth.triangles) {
+        for (int k = 0; k < 3; ++k) {
+            edges.emplace(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+        }
+    }
+    std::size_t through = 0;
+    for (const auto& [a, b] : edges) {
+        through += tree.do_intersect(K::Segment_3(pt(x[a]), pt(x[b]))) ? 1 : 0;
+    }
+    return through;
+}
+
+// A square of 10 mm cells dropped on a flat slab with sixteen spikes 6 mm high and 8 mm wide at
+// their base, as a nipple is to cloth at 10 mm (the grid, of 5 mm cells, rounds them off), then
+// relaxed. Without the body's points the static solve keeps the cloth's vertices and edge
+// midpoints at their clearance from the grid's surface, and spikes poke through triangles between
+// them: cloth edges cross the slab (the case the test is for; it fails if the scene stops showing
+// it). With them (every slab vertex, its area-weighted normal, reach one grid cell) no cloth edge
+// crosses the slab, the cloth over each spike's tip (along its normal) lies at least 0.45 of the
+// clearance above it (the contact holds half the clearance by a stiff penalty), and the solve
+// converges.
+TEST(GarmentDrapeSolver, RelaxKeepsNarrowBumpsOfTheBodyUnderTheCloth) {
+    std::vector<std::pair<int, int>> spikes;
+    for (int i : {11, 17, 24, 29}) {
+        for (int j : {12, 18, 23, 28}) {
+            spikes.emplace_back(i, j);
+        }
+    }
+    const double height = 6, cell = 4;
+    const int n = 40;
+    const auto slab = spiked_slab(n, cell, 20, spikes, height);
+    ASSERT_GT(tapeline_test::signed_volume(slab), 0);
+    const SignedDistanceGrid body(slab.points, slab.triangles, ColliderOptions{5});
+    const ClothModel sheet = horizontal_square(12, 10, 3, height + 4, 3);
+    const double clearance = FabricParams{}.thickness_mm;
+    for (const bool with_points : {false, true}) {
+        DrapeSolver solver(sheet, FabricParams{}, DrapeOptions{}, &body);
+        for (int f = 0; f < 40; ++f) {
+            solver.step();
+        }
+        if (with_points) {
+            solver.set_body_points(slab.points,
+                                   tapeline::draw::vertex_normals(slab.points, slab.triangles), 5);
+        }
+        const auto rep = solver.relax();
+        const std::size_t through = edges_through(slab, sheet, solver.positions());
+        RecordProperty(with_points ? "edges_through_with" : "edges_through_without",
+                       std::to_string(through));
+        if (!with_points) {
+            EXPECT_GT(through, 0u) << "the spikes no longer poke through without the body points";
+            EXPECT_EQ(rep.body_point_contacts, 0u);
+            continue;
+        }
+        EXPECT_TRUE(rep.converged)
+            << rep.iterations << " iterations, last move " << rep.last_max_move_mm;
+        EXPECT_EQ(through, 0u);
+        EXPECT_GT(rep.body_point_contacts, 0u);  // tips the cloth rests on (others hold it up)
+        // The cloth over each tip: a vertical line through it against every cloth triangle.
+        const auto& x = solver.positions();
+        for (std::size_t s = 0; s < spikes.size(); ++s) {
+            const Vec3& tip =
+                slab.points[std::size_t(spikes[s].first * (n + 1) + spikes[s].second)];
+            double above = std::numeric_limits<double>::max();
+            for (const auto& t : sheet.triangles) {
+                const Vec3 &a = x[t[0]], &b = x[t[1]], &c = x[t[2]];
+                // Barycentric coordinates of the tip's (x, z) in the triangle's (x, z).
+                const double det = (b[0] - a[0]) * (c[2] - a[2]) - (c[0] - a[0]) * (b[2] - a[2]);
+                if (std::abs(det) < 1e-9) {
+                    continue;
+                }
+                const double u =
+                    ((tip[0] - a[0]) * (c[2] - a[2]) - (c[0] - a[0]) * (tip[2] - a[2])) / det;
+                const double v =
+                    ((b[0] - a[0]) * (tip[2] - a[2]) - (tip[0] - a[0]) * (b[2] - a[2])) / det;
+                if (u < -1e-9 || v < -1e-9 || u + v > 1 + 1e-9) {
+                    continue;
+                }
+                above = std::min(above, (1 - u - v) * a[1] + u * b[1] + v * c[1] - tip[1]);
+            }
+            ASSERT_LT(above, std::numeric_limits<double>::max()) << "no cloth over spike " << s;
+            EXPECT_GE(above, 0.45 * clearance) << "spike " << s;
+        }
+    }
+}
+
 // Fold-overs (smooth_fold_overs). A sheet of 10 mm cells folded over itself across rows j0..j1:
 // columns i0+1, i0+2, i0+3 moved by (+15, -3), (-5, +3) and (0, -8) mm in (x, y), so that the
 // profile crosses itself (the edge from column i0+2 to i0+3 passes through the triangles between
@@ -945,6 +1098,30 @@ TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
     ro = {};
     ro.release_until_iteration = -3;
     EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 30 and -3"), std::string::npos);
+}
+
+// set_body_points names what is wrong; good points are taken.
+TEST(GarmentDrapeSolver, BodyPointsRefusedNamingThePoint) {
+    DrapeSolver solver(horizontal_square(4, 10, 0, 0, 0), FabricParams{}, DrapeOptions{});
+    const std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}}, up{{0, 1, 0}, {0, 1, 0}};
+    EXPECT_NE(message_of([&] {
+                  solver.set_body_points(p, {{0, 1, 0}}, 5);
+              }).find("2 points but 1 normals"),
+              std::string::npos);
+    EXPECT_NE(message_of([&] {
+                  solver.set_body_points(p, {{0, 1, 0}, {0, 2, 0}}, 5);
+              }).find("point 1: its normal is not of unit length"),
+              std::string::npos);
+    EXPECT_NE(message_of([&] {
+                  solver.set_body_points({{0, std::nan(""), 0}, {1, 0, 0}}, up, 5);
+              }).find("point 0: not finite"),
+              std::string::npos);
+    EXPECT_NE(message_of([&] { solver.set_body_points(p, up, 0); }).find("reach_mm must be"),
+              std::string::npos);
+    EXPECT_NE(
+        message_of([&] { solver.set_body_points(p, up, std::nan("")); }).find("reach_mm must be"),
+        std::string::npos);
+    EXPECT_NO_THROW(solver.set_body_points(p, up, 5));
 }
 
 // The proportional schedule: friction from the third of the iterations, releases during the

@@ -173,8 +173,11 @@ struct RelaxReport {
     double max_residual_of_weight = 0;
     /// Net force left over the whole cloth, as a fraction of its weight.
     double total_residual_of_weight = 0;
-    std::size_t contacts = 0;  ///< vertices pressed on the body at the end
-    double seconds = 0;        ///< wall time
+    /// Contact points (vertices and edge midpoints) at the body's clearance at the end.
+    std::size_t contacts = 0;
+    /// Body points (DrapeSolver::set_body_points) holding a cloth triangle at the end.
+    std::size_t body_point_contacts = 0;
+    double seconds = 0;  ///< wall time
 };
 
 /// Vertex classes after welding the stitch pairs (union–find; the representative is the smallest

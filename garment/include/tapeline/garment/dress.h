@@ -14,6 +14,7 @@
 
 #include <tapeline/core/errors.h>
 #include <tapeline/core/progress.h>
+#include <tapeline/draw/mesh_render.h>
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/drape_solver.h>
 #include <tapeline/garment/garment_types.h>
@@ -360,6 +361,23 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         const Welding pre = weld_pairs(cloth.positions.size(), closed);
         const ClothModel welded = internal::welded_cloth(cloth, pre);
         DrapeSolver drape(welded, o.fabric, drape_options, &sdf);
+        if (o.body_points && o.relax) {
+            // Outward unit normals (area-weighted, turned along the grid's gradient there);
+            // vertices on no face of positive area are left out.
+            const std::vector<Vec3> normals = draw::vertex_normals(body.points(), body.triangles());
+            std::vector<Vec3> bp, bn;
+            for (std::size_t v = 0; v < normals.size(); ++v) {
+                if (vec3::norm(normals[v]) < 0.5) {
+                    continue;
+                }
+                Vec3 grad{0, 0, 0};
+                sdf.signed_distance(body.points()[v], &grad);
+                bp.push_back(body.points()[v]);
+                bn.push_back(vec3::dot(grad, normals[v]) < 0 ? vec3::scale(normals[v], -1)
+                                                             : normals[v]);
+            }
+            drape.set_body_points(std::move(bp), std::move(bn), o.sdf_cell_mm);
+        }
         std::vector<Stitch> stitches;
         for (const Stitch& s : open) {
             const std::uint32_t a = pre.weld_map[s.a], b = pre.weld_map[s.b];

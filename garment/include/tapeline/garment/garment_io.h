@@ -334,6 +334,7 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                          {"max_residual_of_weight", r.relax.max_residual_of_weight},
                          {"total_residual_of_weight", r.relax.total_residual_of_weight},
                          {"contacts", r.relax.contacts},
+                         {"body_point_contacts", r.relax.body_point_contacts},
                          {"seconds", r.relax.seconds}}},
                        {"static_solves", r.relax_runs},
                        {"fold_smoothing", folds}};
@@ -352,6 +353,7 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                     {"edge_edge_collision", o.drape.edge_edge_collision},
                     {"untangle", o.drape.untangle},
                     {"static_solve", o.relax},
+                    {"body_points", o.body_points},
                     {"fold_smoothing", o.smooth_folds},
                     {"fold_cycles", o.fold_cycles},
                     {"sdf_cell_mm", o.sdf_cell_mm},

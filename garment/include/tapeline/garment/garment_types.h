@@ -87,6 +87,10 @@ struct DressOptions {
     /// the direct solve takes it to the fabric's own stretch.
     bool relax = true;
     RelaxOptions relax_options;  ///< how
+    /// The static solve holds the cloth above every body vertex too
+    /// (DrapeSolver::set_body_points, reach: the grid's cell), not only its vertices and edge
+    /// midpoints against the grid, which rounds off bumps narrower than a few cells.
+    bool body_points = true;
     /// Flatten the cloth's fold-overs (DrapeSolver::smooth_fold_overs) after the drape and,
     /// where the static solve folds cloth over again, after it and solve again: `fold_cycles`
     /// static solves at most (>= 1).
