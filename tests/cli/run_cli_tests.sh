@@ -1096,11 +1096,12 @@ expect_fail "dress: --sdf-cell 0" "--sdf-cell must be a finite number of mm > 0"
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
 expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \
   --sew-seconds 0 --settle-seconds 0 --out placed.obj --ply placed.ply --report placed.json \
-  --picture placed.png --edge-edge --sdf-cell 7
+  --picture placed.png --edge-edge --sdf-cell 7 --no-body-points
 if $py - <<'PY'
 import json
 r = json.load(open("placed.json"))
 assert r["options"]["edge_edge_collision"] is True and r["options"]["sdf_cell_mm"] == 7, r["options"]
+assert r["options"]["body_points"] is False and r["simulation"]["static_solve"]["body_point_contacts"] == 0, r
 # placement only: nothing sewn or draped, so nothing flattened or solved
 assert r["simulation"]["fold_smoothing"] == [] and r["simulation"]["static_solves"] == 0, r["simulation"]
 q = r["quality"]  # the self-intersections located and split by pieces, as many as counted

@@ -2161,12 +2161,12 @@ inline void DrapeSolver::solve_self_contacts() {
 // triangle that the line through b along its normal n_b meets (c/2; the pairing is renewed after
 // every accepted step): the grid rounds off bumps a few cells wide, and at 10 mm a nipple 6 mm
 // high and 14 mm wide poked through triangles between cloth vertices that kept their clearance
-// from it (3-5 cloth edges through the body on five of the nine patterns on mh_female_average;
-// none with these contacts, docs/garment.md). Each iteration solves a Newton system:
-// the Gauss–Newton Hessian Σ ∇C·∇Cᵀ/α (positive semi-definite), the geometric stiffness of
-// stretched fibres (what holds hanging cloth against swinging sideways; its negative part under
-// compression is left out), the proximal term M/h² (Levenberg–Marquardt: h doubles after a
-// step that lowered E, is divided by four after one that did not) and, for every contact point
+// from it (cloth edges through the body at the bust points on five of the nine patterns
+// on mh_female_average; none with these contacts, docs/garment.md). Each iteration solves a
+// Newton system: the Gauss–Newton Hessian Σ ∇C·∇Cᵀ/α (positive semi-definite), the geometric
+// stiffness of stretched fibres (what holds hanging cloth against swinging sideways; its negative
+// part under compression is left out), the proximal term M/h² (Levenberg–Marquardt: h doubles after
+// a step that lowered E, is divided by four after one that did not) and, for every contact point
 // near the body, a stiff hold of its distance from it (an active set updated once per iteration:
 // a point the step pulls away is released, one it takes into the body held; from
 // RelaxOptions::release_until_iteration on points are only added). From
@@ -2430,6 +2430,20 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
                         const Vec3 pv = cross(nn, e2);
                         const double det = dot(e1, pv);
                         if (std::abs(det) < 1e-12) {
+                            continue;
+                        }
+                        // Only a triangle over b's side of the body: at each of its vertices
+                        // the collider's gradient within 60° of b's normal. Cloth that passes
+                        // through a hand or between the arm and the side has its vertices on
+                        // opposite sides; pushing it out along one side's normal pulls it into
+                        // the other (on brian's cuffs that made the solve diverge).
+                        bool same_side = true;
+                        for (int k = 0; k < 3 && same_side; ++k) {
+                            Vec3 g{0, 0, 0};
+                            collider_->signed_distance(x[t[k]], &g);
+                            same_side = dot(g, nn) >= 0.5 * norm(g);
+                        }
+                        if (!same_side) {
                             continue;
                         }
                         const Vec3 tv = sub(b, x[t[0]]), qv = cross(tv, e1);
