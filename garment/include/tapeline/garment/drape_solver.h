@@ -2438,9 +2438,9 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
                         // opposite sides; pushing it out along one side's normal pulls it into
                         // the other (on brian's cuffs that made the solve diverge).
                         bool same_side = true;
-                        for (int k = 0; k < 3 && same_side; ++k) {
+                        for (int j = 0; j < 3 && same_side; ++j) {
                             Vec3 g{0, 0, 0};
-                            collider_->signed_distance(x[t[k]], &g);
+                            collider_->signed_distance(x[t[j]], &g);
                             same_side = dot(g, nn) >= 0.5 * norm(g);
                         }
                         if (!same_side) {
