@@ -18,7 +18,6 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -834,14 +833,8 @@ std::size_t edges_through(const tapeline_test::GarmentTriMesh& body, const Cloth
     using Tree = CGAL::AABB_tree<CGAL::AABB_traits<
         K, CGAL::AABB_triangle_primitive<K, std::vector<K::Triangle_3>::const_iterator>>>;
     const Tree tree(tris.cbegin(), tris.cend());
-    std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
-    for (const auto& t : cloth.triangles) {
-        for (int k = 0; k < 3; ++k) {
-            edges.emplace(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-        }
-    }
     std::size_t through = 0;
-    for (const auto& [a, b] : edges) {
+    for (const auto& [a, b] : tapeline::garment::internal::unique_edges(cloth.triangles)) {
         through += tree.do_intersect(K::Segment_3(pt(x[a]), pt(x[b]))) ? 1 : 0;
     }
     return through;
