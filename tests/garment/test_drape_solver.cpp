@@ -1091,6 +1091,106 @@ TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
     ro = {};
     ro.release_until_iteration = -3;
     EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 30 and -3"), std::string::npos);
+    ro = {};
+    ro.settle_fraction = 1.5;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("settle_fraction in [0, 1]"),
+              std::string::npos);
+    ro = {};
+    ro.settle_iterations = -1;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got -1, 4 and"), std::string::npos);
+    ro = {};
+    ro.stall_rejections = -2;
+    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 0, -2 and"), std::string::npos);
+}
+
+// The settle rule counts from the end of the releases: with every step counting as settled
+// (settle_fraction 1) a solve that has not converged stops after exactly release_until_iteration +
+// settle_iterations iterations; counting only steps that moved no vertex more than 0.3 mm
+// (settle_fraction 0), it stops either converged or with its last step moving none.
+TEST(GarmentDrapeSolver, RelaxStopsOnceSettledAfterTheReleases) {
+    const int nx = 30, ny = 10;
+    // Horizontal, held along one edge: it swings down to hang.
+    ClothModel sheet = cloth_grid(nx, ny, 10, {0, 0, 0}, {1, 0, 0}, {0, 0, 1});
+    sheet.pinned.assign(sheet.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        sheet.pinned[grid_vertex(nx, 0, j)] = 1;
+    }
+    DrapeOptions options;
+    options.self_collision = false;
+    tapeline::garment::RelaxOptions ro;
+    ro.release_until_iteration = 6;
+    ro.settle_iterations = 3;
+    ro.settle_fraction = 1;
+    {
+        DrapeSolver solver(sheet, FabricParams{}, options);  // from the flat, unstretched sheet
+        const auto rep = solver.relax(ro);
+        EXPECT_EQ(rep.stop, "settled");
+        EXPECT_EQ(rep.iterations, 9);
+        EXPECT_FALSE(rep.converged);
+    }
+    {
+        ro.settle_fraction = 0;
+        DrapeSolver solver(sheet, FabricParams{}, options);
+        const auto rep = solver.relax(ro);
+        RecordProperty("iterations", std::to_string(rep.iterations));
+        EXPECT_TRUE(rep.stop == "converged" || rep.stop == "settled") << rep.stop;
+        EXPECT_EQ(rep.moving_fraction, 0.0);
+        EXPECT_GT(rep.iterations, 9);
+    }
+}
+
+// The hanging sheet of RelaxedHangingSheetCarriesTheWeightBelowEachRow, solved once to 1e-4 mm
+// and once to a tolerance below the spacing of doubles at its coordinates (1e-15 mm against
+// 5.7e-14 at 300 mm): the second solve cannot converge, and once no step lowers the energy it
+// must stop as stalled, after four rejected steps (without the rule it runs on until its damping
+// passes 1e-9 s, to the same positions), where the first one ended: the same positions within
+// 1e-3 mm and no more energy.
+TEST(GarmentDrapeSolver, RelaxStopsAsStalledWhereNoStepLowersTheEnergy) {
+    const int nx = 30, ny = 10;
+    ClothModel sheet = cloth_grid(nx, ny, 10, {0, 0, 0}, {0, -1, 0}, {0, 0, 1});
+    sheet.pinned.assign(sheet.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        sheet.pinned[grid_vertex(nx, 0, j)] = 1;
+    }
+    FabricParams fabric;
+    fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 20;
+    fabric.shear_n_m = 5;
+    fabric.bending_un_m = 0;
+    DrapeOptions options;
+    options.self_collision = false;
+    DrapeSolver solver(sheet, fabric, options), beyond(sheet, fabric, options);
+    for (int f = 0; f < 10; ++f) {
+        solver.step();
+        beyond.step();
+    }
+    tapeline::garment::RelaxOptions ro;
+    ro.max_iterations = 400;
+    ro.tolerance_mm = 1e-4;
+    const auto met = solver.relax(ro);
+    ASSERT_TRUE(met.converged) << met.iterations << " iterations";
+    EXPECT_EQ(met.stop, "converged");
+    ro.tolerance_mm = 1e-15;
+    const auto rep = beyond.relax(ro);
+    RecordProperty("iterations", std::to_string(rep.iterations));
+    EXPECT_EQ(rep.stop, "stalled") << rep.iterations << " iterations";
+    EXPECT_FALSE(rep.converged);
+    // Without the rule the solve takes rejected steps until its damping passes 1e-9 s; rejected
+    // steps move nothing, so it ends at the very same positions, later.
+    DrapeSolver off(sheet, fabric, options);
+    for (int f = 0; f < 10; ++f) {
+        off.step();
+    }
+    ro.stall_rejections = 0;
+    const auto off_rep = off.relax(ro);
+    EXPECT_EQ(off_rep.stop, "damping");
+    EXPECT_LT(rep.iterations, off_rep.iterations);
+    EXPECT_EQ(beyond.positions(), off.positions());
+    EXPECT_LE(rep.energy_after_j, met.energy_after_j + 1e-12);
+    double worst = 0;
+    for (std::size_t v = 0; v < sheet.positions.size(); ++v) {
+        worst = std::max(worst, distance(beyond.positions()[v], solver.positions()[v]));
+    }
+    EXPECT_LT(worst, 1e-3);
 }
 
 // A sheet hanging through a plate 4 mm thick, obliquely (a row of vertices 2 mm above it, the

@@ -2219,6 +2219,14 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
         throw InvalidInput("DrapeSolver::relax: tolerance_mm must be finite and > 0, got " +
                            std::to_string(ro.tolerance_mm));
     }
+    if (ro.settle_iterations < 0 || ro.stall_rejections < 0 ||
+        !(ro.settle_fraction >= 0 && ro.settle_fraction <= 1)) {
+        throw InvalidInput(
+            "DrapeSolver::relax: settle_iterations and stall_rejections must be >= 0 and "
+            "settle_fraction in [0, 1], got " +
+            std::to_string(ro.settle_iterations) + ", " + std::to_string(ro.stall_rejections) +
+            " and " + std::to_string(ro.settle_fraction));
+    }
     if (!(std::isfinite(ro.initial_step_seconds) && ro.initial_step_seconds > 0)) {
         throw InvalidInput("DrapeSolver::relax: initial_step_seconds must be finite and > 0, got " +
                            std::to_string(ro.initial_step_seconds));
@@ -2242,6 +2250,7 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     };
     if (m == 0) {
         rep.converged = true;
+        rep.stop = "converged";
         return finish();
     }
     // Block pattern: free vertices that share a triangle, a hinge or a stitch (and the diagonal).
@@ -2734,6 +2743,8 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     const int friction_from = ro.friction_from_iteration;
     std::vector<std::uint8_t> held(np, 0);
     Eigen::VectorXd rhs(dim), step(dim);
+    int rejected_in_a_row = 0, settled_in_a_row = 0;
+    rep.stop = "iterations";
     for (int it = 0; it < ro.max_iterations; ++it) {
         rep.iterations = it + 1;
         if (it == friction_from && collider_ && fabric_.friction > 0) {
@@ -2846,6 +2857,7 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
         if (!solved) {
             h *= 0.25;
             if (h < 1e-9) {
+                rep.stop = "damping";
                 break;
             }
             continue;
@@ -2883,10 +2895,17 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
             trust *= 0.25;
             energy(x, true, true);  // the distances and normals of x again
             if (h < 1e-9) {
+                rep.stop = "damping";
+                break;
+            }
+            ++rejected_in_a_row;
+            if (ro.stall_rejections > 0 && rejected_in_a_row >= ro.stall_rejections) {
+                rep.stop = "stalled";
                 break;
             }
             continue;
         }
+        rejected_in_a_row = 0;
         double max_move = 0;
         std::size_t moving = 0;
         for (std::size_t i = 0; i < n; ++i) {
@@ -2910,6 +2929,15 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
         // search) that moved no vertex more than the tolerance.
         if (t == 1 && !limited && max_move < ro.tolerance_mm) {
             rep.converged = true;
+            rep.stop = "converged";
+            break;
+        }
+        settled_in_a_row =
+            it >= ro.release_until_iteration && double(moving) <= ro.settle_fraction * double(n)
+                ? settled_in_a_row + 1
+                : 0;
+        if (ro.settle_iterations > 0 && settled_in_a_row >= ro.settle_iterations) {
+            rep.stop = "settled";
             break;
         }
     }
