@@ -17,6 +17,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -1072,35 +1073,26 @@ TEST(GarmentDrapeSolver, FoldOverSmoothingRefusesBadOptions) {
 }
 
 TEST(GarmentDrapeSolver, RelaxRefusesBadOptions) {
+    using tapeline::garment::RelaxOptions;
     DrapeSolver solver(horizontal_square(4, 10, 0, 0, 0), FabricParams{}, DrapeOptions{});
-    tapeline::garment::RelaxOptions ro;
-    ro.max_iterations = 0;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("max_iterations must be >= 1"),
-              std::string::npos);
-    ro = {};
-    ro.tolerance_mm = -1;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("tolerance_mm"), std::string::npos);
-    ro = {};
-    ro.initial_step_seconds = std::nan("");
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("initial_step_seconds"),
-              std::string::npos);
-    ro = {};
-    ro.friction_from_iteration = -1;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("friction_from_iteration"),
-              std::string::npos);
-    ro = {};
-    ro.release_until_iteration = -3;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 30 and -3"), std::string::npos);
-    ro = {};
-    ro.settle_fraction = 1.5;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("settle_fraction in [0, 1]"),
-              std::string::npos);
-    ro = {};
-    ro.settle_iterations = -1;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got -1, 4 and"), std::string::npos);
-    ro = {};
-    ro.stall_rejections = -2;
-    EXPECT_NE(message_of([&] { solver.relax(ro); }).find("got 0, -2 and"), std::string::npos);
+    // The message of relax() with the default options changed by `set`.
+    const auto message_for = [&](auto set) {
+        RelaxOptions ro;
+        set(ro);
+        return message_of([&] { solver.relax(ro); });
+    };
+    const std::vector<std::pair<std::function<void(RelaxOptions&)>, std::string>> cases = {
+        {[](RelaxOptions& r) { r.max_iterations = 0; }, "max_iterations must be >= 1"},
+        {[](RelaxOptions& r) { r.tolerance_mm = -1; }, "tolerance_mm"},
+        {[](RelaxOptions& r) { r.initial_step_seconds = std::nan(""); }, "initial_step_seconds"},
+        {[](RelaxOptions& r) { r.friction_from_iteration = -1; }, "friction_from_iteration"},
+        {[](RelaxOptions& r) { r.release_until_iteration = -3; }, "got 30 and -3"},
+        {[](RelaxOptions& r) { r.settle_fraction = 1.5; }, "settle_fraction in [0, 1]"},
+        {[](RelaxOptions& r) { r.settle_iterations = -1; }, "got -1, 4 and"},
+        {[](RelaxOptions& r) { r.stall_rejections = -2; }, "got 0, -2 and"}};
+    for (const auto& [set, text] : cases) {
+        EXPECT_NE(message_for(set).find(text), std::string::npos) << text;
+    }
 }
 
 // The settle rule counts from the end of the releases: with every step counting as settled
