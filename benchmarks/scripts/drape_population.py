@@ -127,6 +127,16 @@ def main():
     write_table(rows, a)
 
 
+def static_solves(sim):
+    """The static solves of a drape: how many, the last one's iterations and why it stopped."""
+    n = sim.get("static_solves", 0)
+    if not n:
+        return "none"
+    last = sim["static_solve"]
+    return "%d: %d, %s" % (n, last["iterations"], last.get("stop", "converged" if last["converged"]
+                                                               else "not converged"))
+
+
 def write_table(rows, a):
     ok = [r for r in rows if r["passed"]]
     ran = [r for r in rows if "quality" in r]
@@ -142,13 +152,13 @@ def write_table(rows, a):
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",
              "| body | pattern | passed | gap max mm | edges x body | depth mm | self-x | "
              "p95 stretch | on body / off | % on body | moving % | top drop mm | vertices | "
-             "frames | ms/step/10k | wall s | reason |",
-             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+             "frames | ms/step/10k | static solves: last one's iterations, stop | wall s | reason |",
+             "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---|"]
     for r in rows:
         if "quality" in r:
             q = r["quality"]
             lines.append("| %s | %s | %s | %.2f | %d | %.2f | %d | %.3f | %.3f / %.3f | %.0f | "
-                         "%.1f | %s | %d | %d | %.0f | %.1f | %s |" % (
+                         "%.1f | %s | %d | %d | %.0f | %s | %.1f | %s |" % (
                              r["body"], r["pattern"], "yes" if r["passed"] else "**no**",
                              q["stitch_gap_max_mm"], q["edges_crossing_body"], q["max_depth_mm"],
                              q["self_intersections"], q["stretch_p95"],
@@ -157,10 +167,10 @@ def write_table(rows, a):
                              "%.0f" % q["top_drop_mm"] if "top_drop_mm" in q else "-",
                              r["mesh"]["cloth_vertices"],
                              r["simulation"]["frames"],
-                             r["simulation"]["ms_per_step_per_10k_vertices"], r["wall_seconds"],
-                             r["reason"]))
+                             r["simulation"]["ms_per_step_per_10k_vertices"],
+                             static_solves(r["simulation"]), r["wall_seconds"], r["reason"]))
         else:
-            lines.append("| %s | %s | **no** | | | | | | | | | | | | | %.1f | %s |" %
+            lines.append("| %s | %s | **no** | | | | | | | | | | | | | | %.1f | %s |" %
                          (r["body"], r["pattern"], r["wall_seconds"], r["reason"]))
     with open(a.out, "w") as f:
         f.write("\n".join(lines) + "\n")
