@@ -453,6 +453,7 @@ nlohmann::json run_job(const JobSpec& job, const std::string& dir) {
         }
         if (o.contains("relax_iterations")) {
             d.relax_options.max_iterations = o["relax_iterations"].get<int>();
+            d.relax_again_options.max_iterations = d.relax_options.max_iterations;
         }
         if (o.contains("without")) {
             d.without_pieces = o["without"].get<std::vector<std::string>>();

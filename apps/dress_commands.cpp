@@ -64,6 +64,8 @@ struct DressArgs {
     int fold_cycles = tg::DressOptions{}.fold_cycles;
     int relax_iterations = tg::RelaxOptions{}.max_iterations;
     int relax_settle = tg::DressOptions{}.relax_options.settle_iterations;
+    int relax_again_friction = tg::DressOptions{}.relax_again_options.friction_from_iteration;
+    int relax_again_releases = tg::DressOptions{}.relax_again_options.release_until_iteration;
     bool strict = false;
     bool to_body = false;
     std::string from, from_set;
@@ -133,8 +135,12 @@ void run_dress(const DressArgs& a) {
     o.drape.edge_edge_collision = a.edge_edge;
     o.drape.untangle = !a.no_untangle;
     o.relax = !a.no_relax;
-    o.relax_options.max_iterations = a.relax_iterations;
-    o.relax_options.settle_iterations = a.relax_settle;
+    for (tg::RelaxOptions* r : {&o.relax_options, &o.relax_again_options}) {
+        r->max_iterations = a.relax_iterations;
+        r->settle_iterations = a.relax_settle;
+    }
+    o.relax_again_options.friction_from_iteration = a.relax_again_friction;
+    o.relax_again_options.release_until_iteration = a.relax_again_releases;
     o.smooth_folds = !a.no_fold_smoothing;
     o.body_points = !a.no_body_points;
     o.fold_cycles = a.fold_cycles;
@@ -334,6 +340,17 @@ void register_dress_commands(CLI::App& app) {
                     "Stop the static solve once this many steps in a row (after its releases) "
                     "moved at most 0.1 % of the vertices more than 0.3 mm; 0: only at its "
                     "tolerance or its iteration limit")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd->add_option("--relax-again-friction", a->relax_again_friction,
+                    "The static solves after a flattening of fold-overs: friction acts from "
+                    "this iteration on (the first solve's schedule is the one "
+                    "--relax-iterations describes)")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd->add_option("--relax-again-releases", a->relax_again_releases,
+                    "The static solves after a flattening of fold-overs: contact points may "
+                    "leave the body until this iteration")
         ->check(CLI::Range(0, 100000))
         ->capture_default_str();
     cmd->add_flag("--no-body-points", a->no_body_points,

@@ -1093,18 +1093,26 @@ expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units 
   --fold-cycles 0
 expect_fail "dress: --relax-settle -1" "relax-settle" "$bin" dress "$body" --units dm "$gc" --out x.obj \
   --relax-settle -1
+expect_fail "dress: --relax-again-releases -1" "relax-again-releases" "$bin" dress "$body" --units dm \
+  "$gc" --out x.obj --relax-again-releases -1
+expect_fail "dress: --relax-again-friction -1" "relax-again-friction" "$bin" dress "$body" --units dm \
+  "$gc" --out x.obj --relax-again-friction -1
 expect_fail "dress: --sdf-cell 0" "--sdf-cell must be a finite number of mm > 0" "$bin" dress "$body" \
   --units dm "$gc" --out x.obj --sdf-cell 0
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
 expect_ok "dress: placement only" "$bin" dress "$body" --units dm "$gc" --resolution 30 \
   --sew-seconds 0 --settle-seconds 0 --out placed.obj --ply placed.ply --report placed.json \
-  --picture placed.png --edge-edge --sdf-cell 7 --no-body-points --relax-settle 0
+  --picture placed.png --edge-edge --sdf-cell 7 --no-body-points --relax-settle 0 \
+  --relax-iterations 90 --relax-again-friction 3 --relax-again-releases 12
 if $py - <<'PY'
 import json
 r = json.load(open("placed.json"))
 assert r["options"]["edge_edge_collision"] is True and r["options"]["sdf_cell_mm"] == 7, r["options"]
 assert r["options"]["body_points"] is False and r["simulation"]["static_solve"]["body_point_contacts"] == 0, r
-assert r["options"]["static_solve_settle"] == 0 and r["options"]["static_solve_iterations"] == 100, r["options"]
+assert r["options"]["static_solve_settle"] == 0 and r["options"]["static_solve_iterations"] == 90, r["options"]
+assert r["options"]["static_solve_releases"] == 45 and r["options"]["static_solve_again_releases"] == 12, r["options"]
+assert r["options"]["static_solve_friction_from"] == 30 and r["options"]["static_solve_again_friction_from"] == 3, r["options"]
+assert r["simulation"]["static_solve_each"] == [], r["simulation"]
 # placement only: nothing sewn or draped, so nothing flattened or solved
 assert r["simulation"]["fold_smoothing"] == [] and r["simulation"]["static_solves"] == 0, r["simulation"]
 q = r["quality"]  # the self-intersections located and split by pieces, as many as counted

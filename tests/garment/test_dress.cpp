@@ -155,6 +155,19 @@ TEST(Dress, ShirtOnTheBundledBody) {
     EXPECT_EQ(rep.quality.self_intersections, 0u);
     EXPECT_GE(rep.relax_runs, 1);
     EXPECT_LE(rep.relax_runs, o.fold_cycles);
+    // Every solve is reported; the last is the one the report's summary gives, and each ends
+    // within its options' iteration limit for a reason it names.
+    ASSERT_EQ(rep.relax_solves.size(), std::size_t(rep.relax_runs));
+    EXPECT_EQ(rep.relax_solves.back().iterations, rep.relax.iterations);
+    EXPECT_EQ(rep.relax_solves.back().stop, rep.relax.stop);
+    for (std::size_t k = 0; k < rep.relax_solves.size(); ++k) {
+        const tg::RelaxOptions& ro = k == 0 ? o.relax_options : o.relax_again_options;
+        EXPECT_LE(rep.relax_solves[k].iterations, ro.max_iterations) << k;
+        EXPECT_TRUE(
+            rep.relax_solves[k].stop == "converged" || rep.relax_solves[k].stop == "settled" ||
+            rep.relax_solves[k].stop == "stalled" || rep.relax_solves[k].stop == "iterations")
+            << k << " " << rep.relax_solves[k].stop;
+    }
     // The shirt hangs from the shoulders: its top came down from the placement (placed a gap
     // above the skin), by less than the gate's limit, and the gate reads that figure.
     EXPECT_GT(rep.quality.top_drop_mm, 0);
@@ -429,5 +442,19 @@ TEST(Dress, Refusals) {
     tg::DressOptions coarse = o;
     coarse.resolution_mm = 0.5;
     EXPECT_NE(message_of([&] { tg::dress(b.body, b.landmarks, shirt, coarse); }).find("resolution"),
+              std::string::npos);
+    // Both static solves' options are checked before anything runs, the later ones' too
+    // (which run only when a flattening found fold-overs).
+    tg::DressOptions bad_first = o;
+    bad_first.relax_options.max_iterations = 0;
+    EXPECT_NE(message_of([&] {
+                  tg::dress(b.body, b.landmarks, shirt, bad_first);
+              }).find("dress: relax_options: max_iterations must be >= 1, got 0"),
+              std::string::npos);
+    tg::DressOptions bad_again = o;
+    bad_again.relax_again_options.release_until_iteration = -1;
+    EXPECT_NE(message_of([&] { tg::dress(b.body, b.landmarks, shirt, bad_again); })
+                  .find("dress: relax_again_options: friction_from_iteration and "
+                        "release_until_iteration must be >= 0"),
               std::string::npos);
 }

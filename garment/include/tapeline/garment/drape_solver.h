@@ -2157,6 +2157,38 @@ inline void DrapeSolver::solve_self_contacts() {
     }
 }
 
+/// Throws InvalidInput, naming `who` and the option, unless `ro` is usable by relax().
+inline void check_relax_options(const RelaxOptions& ro, const std::string& who) {
+    if (ro.max_iterations < 1) {
+        throw InvalidInput(who + ": max_iterations must be >= 1, got " +
+                           std::to_string(ro.max_iterations));
+    }
+    if (ro.friction_from_iteration < 0 || ro.release_until_iteration < 0) {
+        throw InvalidInput(who +
+                           ": friction_from_iteration and release_until_iteration "
+                           "must be >= 0, got " +
+                           std::to_string(ro.friction_from_iteration) + " and " +
+                           std::to_string(ro.release_until_iteration));
+    }
+    if (!(std::isfinite(ro.tolerance_mm) && ro.tolerance_mm > 0)) {
+        throw InvalidInput(who + ": tolerance_mm must be finite and > 0, got " +
+                           std::to_string(ro.tolerance_mm));
+    }
+    if (ro.settle_iterations < 0 || ro.stall_rejections < 0 ||
+        !(ro.settle_fraction >= 0 && ro.settle_fraction <= 1)) {
+        throw InvalidInput(who +
+                           ": settle_iterations and stall_rejections must be >= 0 and "
+                           "settle_fraction in [0, 1], got " +
+                           std::to_string(ro.settle_iterations) + ", " +
+                           std::to_string(ro.stall_rejections) + " and " +
+                           std::to_string(ro.settle_fraction));
+    }
+    if (!(std::isfinite(ro.initial_step_seconds) && ro.initial_step_seconds > 0)) {
+        throw InvalidInput(who + ": initial_step_seconds must be finite and > 0, got " +
+                           std::to_string(ro.initial_step_seconds));
+    }
+}
+
 // Static equilibrium. The constraints above are the gradients of energies ½·C²/α (stretch,
 // shear, bending, stitches, attachments); relax() minimises their sum plus gravity's potential
 // and a stiff one-sided penalty that keeps the cloth at the clearance from the body,
@@ -2210,33 +2242,7 @@ inline void DrapeSolver::solve_self_contacts() {
 inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     using namespace tapeline::vec3;
     const auto start = std::chrono::steady_clock::now();
-    if (ro.max_iterations < 1) {
-        throw InvalidInput("DrapeSolver::relax: max_iterations must be >= 1, got " +
-                           std::to_string(ro.max_iterations));
-    }
-    if (ro.friction_from_iteration < 0 || ro.release_until_iteration < 0) {
-        throw InvalidInput(
-            "DrapeSolver::relax: friction_from_iteration and release_until_iteration "
-            "must be >= 0, got " +
-            std::to_string(ro.friction_from_iteration) + " and " +
-            std::to_string(ro.release_until_iteration));
-    }
-    if (!(std::isfinite(ro.tolerance_mm) && ro.tolerance_mm > 0)) {
-        throw InvalidInput("DrapeSolver::relax: tolerance_mm must be finite and > 0, got " +
-                           std::to_string(ro.tolerance_mm));
-    }
-    if (ro.settle_iterations < 0 || ro.stall_rejections < 0 ||
-        !(ro.settle_fraction >= 0 && ro.settle_fraction <= 1)) {
-        throw InvalidInput(
-            "DrapeSolver::relax: settle_iterations and stall_rejections must be >= 0 and "
-            "settle_fraction in [0, 1], got " +
-            std::to_string(ro.settle_iterations) + ", " + std::to_string(ro.stall_rejections) +
-            " and " + std::to_string(ro.settle_fraction));
-    }
-    if (!(std::isfinite(ro.initial_step_seconds) && ro.initial_step_seconds > 0)) {
-        throw InvalidInput("DrapeSolver::relax: initial_step_seconds must be finite and > 0, got " +
-                           std::to_string(ro.initial_step_seconds));
-    }
+    check_relax_options(ro, "DrapeSolver::relax");
     if (failed_) {
         throw SolverFailure("relax: the solver failed earlier; call reset()");
     }

@@ -129,6 +129,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     if (o.fold_cycles < 1) {
         throw InvalidInput("dress: fold_cycles must be >= 1, got " + std::to_string(o.fold_cycles));
     }
+    check_relax_options(o.relax_options, "dress: relax_options");
+    check_relax_options(o.relax_again_options, "dress: relax_again_options");
     // Pieces left out, with their seams.
     for (const std::string& name : o.without_pieces) {
         if (!pattern::find_piece(pattern, name)) {
@@ -430,7 +432,8 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         if (o.relax && !placement_only) {
             for (int cycle = 0;; ++cycle) {
                 Progress progress("dress: static solve");
-                rep.relax = drape.relax(o.relax_options);
+                rep.relax = drape.relax(cycle == 0 ? o.relax_options : o.relax_again_options);
+                rep.relax_solves.push_back(rep.relax);
                 rep.relax_runs += 1;
                 relax_seconds += rep.relax.seconds;
                 progress.note(std::to_string(rep.relax.iterations) + " iterations, last move " +

@@ -93,6 +93,18 @@ struct DressOptions {
         r.settle_iterations = 5;
         return r;
     }();
+    /// How the solves after a flattening of fold-overs run (see smooth_folds): from a garment
+    /// at rest but for the flattened patches, a shorter schedule, friction from the tenth
+    /// iteration and releases until the twentieth (the first solve's 30 and 45 made each of
+    /// them run 50 iterations or more). Friction from the first iteration held the stretch the
+    /// first solve had left: the T-shirt at 20 mm then ended at p95 1.056 (docs/garment.md).
+    RelaxOptions relax_again_options = [] {
+        RelaxOptions r;
+        r.settle_iterations = 5;
+        r.friction_from_iteration = 10;
+        r.release_until_iteration = 20;
+        return r;
+    }();
     /// The static solve holds the cloth above every body vertex too
     /// (DrapeSolver::set_body_points, reach: the grid's cell), not only its vertices and edge
     /// midpoints against the grid, which rounds off bumps narrower than a few cells.
@@ -247,6 +259,9 @@ struct DressReport {
     int threads = 0;
     /// The last static solve (DressOptions::relax; iterations 0 when it did not run).
     RelaxReport relax;
+    /// Every static solve, in order (the first with DressOptions::relax_options, the others
+    /// with relax_again_options; empty when none ran).
+    std::vector<RelaxReport> relax_solves;
     /// Static solves run (1 + the flattenings that found fold-overs after one, at most
     /// DressOptions::fold_cycles; 0 without the static solve).
     int relax_runs = 0;
