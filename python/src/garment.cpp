@@ -176,6 +176,33 @@ void bind_garment(py::module_& parent) {
                        cxx_doc("DrapeOptions.max_speed_mm_s"))
         .def_readwrite("max_energy_growth", &tgm::DrapeOptions::max_energy_growth,
                        cxx_doc("DrapeOptions.max_energy_growth"));
+    py::class_<tgm::RelaxOptions>(m, "RelaxOptions", cxx_doc("RelaxOptions"))
+        .def(py::init([](const py::kwargs& kw) {
+            return options_init<tgm::RelaxOptions>(kw, "RelaxOptions");
+        }))
+        .def_readwrite("max_iterations", &tgm::RelaxOptions::max_iterations,
+                       cxx_doc("RelaxOptions.max_iterations"))
+        .def_readwrite("friction_from_iteration", &tgm::RelaxOptions::friction_from_iteration,
+                       cxx_doc("RelaxOptions.friction_from_iteration"))
+        .def_readwrite("release_until_iteration", &tgm::RelaxOptions::release_until_iteration,
+                       cxx_doc("RelaxOptions.release_until_iteration"))
+        .def_readwrite("tolerance_mm", &tgm::RelaxOptions::tolerance_mm,
+                       cxx_doc("RelaxOptions.tolerance_mm"))
+        .def_readwrite("initial_step_seconds", &tgm::RelaxOptions::initial_step_seconds,
+                       cxx_doc("RelaxOptions.initial_step_seconds"))
+        .def_readwrite("settle_iterations", &tgm::RelaxOptions::settle_iterations,
+                       cxx_doc("RelaxOptions.settle_iterations"))
+        .def_readwrite("settle_fraction", &tgm::RelaxOptions::settle_fraction,
+                       cxx_doc("RelaxOptions.settle_fraction"))
+        .def_readwrite("stall_rejections", &tgm::RelaxOptions::stall_rejections,
+                       cxx_doc("RelaxOptions.stall_rejections"));
+    py::class_<tgm::FoldOptions>(m, "FoldOptions", cxx_doc("FoldOptions"))
+        .def(py::init(
+            [](const py::kwargs& kw) { return options_init<tgm::FoldOptions>(kw, "FoldOptions"); }))
+        .def_readwrite("max_rounds", &tgm::FoldOptions::max_rounds,
+                       cxx_doc("FoldOptions.max_rounds"))
+        .def_readwrite("rings", &tgm::FoldOptions::rings, cxx_doc("FoldOptions.rings"))
+        .def_readwrite("sweeps", &tgm::FoldOptions::sweeps, cxx_doc("FoldOptions.sweeps"));
     py::class_<tgm::DressOptions>(m, "DressOptions", cxx_doc("DressOptions"))
         .def(py::init([](const py::kwargs& kw) {
             return options_init<tgm::DressOptions>(kw, "DressOptions");
@@ -188,6 +215,19 @@ void bind_garment(py::module_& parent) {
         .def_readwrite("drape", &tgm::DressOptions::drape, cxx_doc("DressOptions.drape"))
         .def_readwrite("without_pieces", &tgm::DressOptions::without_pieces,
                        cxx_doc("DressOptions.without_pieces"))
+        .def_readwrite("relax", &tgm::DressOptions::relax, cxx_doc("DressOptions.relax"))
+        .def_readwrite("relax_options", &tgm::DressOptions::relax_options,
+                       cxx_doc("DressOptions.relax_options"))
+        .def_readwrite("relax_again_options", &tgm::DressOptions::relax_again_options,
+                       cxx_doc("DressOptions.relax_again_options"))
+        .def_readwrite("body_points", &tgm::DressOptions::body_points,
+                       cxx_doc("DressOptions.body_points"))
+        .def_readwrite("smooth_folds", &tgm::DressOptions::smooth_folds,
+                       cxx_doc("DressOptions.smooth_folds"))
+        .def_readwrite("fold_options", &tgm::DressOptions::fold_options,
+                       cxx_doc("DressOptions.fold_options"))
+        .def_readwrite("fold_cycles", &tgm::DressOptions::fold_cycles,
+                       cxx_doc("DressOptions.fold_cycles"))
         .def_readwrite("sdf_cell_mm", &tgm::DressOptions::sdf_cell_mm,
                        cxx_doc("DressOptions.sdf_cell_mm"));
     const tm::BodyOptions body_defaults;
@@ -217,8 +257,10 @@ void bind_garment(py::module_& parent) {
         "the pattern to the body first (`dress --to-body --from`), seed: the grading's; strict: "
         "raise SolverFailure when a quality gate fails; options: a DressOptions (None: the "
         "defaults). Further keyword arguments set its fields (resolution_mm, without_pieces, "
-        "sdf_cell_mm, and placement, sewing, drape as PlacementOptions, SewingOptions, "
-        "DrapeOptions). Returns a dict: 'V' (n, 3) and 'F' (m, 3) "
+        "sdf_cell_mm, relax, body_points, smooth_folds, fold_cycles, and placement, sewing, "
+        "drape, relax_options, relax_again_options, fold_options as PlacementOptions, "
+        "SewingOptions, DrapeOptions, RelaxOptions, RelaxOptions, FoldOptions). Returns a dict: "
+        "'V' (n, 3) and 'F' (m, 3) "
         "of the welded garment in the body's coordinates and unit, 'uv' (m, 3, 2) pattern "
         "millimetres per corner, 'piece' (m,) piece index per triangle, 'piece_names', 'stretch' "
         "(m,) largest principal stretch per triangle, 'report' (the JSON of `dress --report`: "

@@ -10,6 +10,8 @@ DressOptions = _g.DressOptions
 PlacementOptions = _g.PlacementOptions
 SewingOptions = _g.SewingOptions
 DrapeOptions = _g.DrapeOptions
+RelaxOptions = _g.RelaxOptions
+FoldOptions = _g.FoldOptions
 
 __all__ = ["dress", "bindings_from_body", "fabrics", "fabric", "DressOptions", "PlacementOptions", "SewingOptions",
-           "DrapeOptions"]
+           "DrapeOptions", "RelaxOptions", "FoldOptions"]

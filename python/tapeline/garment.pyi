@@ -37,12 +37,36 @@ class DrapeOptions:
     max_energy_growth: float
     def __init__(self, **fields: Any) -> None: ...
 
+class RelaxOptions:
+    max_iterations: int
+    friction_from_iteration: int
+    release_until_iteration: int
+    tolerance_mm: float
+    initial_step_seconds: float
+    settle_iterations: int
+    settle_fraction: float
+    stall_rejections: int
+    def __init__(self, **fields: Any) -> None: ...
+
+class FoldOptions:
+    max_rounds: int
+    rings: int
+    sweeps: int
+    def __init__(self, **fields: Any) -> None: ...
+
 class DressOptions:
     resolution_mm: float
     placement: PlacementOptions
     sewing: SewingOptions
     drape: DrapeOptions
     without_pieces: List[str]
+    relax: bool
+    relax_options: RelaxOptions
+    relax_again_options: RelaxOptions
+    body_points: bool
+    smooth_folds: bool
+    fold_options: FoldOptions
+    fold_cycles: int
     sdf_cell_mm: float
     def __init__(self, **fields: Any) -> None: ...
 

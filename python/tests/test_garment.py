@@ -108,6 +108,46 @@ def test_options_reach_the_solver(body):
     assert "left_ftorso" not in d["piece_names"]
 
 
+def test_static_solve_options_equal_the_command_line(cli, body, tmp_path):
+    # The static solves' and the flattening's options set from Python give the run the tool's
+    # flags give: the same garment, the same report.
+    path, V, F = body
+    out, rep = tmp_path / "g.obj", tmp_path / "r.json"
+    cli("dress", path, "--units", "dm", SHIRT, "--out", str(out), "--report", str(rep), *SHORT_CLI,
+        "--relax-iterations", "7", "--relax-settle", "2", "--relax-again-friction", "3",
+        "--relax-again-releases", "4", "--fold-cycles", "2")
+    o = short_options()
+    o.relax_options.max_iterations = 7  # nested options are edited in place or replaced
+    o.relax_options.settle_iterations = 2
+    o.relax_again_options = garment.RelaxOptions(
+        max_iterations=7, settle_iterations=2, friction_from_iteration=3, release_until_iteration=4)
+    d = tapeline.dress(V, F, pattern.read(SHIRT), units="dm", options=o, fold_cycles=2)
+    np.testing.assert_allclose(d["V"], read_obj(str(out))[0], rtol=1e-8, atol=1e-12)
+    expected, got = json.loads(rep.read_text()), d["report"]
+    for key in expected:
+        if key not in ("body", "pattern", "timings_seconds", "simulation"):
+            assert got[key] == expected[key], key
+    opts = got["options"]
+    assert (opts["static_solve_iterations"], opts["static_solve_settle"]) == (7, 2)
+    assert (opts["static_solve_again_friction_from"], opts["static_solve_again_releases"]) == (3, 4)
+    assert opts["fold_cycles"] == 2
+    sim = got["simulation"]
+    assert sim["static_solve"]["ran"] and 1 <= sim["static_solves"] <= 2
+    assert [s["iterations"] for s in sim["static_solve_each"]] == \
+        [s["iterations"] for s in expected["simulation"]["static_solve_each"]]
+    assert all(1 <= s["iterations"] <= 7 for s in sim["static_solve_each"])
+
+
+def test_the_static_solve_and_the_flattening_can_be_turned_off(body):
+    _, V, F = body
+    d = tapeline.dress(V, F, pattern.read(SHIRT), units="dm", options=short_options(), relax=False,
+                       smooth_folds=False, body_points=False)
+    opts, sim = d["report"]["options"], d["report"]["simulation"]
+    assert not opts["static_solve"] and not opts["fold_smoothing"] and not opts["body_points"]
+    assert not sim["static_solve"]["ran"] and sim["static_solves"] == 0
+    assert sim["static_solve_each"] == [] and sim["fold_smoothing"] == []
+
+
 def test_option_objects():
     assert garment.DressOptions().drape.substeps == 40  # dress's default, not the solver's
     assert garment.DrapeOptions().substeps == 10
@@ -119,6 +159,18 @@ def test_option_objects():
         garment.DressOptions(resolution=20)
     with pytest.raises(TypeError, match="substeps"):
         garment.DrapeOptions(substeps="many")
+    # dress's static solves stop once settled and run a shorter schedule after a flattening; the
+    # solver's own default never stops early.
+    d = garment.DressOptions()
+    assert d.relax and d.body_points and d.smooth_folds and d.fold_cycles == 4
+    assert garment.RelaxOptions().settle_iterations == 0 and d.relax_options.settle_iterations == 5
+    assert (d.relax_options.friction_from_iteration, d.relax_options.release_until_iteration) == \
+        (30, 45)
+    assert (d.relax_again_options.friction_from_iteration,
+            d.relax_again_options.release_until_iteration) == (10, 20)
+    assert garment.FoldOptions(sweeps=3).sweeps == 3 and d.fold_options.max_rounds == 20
+    with pytest.raises(TypeError, match="unexpected keyword argument 'iterations'"):
+        garment.RelaxOptions(iterations=3)
 
 
 @pytest.mark.skipif(not hasattr(tapeline, "grade"), reason="built without grading")
@@ -176,6 +228,19 @@ def test_refusals(body):
         tapeline.dress(V, F, p, units="dm", without_pieces=["collar"])
     with pytest.raises(tapeline.InvalidInput, match="resolution"):
         tapeline.dress(V, F, p, units="dm", resolution_mm=0.5)
+    # The options of the solves after the drape are refused before the drape runs.
+    with pytest.raises(tapeline.InvalidInput,
+                       match="dress: relax_options: friction_from_iteration and "
+                             "release_until_iteration must be >= 0, got -1 and 45"):
+        tapeline.dress(V, F, p, units="dm",
+                       relax_options=garment.RelaxOptions(friction_from_iteration=-1))
+    with pytest.raises(tapeline.InvalidInput, match="dress: relax_again_options: tolerance_mm"):
+        tapeline.dress(V, F, p, units="dm",
+                       relax_again_options=garment.RelaxOptions(tolerance_mm=float("nan")))
+    with pytest.raises(tapeline.InvalidInput, match="dress: fold_options: .*sweeps >= 1"):
+        tapeline.dress(V, F, p, units="dm", fold_options=garment.FoldOptions(sweeps=0))
+    with pytest.raises(tapeline.InvalidInput, match="fold_cycles must be >= 1, got 0"):
+        tapeline.dress(V, F, p, units="dm", fold_cycles=0)
     with pytest.raises(TypeError, match="dress\\(\\) got an unexpected keyword argument 'gap'"):
         tapeline.dress(V, F, p, units="dm", gap=3)
     with pytest.raises(TypeError):

@@ -71,7 +71,7 @@ def test_option_classes_in_the_stubs_have_the_runtime_fields():
         runtime = set(getattr(geodesic, cls)().to_dict().keys())
         assert fields <= runtime | {"target_vertices"}, (cls, fields - runtime)
     # The garment options have no to_dict: their properties are the fields, both ways.
-    for cls in ["PlacementOptions", "SewingOptions", "DrapeOptions", "DressOptions"]:
+    for cls in ["PlacementOptions", "SewingOptions", "DrapeOptions", "RelaxOptions", "FoldOptions", "DressOptions"]:
         node = stub_functions("garment.pyi")[cls]
         fields = {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
         c = getattr(garment, cls)
@@ -97,7 +97,7 @@ def test_option_docstrings_are_the_cxx_comments():
             prop = getattr(c, field, None)
             if isinstance(prop, property):
                 assert prop.__doc__, f"{cls}.{field} has no docstring"
-    for cls in ["PlacementOptions", "SewingOptions", "DrapeOptions", "DressOptions"]:
+    for cls in ["PlacementOptions", "SewingOptions", "DrapeOptions", "RelaxOptions", "FoldOptions", "DressOptions"]:
         c = getattr(garment, cls)
         assert c.__doc__, cls
         for field, prop in vars(c).items():

@@ -457,4 +457,11 @@ TEST(Dress, Refusals) {
                   .find("dress: relax_again_options: friction_from_iteration and "
                         "release_until_iteration must be >= 0"),
               std::string::npos);
+    // The fold options too, though the flattening runs only after the drape.
+    tg::DressOptions bad_folds = o;
+    bad_folds.fold_options.sweeps = 0;
+    EXPECT_NE(message_of([&] { tg::dress(b.body, b.landmarks, shirt, bad_folds); })
+                  .find("dress: fold_options: fold options need max_rounds >= 0, rings >= 0 and "
+                        "sweeps >= 1, got 20, 1 and 0"),
+              std::string::npos);
 }

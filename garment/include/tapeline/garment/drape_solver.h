@@ -1911,6 +1911,17 @@ inline std::size_t DrapeSolver::untangle() {
     return crossings.size();
 }
 
+/// Throws InvalidInput, naming `who` and the option, unless `o` is usable by
+/// smooth_fold_overs().
+inline void check_fold_options(const FoldOptions& o, const std::string& who) {
+    if (o.max_rounds < 0 || o.rings < 0 || o.sweeps < 1) {
+        throw InvalidInput(who +
+                           ": fold options need max_rounds >= 0, rings >= 0 and sweeps >= 1, got " +
+                           std::to_string(o.max_rounds) + ", " + std::to_string(o.rings) + " and " +
+                           std::to_string(o.sweeps));
+    }
+}
+
 // Fold-overs (smooth_fold_overs): a patch of cloth folded over itself within an edge or two is
 // where compression buckled the cloth at a finer scale than its edges; the mesh cannot hold
 // such a fold without crossing itself, and the contacts, which leave out a vertex's
@@ -1922,13 +1933,7 @@ inline std::size_t DrapeSolver::untangle() {
 // count.
 inline FoldReport DrapeSolver::smooth_fold_overs(const FoldOptions& o) {
     using namespace tapeline::vec3;
-    if (o.max_rounds < 0 || o.rings < 0 || o.sweeps < 1) {
-        throw InvalidInput(
-            "DrapeSolver: fold options need max_rounds >= 0, rings >= 0 and "
-            "sweeps >= 1 (got " +
-            std::to_string(o.max_rounds) + ", " + std::to_string(o.rings) + ", " +
-            std::to_string(o.sweeps) + ")");
-    }
+    check_fold_options(o, "DrapeSolver::smooth_fold_overs");
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = x_.size();
     FoldReport report;

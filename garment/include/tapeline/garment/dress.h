@@ -131,6 +131,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     }
     check_relax_options(o.relax_options, "dress: relax_options");
     check_relax_options(o.relax_again_options, "dress: relax_again_options");
+    check_fold_options(o.fold_options, "dress: fold_options");
     // Pieces left out, with their seams.
     for (const std::string& name : o.without_pieces) {
         if (!pattern::find_piece(pattern, name)) {

@@ -114,6 +114,8 @@ struct DressOptions {
     /// static solves at most (>= 1).
     bool smooth_folds = true;
     FoldOptions fold_options;  ///< how
+    /// Static solves at most (>= 1): another runs only where the flattening after a solve found
+    /// fold-overs.
     int fold_cycles = 4;
     double sdf_cell_mm = 5;  ///< cell of the body's signed-distance grid
 };
