@@ -206,22 +206,28 @@ TEST(MakeHumanBodies, ArmLengthsNearTheMakeHumanRulers) {
 // head is the jaw's, the side neck points are found at the jaw and the neck girth goes around the
 // mouth (seen in its picture; +27 mm against MakeHuman's ruler). The neck_below_chin self-check
 // must say so, and only there: on the six other bodies the side neck points lie below the chin's
-// underside.
+// underside. neck_base_narrow, which needs no chin, says so too: the neck base tape (over the
+// four neck points, below the jaw) is shorter than the neck girth round the jaw.
 TEST(MakeHumanBodies, NeckTakenAtTheJawIsFlagged) {
     if (!have_data()) {
         GTEST_SKIP() << "no " << kDir;
     }
     for (const char* body : kBodies) {
         const Result r = measure(body);
-        int flagged = 0;
+        int flagged = 0, narrow = 0;
         for (const auto& w : r.warnings) {
-            if (w.rule == "neck_below_chin") {
-                ++flagged;
+            if (w.rule == "neck_below_chin" || w.rule == "neck_base_narrow") {
+                ++(w.rule == "neck_below_chin" ? flagged : narrow);
                 std::printf("%s: %s\n", body, w.message.c_str());
             }
         }
         const bool jaw = std::string(body) == "mh_male_muscular_heavy";
         EXPECT_EQ(flagged, jaw ? 2 : 0) << body;
+        EXPECT_EQ(narrow, jaw ? 1 : 0) << body;
+        const auto nb = r.measurements.value("neck_base_girth");
+        const auto ng = r.measurements.value("neck_girth");
+        ASSERT_TRUE(nb && ng) << body;
+        EXPECT_EQ(narrow == 1, *nb < 1.05 * *ng) << body << ": " << *nb << " and " << *ng;
     }
 }
 

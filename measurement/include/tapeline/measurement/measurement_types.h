@@ -197,7 +197,8 @@ private:
 struct CheckWarning {
     std::string measurement;  ///< the measurement or landmark it concerns
     /// left_right, bust_underbust, bust_high_bust, bust_armpit, wrist_elbow, landmark_height,
-    /// segment_length, shoulder_breadth, loop_around_part, neck_base_wide, neck_below_chin
+    /// segment_length, shoulder_breadth, loop_around_part, neck_base_wide, neck_base_narrow,
+    /// neck_below_chin
     std::string rule;
     std::string message;  ///< one line naming both
 };
