@@ -1425,13 +1425,14 @@ if [ -n "$mpi" ] && ! grep -q "built without MPI" err.txt; then
   for _ in $(seq 1 600); do
     [ "$(ls mpilost/jobs 2>/dev/null | grep -c '^d')" -ge 1 ] && break; sleep 0.05
   done
+  # A job process found may end before the kill reaches it (a job takes 1-2 s): then the next.
   job=""
   for _ in $(seq 1 600); do
     job=$(rank1 mpilost | while read -r p; do
       rank1 mpilost | grep -qx "$(ps -o ppid= -p "$p" | tr -d ' ')" && echo "$p"; done | head -1)
-    [ -n "$job" ] && break; sleep 0.05
+    [ -n "$job" ] && kill -9 "$job" 2>/dev/null && break
+    job=""; sleep 0.05
   done
-  [ -n "$job" ] && kill -9 "$job"
   wait $mpid; rc=$?
   if [ $rc -eq 0 ] && [ -n "$job" ] && grep -q "LOST d.*rank 1 .*killed by signal" err.txt && same_outputs mpilost
   then ok "batch: an MPI rank's job process killed: run again in the same run, the outputs of the local run"
