@@ -57,6 +57,11 @@ def test_stub_names_exist_and_defaults_agree(module, stub):
                     f"{name}({arg.arg}): stub default {value!r}, module {text}")
 
 
+# The option classes of tapeline.garment.
+GARMENT_OPTIONS = ["PlacementOptions", "SewingOptions", "DrapeOptions", "RelaxOptions", "FoldOptions",
+                   "DressOptions"]
+
+
 def test_every_public_name_has_a_stub():
     for module, stub in MODULES:
         names = set(stub_functions(stub)) | stub_imports(stub)
@@ -71,7 +76,7 @@ def test_option_classes_in_the_stubs_have_the_runtime_fields():
         runtime = set(getattr(geodesic, cls)().to_dict().keys())
         assert fields <= runtime | {"target_vertices"}, (cls, fields - runtime)
     # The garment options have no to_dict: their properties are the fields, both ways.
-    for cls in ["PlacementOptions", "SewingOptions", "DrapeOptions", "RelaxOptions", "FoldOptions", "DressOptions"]:
+    for cls in GARMENT_OPTIONS:
         node = stub_functions("garment.pyi")[cls]
         fields = {n.target.id for n in node.body if isinstance(n, ast.AnnAssign)}
         c = getattr(garment, cls)
@@ -97,7 +102,7 @@ def test_option_docstrings_are_the_cxx_comments():
             prop = getattr(c, field, None)
             if isinstance(prop, property):
                 assert prop.__doc__, f"{cls}.{field} has no docstring"
-    for cls in ["PlacementOptions", "SewingOptions", "DrapeOptions", "RelaxOptions", "FoldOptions", "DressOptions"]:
+    for cls in GARMENT_OPTIONS:
         c = getattr(garment, cls)
         assert c.__doc__, cls
         for field, prop in vars(c).items():
