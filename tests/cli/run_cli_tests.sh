@@ -1088,6 +1088,17 @@ if [ -f "$hoody" ]; then
   expect_fail "dress: a hood has no region" "piece 'left_hood' has no body region" \
     "$bin" dress "$body" --units dm "$hoody" --out x.obj
 fi
+# Trousers: the body measures titan's waistToKnee, so titan grades to it (--to-body) and stops at
+# placement, naming the trouser leg; nothing is written.
+titan="$root/../shared/data/patterns/freesewing/titan_cisFemaleAdult36.json"
+if [ -f "$titan" ]; then
+  rm -f x.obj
+  expect_fail "dress: titan graded, trouser legs not placed" \
+    "piece 'titan\.(front|back)' has no body region \(a trouser leg" "$bin" dress "$body" --units dm \
+    "$titan" --to-body --from "$root/../shared/data/patterns/freesewing/measurement_sets.json" \
+    --from-set cisFemaleAdult36 --out x.obj
+  [ ! -e x.obj ] && ok "dress: titan refused, nothing written" || fail "dress: titan wrote x.obj"
+fi
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
 expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units dm "$gc" --out x.obj \
   --fold-cycles 0

@@ -34,6 +34,7 @@ const std::map<std::string, std::pair<double, double>> kRanges = {
     {"shoulder_to_wrist", {350, 800}},
     {"inseam", {600, 1000}},
     {"outseam", {850, 1300}},
+    {"waist_to_knee", {420, 750}},
     {"waist_to_high_hip", {30, 160}},
     {"waist_to_hips", {60, 250}},
     {"waist_to_armpit", {100, 330}},
@@ -92,6 +93,17 @@ TEST_P(SkinLengths, EveryLengthIsFoundPlausibleAndAgreesWithExactPaths) {
         EXPECT_NEAR(end_y, level, 0.005 * r.result.frame.height) << length << " on " << GetParam();
     }
     EXPECT_LT(*set.value("waist_to_high_hip"), *set.value("waist_to_hips"));
+    // Waist to knee starts where the outseam starts and ends on the way down the outside of the
+    // leg: shorter than the outseam, at least the drop from the waist side to the knee, and it
+    // ends at the knee landmark's height (the ray is horizontal).
+    const Measurement* wk = set.find("waist_to_knee");
+    ASSERT_NE(wk, nullptr);
+    EXPECT_EQ(wk->freesewing, "waistToKnee");
+    EXPECT_LT(wk->value, *set.value("outseam"));
+    const Vec3 knee_point = *r.result.landmarks.point(wk->landmarks.back());
+    EXPECT_GE(wk->value, (wk->points.front()[1] - wk->points.back()[1]) * (1 - 1e-9));
+    EXPECT_NEAR(wk->points.back()[1], knee_point[1], 1.0) << GetParam();
+    EXPECT_NEAR(wk->points.front()[1], set.find("outseam")->points.front()[1], 1e-6);
     EXPECT_EQ(set.find("waist_to_high_hip")->freesewing, "waistToHips");
     EXPECT_EQ(set.find("waist_to_hips")->freesewing, "waistToSeat");
 

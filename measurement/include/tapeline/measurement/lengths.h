@@ -282,6 +282,18 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
             return f.empty() ? ankle_point(s, out) : f;
         });
     }
+    // Waist to knee: the outseam's start, down the outside of the leg to the knee's level (the
+    // point where a ray from the knee's axis point leaves the skin sideways).
+    {
+        const std::string side = side_of({"knee"});
+        const std::string knee = "knee_" + side;
+        const double out = side == "right" ? -1.0 : 1.0;  // x is the body's left
+        add({"waist_to_knee", {}, {}, 0}, {"waist_front", "waist_back", knee}, [&](auto& s) {
+            const std::string f =
+                hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+            return f.empty() ? hit(lm.find(knee)->axis_point, {out, 0, 0}, s, "knee side") : f;
+        });
+    }
     // Along the side of the torso: waist to hip level, and armpit down to the waist (the side
     // points are where a ray from the torso's centre at that level leaves the skin sideways).
     {

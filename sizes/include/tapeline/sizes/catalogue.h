@@ -94,6 +94,7 @@ inline const std::vector<CatalogueEntry>& catalogue() {
         {"inseam", "", "inside leg length", "inseam", "leg_crotch_to_floor", K::length, false},
         {"outseam", "", "outside leg length", "waistToFloor", "leg_waist_side_to_floor", K::length,
          false},
+        {"waist_to_knee", "", "", "waistToKnee", "leg_waist_side_to_knee", K::length, false},
         // FreeSewing's `hips` line (its waistToHips) is the top hip, its `seat` line (waistToSeat)
         // the hip girth's level.
         {"waist_to_high_hip", "", "", "waistToHips", "waist_to_highhip_side", K::length, false},
