@@ -66,6 +66,11 @@ struct DressArgs {
     int relax_settle = tg::DressOptions{}.relax_options.settle_iterations;
     int relax_again_friction = tg::DressOptions{}.relax_again_options.friction_from_iteration;
     int relax_again_releases = tg::DressOptions{}.relax_again_options.release_until_iteration;
+    double relax_tolerance = tg::DressOptions{}.relax_options.tolerance_mm;
+    double relax_settle_fraction = tg::DressOptions{}.relax_options.settle_fraction;
+    int fold_rounds = tg::DressOptions{}.fold_options.max_rounds;
+    int fold_rings = tg::DressOptions{}.fold_options.rings;
+    int fold_sweeps = tg::DressOptions{}.fold_options.sweeps;
     bool strict = false;
     bool to_body = false;
     std::string from, from_set;
@@ -127,6 +132,9 @@ void run_dress(const DressArgs& a) {
         throw InvalidInput("--sdf-cell must be a finite number of mm > 0");
     }
     o.sdf_cell_mm = a.sdf_cell;
+    if (!(a.relax_tolerance > 0)) {  // the parser refuses what is not a finite number
+        throw InvalidInput("--relax-tolerance must be a number of mm > 0");
+    }
     o.sewing.sew_seconds = a.sew_seconds;
     bench::set_settle_seconds(o.sewing, a.settle_seconds);
     o.placement.gap_mm = a.gap;
@@ -138,12 +146,17 @@ void run_dress(const DressArgs& a) {
     for (tg::RelaxOptions* r : {&o.relax_options, &o.relax_again_options}) {
         r->max_iterations = a.relax_iterations;
         r->settle_iterations = a.relax_settle;
+        r->tolerance_mm = a.relax_tolerance;
+        r->settle_fraction = a.relax_settle_fraction;
     }
     o.relax_again_options.friction_from_iteration = a.relax_again_friction;
     o.relax_again_options.release_until_iteration = a.relax_again_releases;
     o.smooth_folds = !a.no_fold_smoothing;
     o.body_points = !a.no_body_points;
     o.fold_cycles = a.fold_cycles;
+    o.fold_options.max_rounds = a.fold_rounds;
+    o.fold_options.rings = a.fold_rings;
+    o.fold_options.sweeps = a.fold_sweeps;
     o.without_pieces = a.without;
 
     const tm::BodyOptions bo = tm::parse_body_options(a.body, a.units, a.up, a.front,
@@ -342,6 +355,15 @@ void register_dress_commands(CLI::App& app) {
                     "tolerance or its iteration limit")
         ->check(CLI::Range(0, 100000))
         ->capture_default_str();
+    cmd->add_option("--relax-tolerance", a->relax_tolerance,
+                    "The static solve has converged when a whole Newton step moved no vertex "
+                    "more than this, mm")
+        ->capture_default_str();
+    cmd->add_option("--relax-settle-fraction", a->relax_settle_fraction,
+                    "The fraction of the vertices --relax-settle lets move more than 0.3 mm in a "
+                    "step that still counts as settled")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
     cmd->add_option("--relax-again-friction", a->relax_again_friction,
                     "The static solves after a flattening of fold-overs: friction acts from "
                     "this iteration on (the first solve's schedule is the one "
@@ -364,6 +386,19 @@ void register_dress_commands(CLI::App& app) {
            "--fold-cycles", a->fold_cycles,
            "Static solves at most, each after flattening the fold-overs the one before left")
         ->check(CLI::Range(1, 100))
+        ->capture_default_str();
+    cmd->add_option("--fold-rounds", a->fold_rounds,
+                    "Find-and-smooth rounds of each flattening at most (0: find the fold-overs "
+                    "only)")
+        ->check(CLI::Range(0, 100000))
+        ->capture_default_str();
+    cmd->add_option("--fold-rings", a->fold_rings,
+                    "Rings of neighbours smoothed around each fold-over at first (one more every "
+                    "five rounds)")
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
+    cmd->add_option("--fold-sweeps", a->fold_sweeps, "Smoothing sweeps per round")
+        ->check(CLI::Range(1, 100000))
         ->capture_default_str();
     cmd->add_flag("--to-body", a->to_body,
                   "First measure the body and grade the pattern to it (measure, grade, dress in "

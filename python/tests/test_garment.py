@@ -115,12 +115,18 @@ def test_static_solve_options_equal_the_command_line(cli, body, tmp_path):
     out, rep = tmp_path / "g.obj", tmp_path / "r.json"
     cli("dress", path, "--units", "dm", SHIRT, "--out", str(out), "--report", str(rep), *SHORT_CLI,
         "--relax-iterations", "7", "--relax-settle", "2", "--relax-again-friction", "3",
-        "--relax-again-releases", "4", "--fold-cycles", "2")
+        "--relax-again-releases", "4", "--fold-cycles", "2", "--relax-tolerance", "0.2",
+        "--relax-settle-fraction", "0.01", "--fold-rounds", "3", "--fold-rings", "2",
+        "--fold-sweeps", "4")
     o = short_options()
     o.relax_options.max_iterations = 7  # nested options are edited in place or replaced
     o.relax_options.settle_iterations = 2
+    o.relax_options.tolerance_mm = 0.2
+    o.relax_options.settle_fraction = 0.01
     o.relax_again_options = garment.RelaxOptions(
-        max_iterations=7, settle_iterations=2, friction_from_iteration=3, release_until_iteration=4)
+        max_iterations=7, settle_iterations=2, friction_from_iteration=3, release_until_iteration=4,
+        tolerance_mm=0.2, settle_fraction=0.01)
+    o.fold_options = garment.FoldOptions(max_rounds=3, rings=2, sweeps=4)
     d = tapeline.dress(V, F, pattern.read(SHIRT), units="dm", options=o, fold_cycles=2)
     np.testing.assert_allclose(d["V"], read_obj(str(out))[0], rtol=1e-8, atol=1e-12)
     expected, got = json.loads(rep.read_text()), d["report"]
@@ -136,6 +142,7 @@ def test_static_solve_options_equal_the_command_line(cli, body, tmp_path):
     assert [s["iterations"] for s in sim["static_solve_each"]] == \
         [s["iterations"] for s in expected["simulation"]["static_solve_each"]]
     assert all(1 <= s["iterations"] <= 7 for s in sim["static_solve_each"])
+    assert all(f["rounds"] <= 3 for f in sim["fold_smoothing"])
 
 
 def test_the_static_solve_and_the_flattening_can_be_turned_off(body):

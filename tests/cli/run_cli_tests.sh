@@ -1108,6 +1108,16 @@ expect_fail "dress: --relax-again-releases -1" "relax-again-releases" "$bin" dre
   "$gc" --out x.obj --relax-again-releases -1
 expect_fail "dress: --relax-again-friction -1" "relax-again-friction" "$bin" dress "$body" --units dm \
   "$gc" --out x.obj --relax-again-friction -1
+expect_fail "dress: --relax-tolerance 0" "relax-tolerance must be a number of mm > 0" "$bin" dress \
+  "$body" --units dm "$gc" --out x.obj --relax-tolerance 0
+expect_fail "dress: --relax-tolerance inf" "relax-tolerance: .inf. is not a finite number" "$bin" \
+  dress "$body" --units dm "$gc" --out x.obj --relax-tolerance inf
+expect_fail "dress: --relax-settle-fraction 2" "relax-settle-fraction" "$bin" dress "$body" --units dm \
+  "$gc" --out x.obj --relax-settle-fraction 2
+expect_fail "dress: --fold-rounds -1" "fold-rounds" "$bin" dress "$body" --units dm "$gc" --out x.obj \
+  --fold-rounds -1
+expect_fail "dress: --fold-sweeps 0" "fold-sweeps" "$bin" dress "$body" --units dm "$gc" --out x.obj \
+  --fold-sweeps 0
 expect_fail "dress: --sdf-cell 0" "--sdf-cell must be a finite number of mm > 0" "$bin" dress "$body" \
   --units dm "$gc" --out x.obj --sdf-cell 0
 if ls x.obj x.*.tmp* >/dev/null 2>&1; then fail "dress: a refusal left a file"; else ok "dress: refusals write nothing"; fi
