@@ -258,6 +258,11 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
             return std::string();
         });
     }
+    // The waist side: where a ray from the waist centre outwards (out = +1: the body's left)
+    // leaves the skin.
+    auto waist_side = [&](SkinLength<TriangleMesh>& s, double out) {
+        return hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+    };
     // Legs: inseam from the crotch down the inside of the leg to the inner ankle, outseam from
     // the waist at the side down the outside to the outer ankle; both then straight to the floor.
     {
@@ -277,8 +282,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
             return ankle_point(s, -out);
         });
         add({"outseam", {}, {}, 0}, {"waist_front", "waist_back", ankle}, [&](auto& s) {
-            const std::string f =
-                hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+            const std::string f = waist_side(s, out);
             return f.empty() ? ankle_point(s, out) : f;
         });
     }
@@ -289,8 +293,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
         const std::string knee = "knee_" + side;
         const double out = side == "right" ? -1.0 : 1.0;  // x is the body's left
         add({"waist_to_knee", {}, {}, 0}, {"waist_front", "waist_back", knee}, [&](auto& s) {
-            const std::string f =
-                hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
+            const std::string f = waist_side(s, out);
             return f.empty() ? hit(lm.find(knee)->axis_point, {out, 0, 0}, s, "knee side") : f;
         });
     }
@@ -300,13 +303,10 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
         const std::string side = side_of({"armpit"});
         const double out = side == "right" ? -1.0 : 1.0;  // x is the body's left
         const std::string armpit = "armpit_" + side;
-        auto waist_side = [&](SkinLength<TriangleMesh>& s) {
-            return hit(mid(P("waist_front"), P("waist_back")), {out, 0, 0}, s, "waist side");
-        };
         // The top hip level is high_hip_girth's plane: halfway between the waist and the hip.
         add({"waist_to_high_hip", {}, {}, 0}, {"waist_front", "waist_back", "hip_back"},
             [&](auto& s) {
-                const std::string f = waist_side(s);
+                const std::string f = waist_side(s, out);
                 if (!f.empty())
                     return f;
                 const Vec3 w = mid(P("waist_front"), P("waist_back"));
@@ -314,7 +314,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
                            {out, 0, 0}, s, "top hip side");
             });
         add({"waist_to_hips", {}, {}, 0}, {"waist_front", "waist_back", "hip_back"}, [&](auto& s) {
-            const std::string f = waist_side(s);
+            const std::string f = waist_side(s, out);
             if (!f.empty())
                 return f;
             const Vec3 w = mid(P("waist_front"), P("waist_back"));
@@ -322,7 +322,7 @@ SkinLengthPlan<TriangleMesh> plan_skin_lengths(const SkinLocator<TriangleMesh, N
         });
         add({"waist_to_armpit", {}, {}, 0}, {armpit, "waist_front", "waist_back"}, [&](auto& s) {
             s.waypoints.push_back(at.nearest(P(armpit)));
-            return waist_side(s);
+            return waist_side(s, out);
         });
     }
     // Back neck point (cervicale) to the waist at the back midline (ISO 8559-1 5.4.5), and the
