@@ -1088,16 +1088,28 @@ if [ -f "$hoody" ]; then
   expect_fail "dress: a hood has no region" "piece 'left_hood' has no body region" \
     "$bin" dress "$body" --units dm "$hoody" --out x.obj
 fi
-# Trousers: the body measures titan's waistToKnee, so titan grades to it (--to-body) and stops at
-# placement, naming the trouser leg; nothing is written.
+# Trousers: the body measures titan's waistToKnee, so titan grades to it (--to-body); its front and
+# back (one leg, drafted once) are paired with their mirror images, sewn at the crotch and placed
+# on their legs (placement and strings only here: the drape is the benchmark's).
 titan="$root/../shared/data/patterns/freesewing/titan_cisFemaleAdult36.json"
 if [ -f "$titan" ]; then
-  rm -f x.obj
-  expect_fail "dress: titan graded, trouser legs not placed" \
-    "piece 'titan\.(front|back)' has no body region \(a trouser leg" "$bin" dress "$body" --units dm \
-    "$titan" --to-body --from "$root/../shared/data/patterns/freesewing/measurement_sets.json" \
-    --from-set cisFemaleAdult36 --out x.obj
-  [ ! -e x.obj ] && ok "dress: titan refused, nothing written" || fail "dress: titan wrote x.obj"
+  expect_ok "dress: titan graded and placed on the legs" "$bin" dress "$body" --units dm "$titan" \
+    --to-body --from "$root/../shared/data/patterns/freesewing/measurement_sets.json" \
+    --from-set cisFemaleAdult36 --resolution 30 --sew-seconds 0 --settle-seconds 0 --no-relax \
+    --out titan.obj --report titan.json
+  python3 - titan.json <<'PY' && ok "dress: titan's four legs pieces on their legs, crotch seams sewn" \
+    || fail "dress: titan's report"
+import json, sys
+r = json.load(open(sys.argv[1]))
+regions = {p["name"]: p["region"] for p in r["pieces"]}
+assert regions == {"titan.front": "leg_right_front", "titan.back": "leg_right_back",
+                   "titan.front (mirror)": "leg_left_front",
+                   "titan.back (mirror)": "leg_left_back"}, regions
+seams = {s["name"]: s for s in r["seams"]}
+for name in ("crotch front", "crotch back", "inseam (mirror)", "outseam (mirror)"):
+    assert seams[name]["pairs"] > 0 and seams[name]["closable"], name
+assert r["placement"]["vertices_inside_body"] == 0 and r["placement"]["piece_crossings"] == 0
+PY
 fi
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
 expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units dm "$gc" --out x.obj \

@@ -367,6 +367,97 @@ TEST(Dress, TShirtSleevesArePairedAndPlacedOnTheirArms) {
     }
 }
 
+// Trousers: FreeSewing's titan drafts one leg (a front and a back with a fork); dressing pairs
+// each with its mirrored copy, adds the crotch seams between them, and wraps each leg's pieces on
+// its own leg: the drafted pieces on the right (−x), the copies on the left, every vertex on its
+// leg's side of the centre line, the forks at the centre line. GarmentCode's jumpsuit carries its
+// legs as panels: each on the side its own placement puts it. Placement only (no sewing, no drape),
+// on the bundled body and on two population bodies: no leg vertex inside the body, no pieces
+// crossing. (The jumpsuit's long sleeves leave a vertex or two inside at the hand on population
+// bodies: the sleeves' placement, not the legs'.)
+TEST(Dress, TrouserLegsArePairedAndPlacedOnTheirLegs) {
+    const std::filesystem::path data = TAPELINE_SHARED_DATA_DIR;
+    const std::filesystem::path titan_file =
+        data / "patterns" / "freesewing" / "titan_cisFemaleAdult36.json";
+    const std::filesystem::path jumpsuit_file =
+        data / "patterns" / "garmentcode" / "js_mean_all_specification.json";
+    if (!std::filesystem::exists(titan_file) || !std::filesystem::exists(jumpsuit_file)) {
+        GTEST_SKIP() << titan_file << " or " << jumpsuit_file << " is absent";
+    }
+    std::vector<std::string> bodies = {bundled_path("bodies/mh_female_average.obj")};
+    for (const char* name : {"mh_pop_005.ply", "mh_pop_030.ply"}) {
+        const auto p = data / "bodies" / "population" / name;
+        if (std::filesystem::exists(p)) {
+            bodies.push_back(p.string());
+        }
+    }
+    const tp::Pattern titan = tp::read_pattern_file(titan_file.string());
+    const tp::Pattern jumpsuit = tp::read_pattern_file(jumpsuit_file.string());
+    tg::DressOptions o;
+    o.resolution_mm = 25;
+    o.sewing.sew_seconds = 0;  // placement and strings only
+    o.sewing.settle_seconds = 0;
+    o.sewing.max_extra_seconds = 0;
+    for (const std::string& path : bodies) {
+        SCOPED_TRACE(path);
+        const MeasuredBody b = load_dm_body(path);
+        for (const tp::Pattern* pattern : {&titan, &jumpsuit}) {
+            SCOPED_TRACE(pattern->name);
+            const tg::DressResult r = tg::dress(b.body, b.landmarks, *pattern, o);
+            const tg::DressReport& rep = r.report;
+            EXPECT_EQ(rep.placement_piece_intersections, 0u);
+            std::size_t at = 0, legs = 0;
+            for (const tg::PieceReport& p : rep.pieces) {
+                const bool left = p.region == "leg_left_front" || p.region == "leg_left_back";
+                const bool right = p.region == "leg_right_front" || p.region == "leg_right_back";
+                if (left || right) {
+                    ++legs;
+                    EXPECT_EQ(p.placed_inside, 0u) << p.name;
+                    double nearest = 1e300;
+                    for (std::size_t v = at; v < at + p.vertices; ++v) {
+                        const double x = r.placed[v][0];
+                        EXPECT_GT(left ? x : -x, 0) << p.name << " vertex " << v - at;
+                        nearest = std::min(nearest, std::abs(x));
+                    }
+                    // The fork (the inner edge) half a layer gap off the centre line.
+                    EXPECT_LT(nearest, o.placement.layer_gap_mm) << p.name;
+                }
+                at += p.vertices;
+            }
+            EXPECT_EQ(legs, 4u);
+        }
+        const tg::DressResult r = tg::dress(b.body, b.landmarks, titan, o);
+        const tg::DressReport& rep = r.report;
+        ASSERT_EQ(rep.pieces.size(), 4u);
+        std::map<std::string, std::string> region;
+        for (const tg::PieceReport& p : rep.pieces) {
+            region[p.name] = p.region;
+        }
+        EXPECT_EQ(region["titan.front"], "leg_right_front");
+        EXPECT_EQ(region["titan.back"], "leg_right_back");
+        EXPECT_EQ(region["titan.front (mirror)"], "leg_left_front");
+        EXPECT_EQ(region["titan.back (mirror)"], "leg_left_back");
+        std::map<std::string, const tg::SeamReport*> seams;
+        for (const tg::SeamReport& sr : rep.seams) {
+            seams[sr.name] = &sr;
+        }
+        for (const char* name : {"outseam", "outseam (mirror)", "inseam", "inseam (mirror)",
+                                 "crotch front", "crotch back"}) {
+            ASSERT_TRUE(seams.count(name)) << name;
+            EXPECT_GT(seams[name]->pairs, 0u) << name;
+            EXPECT_TRUE(seams[name]->closable) << name;
+        }
+        // A crotch seam joins a piece to its mirror image: equal sides, and the inseam and
+        // outseam keep their lengths on the copies.
+        for (const char* name : {"crotch front", "crotch back"}) {
+            EXPECT_NEAR(seams[name]->side_a_mm, seams[name]->side_b_mm, 1e-6) << name;
+            EXPECT_GT(seams[name]->side_a_mm, 200) << name;
+        }
+        EXPECT_NEAR(seams["inseam"]->side_a_mm, seams["inseam (mirror)"]->side_a_mm, 1e-6);
+        EXPECT_NEAR(seams["outseam"]->side_b_mm, seams["outseam (mirror)"]->side_b_mm, 1e-6);
+    }
+}
+
 // The T-shirt (sleeves drafted once, paired with their mirror) dressed on the bundled body: the
 // garment is one mesh with its four openings, no cloth edge crosses the body, no vertex is inside
 // it, and the garment comes to rest (at most 1 % of the vertices moving more than 0.3 mm in the

@@ -168,7 +168,7 @@ inline std::optional<pattern::Point2> seam_top(const pattern::Piece& piece, Regi
                    pattern::end_point(piece.outline.edges[(r.first_edge + r.count - 1) % n])};
         const PieceLayout l =
             piece_layout(piece, ends, region, heights.top_y, heights.waist_y, heights.gc_shift);
-        const bool down = region == Region::sleeve_left || region == Region::sleeve_right;
+        const bool down = is_sleeve(region);
         return ends.uv[(l.h[0] >= l.h[1]) != down ? 0 : 1];
     }
     return std::nullopt;
@@ -182,7 +182,7 @@ inline std::optional<pattern::Point2> seam_top(const pattern::Piece& piece, Regi
 inline std::optional<double> nearest_seam_top(const pattern::Piece& piece, Region region,
                                               const LayoutHeights& heights, double y,
                                               const std::vector<pattern::EdgeRange>& ranges) {
-    const bool down = region == Region::sleeve_left || region == Region::sleeve_right;
+    const bool down = is_sleeve(region);
     std::optional<double> nearest;
     for (const Crossing& x : outline_crossings(piece, region, heights, y)) {
         const std::optional<pattern::Point2> top = seam_top(piece, region, heights, x.edge, ranges);
@@ -206,9 +206,6 @@ inline bool trunk_region(Region r) {
     return r == Region::torso_front || r == Region::torso_back || r == Region::skirt_front ||
            r == Region::skirt_back;
 }
-inline bool sleeve_region(Region r) {
-    return r == Region::sleeve_left || r == Region::sleeve_right;
-}
 
 }  // namespace internal
 
@@ -217,8 +214,9 @@ inline bool sleeve_region(Region r) {
 /// A binding is named as the pattern's own measurements name it (FreeSewing's "chest" when the
 /// pattern uses FreeSewing names), else by our name. Girths and lengths the body lacks, that
 /// cut no piece, or that the pattern does not declare, girths whose pieces come to less than
-/// kLeastGirthRatio of the body's, and pieces without a body region (bindings, collars, trouser
-/// legs, ...) are left out with a note. Throws InvalidInput when nothing was bound.
+/// kLeastGirthRatio of the body's, pieces without a body region (bindings, collars, ...) and
+/// trouser legs (no girth of the legs is bound yet) are left out with a note. Throws InvalidInput
+/// when nothing was bound.
 inline BindingInference infer_girth_bindings(const measurement::Body& body,
                                              const measurement::LandmarkSet& landmarks,
                                              const measurement::MeasurementSet& measurements,
@@ -232,6 +230,12 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     for (const pattern::Piece& p : base.pieces) {
         std::string why;
         placed.push_back(piece_region(p, why));
+        if (placed.back() && is_leg(*placed.back())) {
+            // Placement wraps trouser legs round the legs; no girth or length of a leg is bound
+            // to a pattern yet.
+            placed.back().reset();
+            why = "a trouser leg: no girth of the legs is bound yet";
+        }
         if (!placed.back()) {
             out.notes.push_back("piece " + p.name + ": in no girth (no body region: " + why + ")");
             unplaced += (unplaced.empty() ? "" : ", ") + p.name + " (" + why + ")";
@@ -243,7 +247,6 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     // The edges a girth may cross: sewn to a piece of the same kind (trunk to trunk, sleeve to
     // sleeve), or a fold. Crossing any other edge (an armhole, a hem) means the garment is open
     // at that level.
-    using internal::sleeve_region;
     using internal::trunk_region;
     std::set<std::pair<std::string, std::size_t>> closed_edges;
     for (std::size_t i = 0; i < base.pieces.size(); ++i) {
@@ -263,8 +266,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     for (const pattern::Seam& seam : base.seams) {
         const auto ra = region_of(seam.a.piece), rb = region_of(seam.b.piece);
         if (!ra || !rb ||
-            !((trunk_region(*ra) && trunk_region(*rb)) ||
-              (sleeve_region(*ra) && sleeve_region(*rb)))) {
+            !((trunk_region(*ra) && trunk_region(*rb)) || (is_sleeve(*ra) && is_sleeve(*rb)))) {
             continue;
         }
         for (const pattern::EdgeRange* r : {&seam.a, &seam.b}) {
@@ -283,7 +285,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
             side_seams.push_back(seam.a);
             side_seams.push_back(seam.b);
         }
-        if (ra && rb && sleeve_region(*ra) && sleeve_region(*rb)) {
+        if (ra && rb && is_sleeve(*ra) && is_sleeve(*rb)) {
             sleeve_seams.push_back(seam.a);
             sleeve_seams.push_back(seam.b);
         }
@@ -304,7 +306,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     std::optional<Region> sleeve_side;  // the arm whose sleeves are cut (the body's left first)
     double cap_top[2] = {1e300, 1e300}, sleeve_end[2] = {-1e300, -1e300};
     for (std::size_t i = 0; i < base.pieces.size(); ++i) {
-        if (!placed[i] || !sleeve_region(*placed[i])) {
+        if (!placed[i] || !is_sleeve(*placed[i])) {
             continue;
         }
         const PieceLayout& l = outline_layout[i];
@@ -406,7 +408,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     }
     std::optional<double> underarm[2];
     for (std::size_t i = 0; i < base.pieces.size(); ++i) {
-        if (!placed[i] || !sleeve_region(*placed[i])) {
+        if (!placed[i] || !is_sleeve(*placed[i])) {
             continue;
         }
         // The underarm seam crossed low on the sleeve (a curved hem may hide it at the end).

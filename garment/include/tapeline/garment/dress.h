@@ -254,7 +254,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     SewingPlan& plan = out.sewing;
     std::vector<std::uint8_t> cloth_limb(cloth.positions.size(), 0);
     for (std::size_t i = 0; i < pm.pieces.size(); ++i) {
-        if (regions[i] == Region::sleeve_left || regions[i] == Region::sleeve_right) {
+        if (is_sleeve(regions[i])) {
             std::fill(cloth_limb.begin() + offsets[i], cloth_limb.begin() + offsets[i + 1], 1);
         }
     }

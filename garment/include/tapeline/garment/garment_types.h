@@ -17,7 +17,18 @@
 namespace tapeline::garment {
 
 /// The part of the body a piece is wrapped around before sewing.
-enum class Region { torso_front, torso_back, sleeve_left, sleeve_right, skirt_front, skirt_back };
+enum class Region {
+    torso_front,
+    torso_back,
+    sleeve_left,
+    sleeve_right,
+    skirt_front,
+    skirt_back,
+    leg_left_front,   ///< a trouser leg's front on the body's left leg (+x)
+    leg_left_back,    ///< its back
+    leg_right_front,  ///< a trouser leg's front on the body's right leg (−x)
+    leg_right_back    ///< its back
+};
 
 inline const char* to_string(Region r) {
     switch (r) {
@@ -33,8 +44,33 @@ inline const char* to_string(Region r) {
             return "skirt_front";
         case Region::skirt_back:
             return "skirt_back";
+        case Region::leg_left_front:
+            return "leg_left_front";
+        case Region::leg_left_back:
+            return "leg_left_back";
+        case Region::leg_right_front:
+            return "leg_right_front";
+        case Region::leg_right_back:
+            return "leg_right_back";
     }
     return "?";
+}
+
+/// A sleeve region.
+inline bool is_sleeve(Region r) {
+    return r == Region::sleeve_left || r == Region::sleeve_right;
+}
+
+/// A trouser-leg region.
+inline bool is_leg(Region r) {
+    return r == Region::leg_left_front || r == Region::leg_left_back ||
+           r == Region::leg_right_front || r == Region::leg_right_back;
+}
+
+/// A region on the body's front (torso, skirt or trouser leg).
+inline bool is_front(Region r) {
+    return r == Region::torso_front || r == Region::skirt_front || r == Region::leg_left_front ||
+           r == Region::leg_right_front;
 }
 
 /// How pieces are wrapped around the body.

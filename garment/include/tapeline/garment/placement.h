@@ -1,14 +1,17 @@
 // Placement of pattern pieces around a body before sewing (the first step of dressing).
 //
-// Each piece gets a body region (torso front/back, left/right sleeve, skirt front/back) from the
-// pattern: GarmentCode panels by their names and by where their own placement puts them (front or
-// back, left or right: the absolute coordinates, meant for GarmentCode's own body, are not
-// trusted); FreeSewing pieces by the design's piece names. The piece is then wrapped, as a tailor
-// holds a piece against a dress form and as CLO's arrangement points do:
-//  - torso and skirt pieces around generalized cylinders whose cross-section at each height is
-//    the convex hull of the body's trunk there (arms removed), offset outwards by a gap, with the
-//    piece's centre line on the body's centre front (back) line and its width laid out in arc
-//    length along the section;
+// Each piece gets a body region (torso front/back, left/right sleeve, skirt front/back, left/right
+// trouser leg front/back) from the pattern: GarmentCode panels by their names and by where their
+// own placement puts them (front or back, left or right: the absolute coordinates, meant for
+// GarmentCode's own body, are not trusted); FreeSewing pieces by the design's piece names (a
+// trouser leg by its fork point). The piece is then wrapped, as a tailor holds a piece against a
+// dress form and as CLO's arrangement points do:
+//  - torso and skirt pieces around a prism whose cross-section is the convex hull of the body's
+//    trunk over their heights (arms removed), offset outwards by a gap, with the piece's centre
+//    line on the body's centre front (back) line and its width laid out in arc length along the
+//    section;
+//  - trouser legs around a prism per leg, the hull of the body's half on that side, each piece
+//    from its fork at the centre line outwards round the hip (see wrap_pieces);
 //  - sleeves around a circular cylinder along the arm's axis (fitted to the arm's cross-sections
 //    where the sleeve goes), the sleeve cap as near the shoulder as it keeps clear of the body
 //    pieces.
@@ -280,8 +283,7 @@ struct PieceLayout {
 inline double sleeve_front_sign(const pattern::Pattern& p, std::size_t index,
                                 const std::vector<Region>& regions) {
     const pattern::Piece& piece = p.pieces[index];
-    if (piece.placement ||
-        (regions[index] != Region::sleeve_left && regions[index] != Region::sleeve_right)) {
+    if (piece.placement || !is_sleeve(regions[index])) {
         return 1;
     }
     double xmin = 1e300, xmax = -1e300;
@@ -335,16 +337,28 @@ inline std::optional<Region> piece_region(const pattern::Piece& piece, std::stri
         if (contains(n, "torso")) {
             return front ? Region::torso_front : Region::torso_back;
         }
-        why = contains(n, "pant")   ? "trouser legs are not placed yet"
-              : contains(n, "hood") ? "hoods are not placed yet"
-                                    : "its name says neither torso, skirt nor sleeve";
+        if (contains(n, "pant")) {
+            const bool left = t[0] >= 0;
+            return front ? (left ? Region::leg_left_front : Region::leg_right_front)
+                         : (left ? Region::leg_left_back : Region::leg_right_back);
+        }
+        why = contains(n, "hood") ? "hoods are not placed yet"
+                                  : "its name says neither torso, skirt, sleeve nor pant";
         return std::nullopt;
     }
     // FreeSewing names pieces "design.piece" ("aaron.front"); a trouser leg's front and back
-    // (titan's) carry the fork, where the inseam meets the crotch seam.
+    // (titan's) carry the fork, where the inseam meets the crotch seam. The piece as drafted goes
+    // on the right leg, its mirrored copy (unfold.h) on the left.
     const std::string base = n.substr(n.rfind('.') == std::string::npos ? 0 : n.rfind('.') + 1);
     if (piece.points.count("fork")) {
-        why = "a trouser leg (it has a fork point); trouser legs are not placed yet";
+        const bool mirror = contains(base, "(mirror)");
+        if (base.rfind("front", 0) == 0) {
+            return mirror ? Region::leg_left_front : Region::leg_right_front;
+        }
+        if (base.rfind("back", 0) == 0) {
+            return mirror ? Region::leg_left_back : Region::leg_right_back;
+        }
+        why = "a trouser leg (it has a fork point) named neither front nor back";
         return std::nullopt;
     }
     if (base.rfind("front", 0) == 0 && base.find("Binding") == std::string::npos) {
@@ -360,8 +374,7 @@ inline std::optional<Region> piece_region(const pattern::Piece& piece, std::stri
         return Region::sleeve_right;
     }
     why =
-        "the design table gives no region for it (bindings, cuffs, collars and trouser legs "
-        "are not placed yet)";
+        "the design table gives no region for it (bindings, cuffs and collars are not placed yet)";
     return std::nullopt;
 }
 
@@ -376,9 +389,11 @@ inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::Piec
     const std::size_t n = mesh.uv.size();
     out.s.resize(n);
     out.h.resize(n);
-    const bool sleeve = region == Region::sleeve_left || region == Region::sleeve_right;
-    const bool skirt = region == Region::skirt_front || region == Region::skirt_back;
-    const bool front = region == Region::torso_front || region == Region::skirt_front;
+    const bool sleeve = is_sleeve(region);
+    // Skirts and trouser legs hang from the waist.
+    const bool skirt =
+        region == Region::skirt_front || region == Region::skirt_back || is_leg(region);
+    const bool front = is_front(region);
     if (piece.placement && !sleeve) {
         // GarmentCode torso/skirt panels lie in planes z = const: x is the offset from the centre
         // line (the body's left for x > 0), y the height on GarmentCode's body.
@@ -424,8 +439,12 @@ inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::Piec
         }
         return out;
     }
-    const double xc =
-        piece.fold ? 0.5 * (piece.fold->line.a.x + piece.fold->line.b.x) : 0.5 * (xmin + xmax);
+    // A trouser leg's s starts at its fork, which goes to the body's centre line (wrap_pieces
+    // turns it outwards, towards its leg).
+    const auto fork = piece.points.find("fork");
+    const double xc = is_leg(region) && fork != piece.points.end() ? fork->second.x
+                      : piece.fold ? 0.5 * (piece.fold->line.a.x + piece.fold->line.b.x)
+                                   : 0.5 * (xmin + xmax);
     for (std::size_t v = 0; v < n; ++v) {
         // FreeSewing draws front and back halves alike, the fold on the same side, so that a side
         // seam joins edges on the same side of both drawings: seen from behind, the back is
@@ -439,7 +458,8 @@ inline PieceLayout piece_layout(const pattern::Piece& piece, const pattern::Piec
 /// The heights pieces are laid out from (canonical mm): the top of the upper-body pieces, the
 /// waist skirts hang from (both a gap above the body's), and the vertical shift from GarmentCode's
 /// placement to the body, which keeps GarmentCode pieces at their relative heights (their
-/// highest torso point, else their highest skirt point, goes to the top). `uv[i]` holds points of
+/// highest torso point goes to the top; without torso pieces, the highest point of the skirt and
+/// trouser pieces goes to the waist). `uv[i]` holds points of
 /// piece i (its mesh vertices or its outline): their highest placed point is the piece's.
 struct LayoutHeights {
     double top_y = 0, waist_y = 0, gc_shift = 0;
@@ -459,8 +479,8 @@ inline LayoutHeights layout_heights(const pattern::Pattern& pattern,
             const double y = pattern::placed_point(*p.placement, q)[1];
             if (regions[i] == Region::torso_front || regions[i] == Region::torso_back) {
                 gc_top = std::max(gc_top, y);
-            } else if (regions[i] == Region::skirt_front || regions[i] == Region::skirt_back) {
-                gc_skirt_top = std::max(gc_skirt_top, y);
+            } else if (!is_sleeve(regions[i])) {
+                gc_skirt_top = std::max(gc_skirt_top, y);  // skirts and trouser legs
             }
         }
     }
@@ -582,7 +602,7 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
     {
         std::vector<double> fmin, fmax, bmin, bmax;
         for (const PieceLayout& l : layouts) {
-            if (l.region == Region::sleeve_left || l.region == Region::sleeve_right) {
+            if (is_sleeve(l.region) || is_leg(l.region)) {
                 continue;
             }
             for (double h : l.h) {
@@ -598,10 +618,10 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
         bmin.assign(ns, 1e300);
         bmax.assign(ns, -1e300);
         for (const PieceLayout& l : layouts) {
-            if (l.region == Region::sleeve_left || l.region == Region::sleeve_right) {
+            if (is_sleeve(l.region) || is_leg(l.region)) {
                 continue;
             }
-            const bool front = l.region == Region::torso_front || l.region == Region::skirt_front;
+            const bool front = is_front(l.region);
             for (std::size_t v = 0; v < l.s.size(); ++v) {
                 const std::size_t k = std::min(ns - 1, std::size_t((l.h[v] - hmin) / step));
                 (front ? fmin : bmin)[k] = std::min((front ? fmin : bmin)[k], l.s[v]);
@@ -638,10 +658,10 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
         have_prism = true;
         for (std::size_t i = 0; i < layouts.size(); ++i) {
             const PieceLayout& l = layouts[i];
-            if (l.region == Region::sleeve_left || l.region == Region::sleeve_right) {
+            if (is_sleeve(l.region) || is_leg(l.region)) {
                 continue;
             }
-            const bool front = l.region == Region::torso_front || l.region == Region::skirt_front;
+            const bool front = is_front(l.region);
             xyz[i].resize(l.s.size());
             // Pieces on one side of the centre line (GarmentCode's left and right halves) keep
             // a layer gap from it, so that halves meeting there do not touch before sewing.
@@ -659,6 +679,106 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
             }
         }
     }
+    // --- trouser legs: a prism per leg, as the trunk's, its section the convex hull of the body's
+    // half on that side (x >= 0 for the left leg; arms and hands left out) over the legs' heights,
+    // offset by the gap. Each piece's fork (FreeSewing; GarmentCode: its edge nearest the centre
+    // line) goes to the centre line, half a layer gap off it, as GarmentCode arranges its own
+    // trousers, and the piece wraps outwards from there, the front from the centre front and the
+    // back from the centre back, round the hip to the side seam. The crotch extension thus starts
+    // in front of (behind) the crotch, and the sewing pulls it in between the legs along its
+    // strings. The offset grows until the section's arc from the centre front round the outside to
+    // the centre back holds the front and the back piece side by side.
+    for (int side = 0; side < 2; ++side) {
+        const double sigma = side == 0 ? 1 : -1;  // the leg's side: +x is the body's left
+        std::vector<std::size_t> legs;
+        for (std::size_t i = 0; i < layouts.size(); ++i) {
+            const Region r = layouts[i].region;
+            if (is_leg(r) &&
+                (r == Region::leg_left_front || r == Region::leg_left_back) == (side == 0)) {
+                legs.push_back(i);
+            }
+        }
+        if (legs.empty()) {
+            continue;
+        }
+        // Per piece: s turned towards this leg (the front's positive s goes to +x, the back's to
+        // −x) and shifted so that its innermost vertex is half a layer gap off the centre line.
+        std::vector<std::vector<double>> sl(legs.size());
+        double lo = 1e300, hi = -1e300;
+        for (std::size_t k = 0; k < legs.size(); ++k) {
+            const PieceLayout& l = layouts[legs[k]];
+            const double out = sigma * (is_front(l.region) ? 1 : -1);
+            double sum = 0;
+            for (double v : l.s) {
+                sum += v;
+            }
+            const double turn = out * sum >= 0 ? 1 : -1;
+            double inner = 1e300;
+            for (double v : l.s) {
+                inner = std::min(inner, out * turn * v);
+            }
+            sl[k].resize(l.s.size());
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                sl[k][v] = turn * l.s[v] + out * (0.5 * o.layer_gap_mm - inner);
+            }
+            for (double h : l.h) {
+                lo = std::min(lo, h);
+                hi = std::max(hi, h);
+            }
+        }
+        // The widths the outer arc must hold, per slice: front and back extents from the centre.
+        const double step = o.slice_mm;
+        const std::size_t ns = std::size_t((hi - lo) / step) + 1;
+        std::vector<double> wf(ns, 0.0), wb(ns, 0.0);
+        for (std::size_t k = 0; k < legs.size(); ++k) {
+            const PieceLayout& l = layouts[legs[k]];
+            const bool front = is_front(l.region);
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                const std::size_t b = std::min(ns - 1, std::size_t((l.h[v] - lo) / step));
+                (front ? wf : wb)[b] = std::max((front ? wf : wb)[b], std::abs(sl[k][v]));
+            }
+        }
+        double need = 0;
+        for (std::size_t b = 0; b < ns; ++b) {
+            need = std::max(need, 1.04 * (wf[b] + wb[b]) + o.layer_gap_mm);
+        }
+        std::vector<std::array<double, 2>> half;
+        for (std::size_t v = 0; v < body.points.size(); ++v) {
+            const Vec3& p = body.points[v];
+            if (!body.is_arm[v] && sigma * p[0] >= 0 && p[1] >= lo - o.gap_mm &&
+                p[1] <= hi + o.gap_mm) {
+                half.push_back({p[0], p[2]});
+            }
+        }
+        if (half.size() < 3) {
+            throw InvalidInput("dress: the body has no " +
+                               std::string(side == 0 ? "left" : "right") + " leg between " +
+                               std::to_string(int(lo)) + " and " + std::to_string(int(hi)) +
+                               " mm height, where the trouser legs go");
+        }
+        // The arc from the centre front outwards (towards this leg's side) to the centre back.
+        const auto outer_arc = [&](const Section& sec) {
+            const double per = sec.arc.back();
+            const double d = std::fmod(sigma * sec.dir_front * (sec.back_arc - sec.front_arc), per);
+            return d < 0 ? d + per : d;
+        };
+        double offset = o.gap_mm;
+        Section sec = make_section(half, offset);
+        for (int round = 0; round < 8 && outer_arc(sec) < need; ++round) {
+            offset += (need - outer_arc(sec)) / M_PI;  // the outer arc turns through half a turn
+            sec = make_section(half, offset);
+        }
+        for (std::size_t k = 0; k < legs.size(); ++k) {
+            const PieceLayout& l = layouts[legs[k]];
+            const bool front = is_front(l.region);
+            xyz[legs[k]].resize(l.s.size());
+            for (std::size_t v = 0; v < l.s.size(); ++v) {
+                const double a = (front ? sec.front_arc : sec.back_arc) + sec.dir_front * sl[k][v];
+                const auto q = section_point(sec, a);
+                xyz[legs[k]][v] = {q[0], l.h[v], q[1]};
+            }
+        }
+    }
     // --- sleeves: a cylinder per arm. The body pieces' vertices in a hash grid, for the
     // clearance of the sleeves from them.
     const double clear_mm = 2 * o.layer_gap_mm;
@@ -669,7 +789,7 @@ inline void wrap_pieces(const BodyShape& body, const std::vector<PieceLayout>& l
                                    long(std::floor(p[2] / clear_mm))};
     };
     for (std::size_t i = 0; i < layouts.size(); ++i) {
-        if (layouts[i].region != Region::sleeve_left && layouts[i].region != Region::sleeve_right) {
+        if (!is_sleeve(layouts[i].region)) {
             for (const Vec3& p : xyz[i]) {
                 torso_grid[cell_of(p)].push_back(p);
             }

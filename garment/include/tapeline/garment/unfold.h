@@ -13,6 +13,9 @@
 // "NAME (mirror)", and every seam it takes part in exists twice, once between the original
 // pieces (the original halves of the folded ones) and once between the mirror images — and so on
 // for pieces sewn to those. FreeSewing drafts each such piece once (a sleeve, cut twice).
+// Trousers are drafted as one leg: a front and a back that the crotch seam joins to their own
+// mirror images (pattern::freesewing_mirror_seam_rules). They get their mirrored copies the same
+// way, and the crotch seams between each piece and its copy are added from the rules.
 //
 // A seam of a FreeSewing design whose one side is one outline chain and whose other side is two
 // (a sleeve cap sewn to the front and the back armhole) cannot be held by a Pattern (one edge
@@ -338,7 +341,22 @@ inline pattern::Pattern unfold_pieces(pattern::Pattern p) {
         piece.cut_count = 1;
         folded[piece.name] = {n, f};
     }
-    if (folded.empty()) {
+    // Pieces sewn to their own mirror image (a trouser leg's front and back, drafted once: the
+    // crotch seams) get a mirrored copy too.
+    std::vector<const pattern::NamedSeamRule*> mirror_rules;
+    std::map<std::string, std::size_t> paired;  // name → edge count
+    for (const pattern::NamedSeamRule& rule : pattern::freesewing_mirror_seam_rules()) {
+        if (p.name.rfind(rule.design, 0) != 0) {
+            continue;
+        }
+        for (const pattern::NamedChain& c : rule.a) {
+            if (const pattern::Piece* piece = pattern::find_design_piece(p, c.piece)) {
+                paired[piece->name] = piece->outline.edges.size();
+                mirror_rules.push_back(&rule);
+            }
+        }
+    }
+    if (folded.empty() && paired.empty()) {
         return p;
     }
     // Original edge i of a folded piece is new edge k = (i − f − 1) mod n; its mirror image is
@@ -360,7 +378,6 @@ inline pattern::Pattern unfold_pieces(pattern::Pattern p) {
         return out;
     };
     // Pieces sewn to folded ones, or to those (see the file comment), get a mirrored copy.
-    std::map<std::string, std::size_t> paired;  // name → edge count
     for (bool grew = true; grew;) {
         grew = false;
         for (const pattern::Seam& s : p.seams) {
@@ -412,6 +429,21 @@ inline pattern::Pattern unfold_pieces(pattern::Pattern p) {
     }
     p.seams = std::move(seams);
     p.bindings.clear();  // their edge indices refer to the half outlines
+    if (!mirror_rules.empty()) {
+        std::vector<pattern::NamedSeamRule> rules;
+        for (const pattern::NamedSeamRule* r : mirror_rules) {
+            rules.push_back(*r);
+        }
+        std::vector<std::string> skipped;
+        for (pattern::Seam& s : pattern::pattern_seams(pattern::named_seams(p, rules, &skipped))) {
+            p.seams.push_back(std::move(s));
+        }
+        if (!skipped.empty()) {
+            throw InvalidInput(where + ": the seam '" + skipped.front() +
+                               "' between a piece and its mirror image was not found on the "
+                               "outline (its named points are missing)");
+        }
+    }
     return p;
 }
 

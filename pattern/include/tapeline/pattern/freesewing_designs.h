@@ -79,6 +79,25 @@ inline const std::vector<NamedSeamRule>& freesewing_seam_rules() {
     return rules;
 }
 
+/// Seams between a piece of a FreeSewing design and its own mirror image: trousers are drafted as
+/// one leg (a front and a back, cut twice), and the crotch seam joins the two fronts from the
+/// centre-front waist to the fork, the two backs likewise. Side B names the mirrored copy,
+/// "PIECE (mirror)", which exists once the pattern is unfolded for dressing (garment/unfold.h);
+/// these rules are applied there, not on import.
+inline const std::vector<NamedSeamRule>& freesewing_mirror_seam_rules() {
+    static const std::vector<NamedSeamRule> rules = {
+        {"titan",
+         "crotch front",
+         {{"front", "styleWaistIn", "fork"}},
+         {{"front (mirror)", "styleWaistIn", "fork"}}},
+        {"titan",
+         "crotch back",
+         {{"back", "styleWaistIn", "fork"}},
+         {{"back (mirror)", "styleWaistIn", "fork"}}},
+    };
+    return rules;
+}
+
 /// The seams FreeSewing's designs imply (freesewing_seam_rules) for a pattern imported from
 /// FreeSewing; a rule whose chains are not all found on this draft is named in `skipped`.
 inline std::vector<SeamSpec> freesewing_seams(const Pattern& p,

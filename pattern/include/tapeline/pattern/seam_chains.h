@@ -93,21 +93,25 @@ struct NamedSeamRule {
     ///@}
 };
 
+/// The piece of `p` a rule's chain names: its full name, or its name without the design prefix
+/// ("front" for "teagan.front"); nullptr when there is none.
+inline const Piece* find_design_piece(const Pattern& p, const std::string& name) {
+    for (const Piece& piece : p.pieces) {
+        const auto dot = piece.name.find('.');
+        if (piece.name == name ||
+            (dot != std::string::npos && piece.name.substr(dot + 1) == name)) {
+            return &piece;
+        }
+    }
+    return nullptr;
+}
+
 /// The seams of `rules` for pattern `p` (rules whose design starts p.name, every chain found).
 /// A rule whose chains are not all found is skipped and named in `skipped` when given.
 inline std::vector<SeamSpec> named_seams(const Pattern& p, const std::vector<NamedSeamRule>& rules,
                                          std::vector<std::string>* skipped = nullptr) {
     std::vector<SeamSpec> out;
-    auto find = [&](const std::string& name) -> const Piece* {
-        for (const Piece& piece : p.pieces) {
-            const auto dot = piece.name.find('.');
-            if (piece.name == name ||
-                (dot != std::string::npos && piece.name.substr(dot + 1) == name)) {
-                return &piece;
-            }
-        }
-        return nullptr;
-    };
+    const auto find = [&](const std::string& name) { return find_design_piece(p, name); };
     for (const NamedSeamRule& r : rules) {
         if (p.name.rfind(r.design, 0) != 0) {
             continue;
