@@ -287,3 +287,59 @@ TEST(GarmentUnfold, SleeveCapSplitBetweenTheArmholes) {
     // A second call adds nothing: the seams are there.
     EXPECT_EQ(tg::split_chain_seams(p), 0u);
 }
+
+// Trousers drafted as one leg (titan): the front and the back get mirrored copies, their inseam
+// and outseam are doubled, and the crotch seams join each piece to its copy, from the centre waist
+// to the fork, both sides of equal length (a piece and its mirror image) and in the same direction
+// (the waist ends meet). A draft whose crotch seam's named points are missing is refused naming the
+// seam.
+TEST(GarmentUnfold, TrouserLegsArePairedWithTheirMirrorImagesAndSewnAtTheCrotch) {
+    const std::filesystem::path file = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) /
+                                       "patterns" / "freesewing" / "titan_cisFemaleAdult36.json";
+    if (!std::filesystem::exists(file)) {
+        GTEST_SKIP() << file << " is absent";
+    }
+    const tp::Pattern p = tp::read_pattern_file(file.string());
+    const tp::Pattern u = tg::unfold_pieces(p);
+    ASSERT_EQ(u.pieces.size(), 4u);
+    std::map<std::string, const tp::Seam*> seams;
+    for (const tp::Seam& s : u.seams) {
+        seams[s.name] = &s;
+    }
+    ASSERT_EQ(seams.size(), 6u);
+    for (const char* name : {"crotch front", "crotch back"}) {
+        ASSERT_TRUE(seams.count(name)) << name;
+        const tp::Seam& s = *seams[name];
+        EXPECT_EQ(s.b.piece, s.a.piece + " (mirror)") << name;
+        const double la = tp::length(piece(u, s.a.piece), s.a);
+        const double lb = tp::length(piece(u, s.b.piece), s.b);
+        EXPECT_NEAR(la, lb, 1e-9) << name;
+        EXPECT_GT(la, 150) << name;
+        // Where the two sides start: the same point of the piece and of its mirror image.
+        const auto start = [&](const tp::EdgeRange& r, bool reversed) {
+            const tp::Piece& q = piece(u, r.piece);
+            const std::size_t n = q.outline.edges.size();
+            return reversed ? tp::end_point(q.outline.edges[(r.first_edge + r.count - 1) % n])
+                            : tp::start_point(q.outline.edges[r.first_edge]);
+        };
+        const bool opposite = s.direction == tp::SeamDirection::opposite;
+        const tp::Point2 a = start(s.a, false), b = start(s.b, opposite);
+        EXPECT_NEAR(a.x, -b.x, 1e-9) << name;  // the copy is mirrored about x = 0
+        EXPECT_NEAR(a.y, b.y, 1e-9) << name;
+    }
+    for (const char* name : {"inseam", "inseam (mirror)", "outseam", "outseam (mirror)"}) {
+        EXPECT_TRUE(seams.count(name)) << name;
+    }
+    tp::Pattern broken = p;
+    for (tp::Piece& q : broken.pieces) {
+        if (q.name == "titan.front") {
+            q.points.erase("styleWaistIn");
+        }
+    }
+    try {
+        tg::unfold_pieces(broken);
+        ADD_FAILURE() << "a crotch seam without its named points was accepted";
+    } catch (const tapeline::InvalidInput& e) {
+        EXPECT_NE(std::string(e.what()).find("crotch front"), std::string::npos) << e.what();
+    }
+}
