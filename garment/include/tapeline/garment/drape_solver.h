@@ -849,6 +849,12 @@ inline void DrapeSolver::set_attachments(std::vector<Attachment> attachments) {
         if (!(std::isfinite(at.compliance) && at.compliance >= 0)) {
             throw InvalidInput(name + ": compliance must be finite and >= 0");
         }
+        const double axis_length = vec3::norm(at.axis);
+        if (!internal::finite3(at.axis) ||
+            !(axis_length == 0 || std::abs(axis_length - 1) <= 1e-9)) {
+            throw InvalidInput(name + ": axis must be zero or a unit vector, its length is " +
+                               std::to_string(axis_length));
+        }
     }
     attachments_ = std::move(attachments);
     attachment_alpha_.resize(attachments_.size());
@@ -1361,11 +1367,22 @@ inline void DrapeSolver::project_attachment(std::size_t a, double h) {
     const Attachment& at = attachments_[a];
     const double w = w_[at.vertex];
     const Vec3 d = sub(p_[at.vertex], at.target);
-    const double len = norm(d);
-    if (w == 0 || len < 1e-12) {
+    const double alpha = attachment_alpha_[a] / (h * h);
+    if (w == 0) {
         return;
     }
-    const double alpha = attachment_alpha_[a] / (h * h);
+    if (at.axis[0] != 0 || at.axis[1] != 0 || at.axis[2] != 0) {
+        // C = axis·(p − target), its gradient the axis.
+        const double c = dot(at.axis, d);
+        const double dl = (-c - alpha * lambda_attachment_[a]) / (w + alpha);
+        lambda_attachment_[a] += dl;
+        p_[at.vertex] = add(p_[at.vertex], scale(at.axis, w * dl));
+        return;
+    }
+    const double len = norm(d);
+    if (len < 1e-12) {
+        return;
+    }
     const double dl = (-len - alpha * lambda_attachment_[a]) / (w + alpha);
     lambda_attachment_[a] += dl;
     p_[at.vertex] = add(p_[at.vertex], scale(d, w * dl / len));
@@ -2624,6 +2641,11 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
         for (std::size_t k = 0; k < attachments_.size(); ++k) {
             const Attachment& at = attachments_[k];
             const double inv_alpha = 1 / alpha_or_hard(attachment_alpha_[k]);
+            if (at.axis[0] != 0 || at.axis[1] != 0 || at.axis[2] != 0) {
+                e += term(dot(at.axis, sub(x[at.vertex], at.target)), inv_alpha, &at.vertex,
+                          &at.axis, 1, with_grad, hessian);
+                continue;
+            }
             for (int r = 0; r < 3; ++r) {
                 Vec3 g{0, 0, 0};
                 g[r] = 1;
@@ -2751,6 +2773,9 @@ inline RelaxReport DrapeSolver::relax(const RelaxOptions& ro) {
     trip.reserve(9 * cols.size());
     SpMat K(dim, dim);
     Eigen::CholmodSupernodalLLT<SpMat> llt;
+    // A factorization that fails (not positive definite) is answered below by a shorter step;
+    // CHOLMOD's own warning on stderr would only be noise.
+    llt.cholmod().print = 0;
     bool analysed = false;
     double h = ro.initial_step_seconds;
     double trust = 1;  // mm: the largest vertex move of a step; grows while whole steps succeed

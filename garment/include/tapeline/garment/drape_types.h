@@ -105,6 +105,10 @@ struct Attachment {
     /// The point it is pulled to, mm.
     Vec3 target{0, 0, 0};
     double compliance = 0;  ///< XPBD compliance (inverse stiffness), mm/N; 0: hard
+    /// Zero: the vertex is pulled to the point. A unit vector: only its offset from the target
+    /// along this axis is pulled back (a plane through the target holds it, across which it
+    /// slides freely: a waistband held at its height, dress.h).
+    Vec3 axis{0, 0, 0};
 };
 
 /// Two vertices held at `rest_mm` apart (stitches: the rest length shrinks to zero).
