@@ -230,3 +230,60 @@ TEST(PatternFreeSewing, OpenSeamPathIsClosedAndNoted) {
     EXPECT_NE(rep.notes[0].find("piece 'p'"), std::string::npos);
     EXPECT_TRUE(validate(p).ok());
 }
+
+// Titan's waist (the design table's rule, styleWaistIn to styleWaistOut on the front and the
+// back) is labelled for the waistband on import, and nothing else is, on any shared draft; a
+// draft without one of the rule's points gets no label there and a note naming the rule.
+TEST(PatternFreeSewing, TitanWaistEdgesAreLabelledForTheWaistband) {
+    const std::string path = shared_patterns_dir() + "/freesewing/titan_cisFemaleAdult36.json";
+    if (!tapeline_test::exists(path)) {
+        GTEST_SKIP() << path << " absent";
+    }
+    for (const std::string& file : pattern_files()) {
+        const Pattern p = read_freesewing(file);
+        const bool titan = p.name.rfind("titan", 0) == 0;
+        std::size_t labelled = 0;
+        for (const Piece& piece : p.pieces) {
+            std::vector<std::size_t> waist;
+            for (std::size_t e = 0; e < piece.outline.edges.size(); ++e) {
+                if (piece.outline.edges[e].label == waist_label()) {
+                    waist.push_back(e);
+                }
+            }
+            labelled += waist.size();
+            if (!titan) {
+                continue;
+            }
+            ASSERT_EQ(waist.size(), 1u) << file << " " << piece.name;
+            const Edge& e = piece.outline.edges[waist[0]];
+            const Point2 in = piece.points.at("styleWaistIn"),
+                         out = piece.points.at("styleWaistOut");
+            const Point2 a = start_point(e), b = end_point(e);
+            EXPECT_LT(
+                std::min(distance(a, in) + distance(b, out), distance(a, out) + distance(b, in)),
+                0.02)
+                << file << " " << piece.name;
+        }
+        EXPECT_EQ(labelled, titan ? 2u : 0u) << file;
+    }
+    nlohmann::json doc = nlohmann::json::parse(tapeline_test::slurp(path));
+    for (auto& jp : doc["pieces"]) {
+        if (jp["name"] == "titan.front") {
+            jp["points"].erase("styleWaistOut");
+        }
+    }
+    ImportReport rep;
+    const Pattern p = freesewing_from_json(doc, "titan.json", &rep);
+    const auto note = std::find_if(rep.notes.begin(), rep.notes.end(), [](const std::string& n) {
+        return n.find("edge label 'titan front waist' not given") != std::string::npos;
+    });
+    EXPECT_NE(note, rep.notes.end());
+    for (const Edge& e : find_piece(p, "titan.front")->outline.edges) {
+        EXPECT_TRUE(e.label.empty());
+    }
+    std::size_t back = 0;
+    for (const Edge& e : find_piece(p, "titan.back")->outline.edges) {
+        back += e.label == waist_label() ? 1 : 0;
+    }
+    EXPECT_EQ(back, 1u);
+}

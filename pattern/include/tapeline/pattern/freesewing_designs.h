@@ -98,6 +98,23 @@ inline const std::vector<NamedSeamRule>& freesewing_mirror_seam_rules() {
     return rules;
 }
 
+/// The label of the outline edges a garment is held up by when dressed (garment/README.md:
+/// waistbands); GarmentCode marks the same edges `lower_interface`.
+inline const std::string& waist_label() {
+    static const std::string label = "waist";
+    return label;
+}
+
+/// The waist edges of FreeSewing's trouser designs, from the centre waist to the side: the
+/// edges dressing holds at their height (a waistband) where nothing is sewn to them.
+inline const std::vector<NamedLabelRule>& freesewing_label_rules() {
+    static const std::vector<NamedLabelRule> rules = {
+        {"titan", waist_label(), {"front", "styleWaistIn", "styleWaistOut", ""}},
+        {"titan", waist_label(), {"back", "styleWaistIn", "styleWaistOut", ""}},
+    };
+    return rules;
+}
+
 /// The seams FreeSewing's designs imply (freesewing_seam_rules) for a pattern imported from
 /// FreeSewing; a rule whose chains are not all found on this draft is named in `skipped`.
 inline std::vector<SeamSpec> freesewing_seams(const Pattern& p,

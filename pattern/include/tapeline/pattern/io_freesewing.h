@@ -330,6 +330,12 @@ inline Pattern freesewing_from_json(const nlohmann::json& doc, const std::string
         rep.notes.push_back("seam '" + rule + "' not derived: a chain end is not an outline " +
                             "vertex of this draft");
     }
+    skipped.clear();
+    apply_label_rules(pat, freesewing_label_rules(), &skipped);
+    for (const std::string& rule : skipped) {
+        rep.notes.push_back("edge label '" + rule + "' not given: a chain end is not an outline " +
+                            "vertex of this draft");
+    }
     return pat;
 }
 

@@ -106,6 +106,53 @@ inline const Piece* find_design_piece(const Pattern& p, const std::string& name)
     return nullptr;
 }
 
+/// The same, for a pattern that may be changed.
+inline Piece* find_design_piece(Pattern& p, const std::string& name) {
+    return const_cast<Piece*>(find_design_piece(static_cast<const Pattern&>(p), name));
+}
+
+/// A label a design gives the outline chain `chain` of one of its pieces (FreeSewing drafts carry
+/// no edge labels: a trouser's waist is where dressing holds it up, garment/README.md).
+struct NamedLabelRule {
+    std::string design;  ///< design name (Pattern::name starts with it)
+    std::string label;   ///< the label its edges get
+    NamedChain chain;    ///< the piece and the named outline vertices the edges run between
+};
+
+/// Gives the edges of each rule's chain (rules whose design starts p.name) its label, where an
+/// edge has none yet; returns how many edges were labelled. A rule whose chain is not found is
+/// named in `skipped` when given.
+inline std::size_t apply_label_rules(Pattern& p, const std::vector<NamedLabelRule>& rules,
+                                     std::vector<std::string>* skipped = nullptr) {
+    std::size_t labelled = 0;
+    for (const NamedLabelRule& r : rules) {
+        if (p.name.rfind(r.design, 0) != 0) {
+            continue;
+        }
+        const NamedChain& c = r.chain;
+        Piece* piece = find_design_piece(p, c.piece);
+        std::vector<std::size_t> edges;
+        if (piece && piece->points.count(c.from) && piece->points.count(c.to) &&
+            (c.via.empty() || piece->points.count(c.via))) {
+            edges = outline_chain(piece->outline, piece->points.at(c.from), piece->points.at(c.to),
+                                  c.via.empty() ? nullptr : &piece->points.at(c.via));
+        }
+        if (edges.empty()) {
+            if (skipped) {
+                skipped->push_back(r.design + " " + c.piece + " " + r.label);
+            }
+            continue;
+        }
+        for (std::size_t e : edges) {
+            if (piece->outline.edges[e].label.empty()) {
+                piece->outline.edges[e].label = r.label;
+                ++labelled;
+            }
+        }
+    }
+    return labelled;
+}
+
 /// The seams of `rules` for pattern `p` (rules whose design starts p.name, every chain found).
 /// A rule whose chains are not all found is skipped and named in `skipped` when given.
 inline std::vector<SeamSpec> named_seams(const Pattern& p, const std::vector<NamedSeamRule>& rules,
