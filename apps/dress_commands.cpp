@@ -60,6 +60,7 @@ struct DressArgs {
     bool no_untangle = false;
     bool no_relax = false;
     bool no_fold_smoothing = false;
+    bool no_waistband = false;
     bool no_body_points = false;
     int fold_cycles = tg::DressOptions{}.fold_cycles;
     int relax_iterations = tg::RelaxOptions{}.max_iterations;
@@ -152,6 +153,7 @@ void run_dress(const DressArgs& a) {
     o.relax_again_options.friction_from_iteration = a.relax_again_friction;
     o.relax_again_options.release_until_iteration = a.relax_again_releases;
     o.smooth_folds = !a.no_fold_smoothing;
+    o.waistband = !a.no_waistband;
     o.body_points = !a.no_body_points;
     o.fold_cycles = a.fold_cycles;
     o.fold_options.max_rounds = a.fold_rounds;
@@ -379,6 +381,10 @@ void register_dress_commands(CLI::App& app) {
                   "Hold the cloth against the body's distance grid only in the static solve "
                   "(default: above every body vertex too, so that a bump narrower than the "
                   "cloth's edges cannot poke through it)");
+    cmd->add_flag("--no-waistband", a->no_waistband,
+                  "Let the open waist of skirts and trousers slide (default: the edges the "
+                  "pattern labels as its waist are held at their height, as a waistband holds "
+                  "them)");
     cmd->add_flag("--no-fold-smoothing", a->no_fold_smoothing,
                   "Keep cloth folded over itself as the drape left it (default: flatten each "
                   "fold-over and solve again)");

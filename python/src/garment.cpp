@@ -229,7 +229,11 @@ void bind_garment(py::module_& parent) {
         .def_readwrite("fold_cycles", &tgm::DressOptions::fold_cycles,
                        cxx_doc("DressOptions.fold_cycles"))
         .def_readwrite("sdf_cell_mm", &tgm::DressOptions::sdf_cell_mm,
-                       cxx_doc("DressOptions.sdf_cell_mm"));
+                       cxx_doc("DressOptions.sdf_cell_mm"))
+        .def_readwrite("waistband", &tgm::DressOptions::waistband,
+                       cxx_doc("DressOptions.waistband"))
+        .def_readwrite("waistband_sag_mm", &tgm::DressOptions::waistband_sag_mm,
+                       cxx_doc("DressOptions.waistband_sag_mm"));
     const tm::BodyOptions body_defaults;
     m.def(
         "dress",
@@ -257,7 +261,8 @@ void bind_garment(py::module_& parent) {
         "the pattern to the body first (`dress --to-body --from`), seed: the grading's; strict: "
         "raise SolverFailure when a quality gate fails; options: a DressOptions (None: the "
         "defaults). Further keyword arguments set its fields (resolution_mm, without_pieces, "
-        "sdf_cell_mm, relax, body_points, smooth_folds, fold_cycles, and placement, sewing, "
+        "sdf_cell_mm, relax, body_points, smooth_folds, fold_cycles, waistband, "
+        "waistband_sag_mm, and placement, sewing, "
         "drape, relax_options, relax_again_options, fold_options as PlacementOptions, "
         "SewingOptions, DrapeOptions, RelaxOptions, RelaxOptions, FoldOptions). Returns a dict: "
         "'V' (n, 3) and 'F' (m, 3) "

@@ -68,6 +68,8 @@ class DressOptions:
     fold_options: FoldOptions
     fold_cycles: int
     sdf_cell_mm: float
+    waistband: bool
+    waistband_sag_mm: float
     def __init__(self, **fields: Any) -> None: ...
 
 def dress(

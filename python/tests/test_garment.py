@@ -170,6 +170,8 @@ def test_option_objects():
     # solver's own default never stops early.
     d = garment.DressOptions()
     assert d.relax and d.body_points and d.smooth_folds and d.fold_cycles == 4
+    assert d.waistband and d.waistband_sag_mm == 20
+    assert not garment.DressOptions(waistband=False).waistband
     assert garment.RelaxOptions().settle_iterations == 0 and d.relax_options.settle_iterations == 5
     assert (d.relax_options.friction_from_iteration, d.relax_options.release_until_iteration) == \
         (30, 45)

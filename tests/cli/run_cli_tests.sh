@@ -1109,7 +1109,15 @@ seams = {s["name"]: s for s in r["seams"]}
 for name in ("crotch front", "crotch back", "inseam (mirror)", "outseam (mirror)"):
     assert seams[name]["pairs"] > 0 and seams[name]["closable"], name
 assert r["placement"]["vertices_inside_body"] == 0 and r["placement"]["piece_crossings"] == 0
+# four waist edges (front, back and their mirror images), each a few steps long
+assert r["mesh"]["waistband_vertices"] >= 4 * 3, r["mesh"]["waistband_vertices"]
 PY
+  # The waist is held unless --no-waistband says otherwise (placement only, ungraded).
+  expect_ok "dress: titan with --no-waistband" "$bin" dress "$body" --units dm "$titan" \
+    --resolution 30 --sew-seconds 0 --settle-seconds 0 --no-relax --no-waistband \
+    --out titan.obj --report titan.json
+  python3 -c 'import json, sys; r = json.load(open(sys.argv[1])); assert r["mesh"]["waistband_vertices"] == 0' \
+    titan.json && ok "dress: --no-waistband holds no vertex" || fail "dress: --no-waistband"
 fi
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
 expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units dm "$gc" --out x.obj \

@@ -5,6 +5,7 @@
 #include <tapeline/garment/collider.h>
 #include <tapeline/garment/crossings.h>
 #include <tapeline/garment/drape_solver.h>
+#include <tapeline/garment/waistband.h>
 
 #include <tapeline_test/expect.h>
 
@@ -86,6 +87,15 @@ ClothModel v_strip(double length, double span, double cell, int nx, int ny) {
 FabricParams chain_fabric() {
     FabricParams fabric;
     fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 1e5;
+    fabric.bending_un_m = 0;
+    return fabric;
+}
+
+// A soft fabric without bending (20 N/m stretch, 5 N/m shear): hanging sheets stretch visibly.
+FabricParams soft_fabric() {
+    FabricParams fabric;
+    fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 20;
+    fabric.shear_n_m = 5;
     fabric.bending_un_m = 0;
     return fabric;
 }
@@ -526,6 +536,120 @@ TEST(GarmentDrapeSolver, StitchPullsTwoPiecesTogetherAndAttachmentHolds) {
     EXPECT_LT(solver.positions()[offset + grid_vertex(cells, cells, cells)][1], -100);
 }
 
+// An attachment along an axis holds the vertex in a plane, nothing else: every vertex of a
+// square held along y under gravity with a sideways part does not fall at all, and slides
+// sideways as in free fall (the same discrete parabola as FreeFallMatchesTheDiscreteParabola).
+TEST(GarmentDrapeSolver, AxisAttachmentHoldsTheHeightAndLetsTheClothSlide) {
+    DrapeOptions options;
+    options.damping_per_second = 0;
+    options.self_collision = false;
+    const double gx = 2000, gz = -1000;
+    options.gravity = {gx, -9810, gz};
+    const ClothModel square = horizontal_square(10, 10, 0, 0, 0);
+    DrapeSolver solver(square, FabricParams{}, options);
+    std::vector<Attachment> held;
+    for (std::uint32_t v = 0; v < square.positions.size(); ++v) {
+        held.push_back(Attachment{v, square.positions[v], 0, {0, 1, 0}});
+    }
+    solver.set_attachments(held);
+    for (int f = 0; f < 15; ++f) {
+        solver.step();
+    }
+    const double h = options.frame_seconds / options.substeps, n = 15.0 * options.substeps;
+    for (std::size_t i = 0; i < solver.positions().size(); ++i) {
+        const Vec3& p = solver.positions()[i];
+        const Vec3& p0 = square.positions[i];
+        ASSERT_NEAR(p[1], p0[1], 1e-9) << "vertex " << i;
+        ASSERT_NEAR(p[0] - p0[0], gx * h * h * n * (n + 1) / 2, 1e-9) << "vertex " << i;
+        ASSERT_NEAR(p[2] - p0[2], gz * h * h * n * (n + 1) / 2, 1e-9) << "vertex " << i;
+    }
+}
+
+// The static solve with axis attachments: a sheet hung from its top row, held along y there and
+// pinned at one corner only, rests where the same sheet pinned along its whole top row rests
+// (the row cannot move down, and nothing pulls it sideways).
+TEST(GarmentDrapeSolver, RelaxWithTheTopRowHeldAlongTheVerticalMatchesItPinned) {
+    const int nx = 20, ny = 8;
+    ClothModel sheet = cloth_grid(nx, ny, 10, {0, 0, 0}, {0, -1, 0}, {0, 0, 1});
+    const FabricParams fabric = soft_fabric();
+    DrapeOptions options;
+    options.self_collision = false;
+    ClothModel pinned = sheet;
+    pinned.pinned.assign(sheet.positions.size(), 0);
+    for (int j = 0; j <= ny; ++j) {
+        pinned.pinned[grid_vertex(nx, 0, j)] = 1;
+    }
+    ClothModel held = sheet;
+    held.pinned.assign(sheet.positions.size(), 0);
+    held.pinned[grid_vertex(nx, 0, 0)] = 1;
+    DrapeSolver a(pinned, fabric, options), b(held, fabric, options);
+    std::vector<Attachment> row;
+    for (int j = 1; j <= ny; ++j) {
+        const std::uint32_t v = grid_vertex(nx, 0, j);
+        row.push_back(Attachment{v, sheet.positions[v], 0, {0, 1, 0}});
+    }
+    b.set_attachments(row);
+    for (int f = 0; f < 10; ++f) {
+        a.step();
+        b.step();
+    }
+    const auto ra = a.relax(), rb = b.relax();
+    ASSERT_TRUE(ra.converged);
+    EXPECT_TRUE(rb.converged) << rb.iterations << " iterations, stop " << rb.stop;
+    EXPECT_LT(rb.max_residual_of_weight, 1e-3);
+    double worst = 0;
+    for (std::size_t v = 0; v < sheet.positions.size(); ++v) {
+        worst = std::max(worst, distance(a.positions()[v], b.positions()[v]));
+    }
+    EXPECT_LT(worst, 0.05) << "largest difference, mm";
+    for (const Attachment& at : row) {
+        EXPECT_NEAR(b.positions()[at.vertex][1], at.target[1], 1e-3) << "vertex " << at.vertex;
+    }
+    // It does hang: the bottom row is well below the top.
+    EXPECT_LT(b.positions()[grid_vertex(nx, nx, ny / 2)][1], -nx * 10 - 1);
+}
+
+// The waistband's spring (waistband.h): a sheet hung from its top row, held there along x and z
+// hard and along y by the waistband's compliance for a 20 mm sag, comes to rest with its top row
+// 20 mm lower on average — the whole weight on the springs, by the balance of vertical forces.
+TEST(GarmentDrapeSolver, WaistbandSpringsCarryTheWeightAtTheirSag) {
+    const int nx = 12, ny = 10;
+    const ClothModel sheet = cloth_grid(nx, ny, 10, {0, 0, 0}, {0, -1, 0}, {0, 0, 1});
+    FabricParams fabric;
+    fabric.bending_un_m = 0;
+    DrapeOptions options;
+    options.self_collision = false;
+    DrapeSolver solver(sheet, fabric, options);
+    std::vector<std::uint32_t> top;
+    for (int j = 0; j <= ny; ++j) {
+        top.push_back(grid_vertex(nx, 0, j));
+    }
+    const double sag = 20;
+    const double c = tapeline::garment::waistband_compliance(sheet, fabric, top.size(), sag);
+    // 120 × 100 mm of 180 g/m²: 0.0216 N, over 11 vertices.
+    EXPECT_NEAR(c, 11 * sag / (0.012 * 0.180 * 9.81), 1e-9 * c);
+    std::vector<Attachment> held =
+        tapeline::garment::waistband_attachments(sheet.positions, top, c);
+    for (std::uint32_t v : top) {
+        held.push_back(Attachment{v, sheet.positions[v], 0, {1, 0, 0}});
+        held.push_back(Attachment{v, sheet.positions[v], 0, {0, 0, 1}});
+    }
+    solver.set_attachments(held);
+    for (int f = 0; f < 20; ++f) {
+        solver.step();
+    }
+    const auto rep = solver.relax();
+    EXPECT_TRUE(rep.converged) << rep.iterations << " iterations, stop " << rep.stop;
+    EXPECT_LT(rep.total_residual_of_weight, 1e-4);
+    double sink = 0;
+    for (std::uint32_t v : top) {
+        sink += (sheet.positions[v][1] - solver.positions()[v][1]) / double(top.size());
+        EXPECT_NEAR(solver.positions()[v][0], sheet.positions[v][0], 1e-3);
+        EXPECT_NEAR(solver.positions()[v][2], sheet.positions[v][2], 1e-3);
+    }
+    EXPECT_NEAR(sink, sag, 0.01 * sag);
+}
+
 TEST(GarmentDrapeSolver, RefusesBadInputNamingTheElement) {
     const ClothModel good = horizontal_square(4, 10, 0, 0, 0);
     auto refuse = [&](ClothModel cloth, DrapeOptions options, FabricParams fabric,
@@ -597,6 +721,11 @@ TEST(GarmentDrapeSolver, RefusesBadInputNamingTheElement) {
     EXPECT_NE(message_of([&] {
                   solver.set_attachments({Attachment{25, {0, 0, 0}, 0}});
               }).find("attachment 0: vertex 25 out of range"),
+              std::string::npos);
+    EXPECT_NE(message_of([&] {
+                  solver.set_attachments(
+                      {Attachment{0, {0, 0, 0}, 0}, Attachment{1, {0, 0, 0}, 0, {0, 0.5, 0}}});
+              }).find("attachment 1: axis must be zero or a unit vector, its length is 0.5"),
               std::string::npos);
     EXPECT_NE(message_of([&] {
                   solver.set_stitches({Stitch{1, 2, 0, 0}, Stitch{3, 3, 0, 0}});
@@ -1144,10 +1273,7 @@ TEST(GarmentDrapeSolver, RelaxStopsAsStalledWhereNoStepLowersTheEnergy) {
     for (int j = 0; j <= ny; ++j) {
         sheet.pinned[grid_vertex(nx, 0, j)] = 1;
     }
-    FabricParams fabric;
-    fabric.stretch_warp_n_m = fabric.stretch_weft_n_m = 20;
-    fabric.shear_n_m = 5;
-    fabric.bending_un_m = 0;
+    const FabricParams fabric = soft_fabric();
     DrapeOptions options;
     options.self_collision = false;
     DrapeSolver solver(sheet, fabric, options), beyond(sheet, fabric, options);

@@ -455,7 +455,110 @@ TEST(Dress, TrouserLegsArePairedAndPlacedOnTheirLegs) {
         }
         EXPECT_NEAR(seams["inseam"]->side_a_mm, seams["inseam (mirror)"]->side_a_mm, 1e-6);
         EXPECT_NEAR(seams["outseam"]->side_b_mm, seams["outseam (mirror)"]->side_b_mm, 1e-6);
+        // The waistband holds titan's four open waist edges (straight lines: as many vertices
+        // as the meshing's equal steps of at most the resolution give them), nothing else.
+        std::size_t expected = 0;
+        for (const tp::Piece& piece : titan.pieces) {
+            for (const tp::Edge& e : piece.outline.edges) {
+                if (e.label == tp::waist_label()) {
+                    expected += 2 * (std::size_t(std::ceil(tp::length(e) / o.resolution_mm)) + 1);
+                }
+            }
+        }
+        EXPECT_GT(expected, 0u);
+        EXPECT_EQ(rep.waistband_vertices, expected);
+        tg::DressOptions no_band = o;
+        no_band.waistband = false;
+        EXPECT_EQ(tg::dress(b.body, b.landmarks, titan, no_band).report.waistband_vertices, 0u);
     }
+}
+
+// Which waists the waistband holds: a jumpsuit's is sewn to its bodice (none held); the pencil
+// dress's skirt alone (its bodice left out) has its waist open, the edges GarmentCode labels
+// `lower_interface`: each of them held, their vertices at the top of the placed skirt.
+TEST(Dress, WaistbandHoldsOpenWaistsOnly) {
+    const std::filesystem::path data = TAPELINE_SHARED_DATA_DIR;
+    const auto gc = data / "patterns" / "garmentcode";
+    if (!std::filesystem::exists(gc / "js_mean_all_specification.json") ||
+        !std::filesystem::exists(gc / "dress_pencil_specification.json")) {
+        GTEST_SKIP() << gc << " lacks the jumpsuit or the pencil dress";
+    }
+    const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
+    tg::DressOptions o;
+    o.resolution_mm = 25;
+    o.sewing.sew_seconds = 0;  // placement only
+    o.sewing.settle_seconds = 0;
+    o.sewing.max_extra_seconds = 0;
+    const tp::Pattern jumpsuit =
+        tp::read_pattern_file((gc / "js_mean_all_specification.json").string());
+    EXPECT_EQ(tg::dress(b.body, b.landmarks, jumpsuit, o).report.waistband_vertices, 0u);
+    const tp::Pattern dress =
+        tp::read_pattern_file((gc / "dress_pencil_specification.json").string());
+    EXPECT_EQ(tg::dress(b.body, b.landmarks, dress, o).report.waistband_vertices, 0u);
+    o.without_pieces = {"left_ftorso", "left_btorso", "right_ftorso", "right_btorso"};
+    const tg::DressResult skirt = tg::dress(b.body, b.landmarks, dress, o);
+    std::size_t labelled_edges = 0;
+    double labelled_length = 0;
+    for (const tp::Piece& piece : dress.pieces) {
+        for (const tp::Edge& e : piece.outline.edges) {
+            if (e.label == "lower_interface") {
+                ++labelled_edges;
+                labelled_length += tp::length(e);
+            }
+        }
+    }
+    ASSERT_EQ(labelled_edges, 9u);
+    // At least a vertex per resolution step along them; at most both ends of every edge more.
+    const std::size_t n = skirt.report.waistband_vertices;
+    EXPECT_GE(double(n), labelled_length / o.resolution_mm);
+    EXPECT_LE(double(n), std::ceil(labelled_length / o.resolution_mm) + 2 * labelled_edges);
+    double top = -1e300;
+    for (const auto& x : skirt.placed) {
+        top = std::max(top, x[1]);
+    }
+    // As many vertices of the placed skirt lie within 60 mm of its top as are held: the held
+    // ones are its waist line (curved by a few cm), not edges further down.
+    std::vector<double> heights;
+    for (const auto& x : skirt.placed) {
+        heights.push_back(x[1]);
+    }
+    std::sort(heights.rbegin(), heights.rend());
+    EXPECT_GT(heights[n - 1], top - 60) << "the " << n << "th highest vertex";
+}
+
+// Titan as drafted (size 36) in cotton jersey on the bundled body: without a waistband it slides
+// down over the hips (docs/garment.md); with it (the default) the waist stays where the sewing
+// left it and the trousers hang from it.
+TEST(Dress, WaistbandHoldsUngradedTrousersUp) {
+    const std::filesystem::path file = std::filesystem::path(TAPELINE_SHARED_DATA_DIR) /
+                                       "patterns" / "freesewing" / "titan_cisFemaleAdult36.json";
+    if (!std::filesystem::exists(file)) {
+        GTEST_SKIP() << file << " is absent";
+    }
+    const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
+    tg::DressOptions o;
+    o.resolution_mm = 30;
+    o.drape.threads = 2;
+    const tp::Pattern titan = tp::read_pattern_file(file.string());
+    const tg::DressResult r = tg::dress(b.body, b.landmarks, titan, o);
+    const tg::DressReport& rep = r.report;
+    // The welded waist: a ring round both legs (each piece's waist edge twice), at least a
+    // vertex per resolution step.
+    double waist_length = 0;
+    for (const tp::Piece& piece : titan.pieces) {
+        for (const tp::Edge& e : piece.outline.edges) {
+            waist_length += e.label == tp::waist_label() ? 2 * tp::length(e) : 0;
+        }
+    }
+    EXPECT_GE(double(rep.waistband_vertices), waist_length / o.resolution_mm);
+    EXPECT_LT(rep.quality.top_drop_mm, 50);
+    EXPECT_EQ(rep.quality.vertices_inside_body, 0u);
+    EXPECT_EQ(rep.quality.edges_crossing_body, 0u);
+    EXPECT_LT(rep.quality.stretch_p95, 1.1);
+    // Its openings: the two hems and, far above them, the waist.
+    ASSERT_EQ(rep.openings.size(), 3u);
+    const double waist = rep.openings.back().height_mm;
+    EXPECT_GT(waist, rep.openings.front().height_mm + 600);
 }
 
 // The T-shirt (sleeves drafted once, paired with their mirror) dressed on the bundled body: the

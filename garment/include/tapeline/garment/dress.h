@@ -23,6 +23,7 @@
 #include <tapeline/garment/quality.h>
 #include <tapeline/garment/stitching.h>
 #include <tapeline/garment/unfold.h>
+#include <tapeline/garment/waistband.h>
 #include <tapeline/measurement/body.h>
 #include <tapeline/pattern/meshing.h>
 #include <tapeline/pattern/validate.h>
@@ -132,6 +133,10 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     check_relax_options(o.relax_options, "dress: relax_options");
     check_relax_options(o.relax_again_options, "dress: relax_again_options");
     check_fold_options(o.fold_options, "dress: fold_options");
+    if (!(std::isfinite(o.waistband_sag_mm) && o.waistband_sag_mm > 0)) {
+        throw InvalidInput("dress: waistband_sag_mm must be finite and > 0, got " +
+                           std::to_string(o.waistband_sag_mm));
+    }
     // Pieces left out, with their seams.
     for (const std::string& name : o.without_pieces) {
         if (!pattern::find_piece(pattern, name)) {
@@ -218,6 +223,9 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         }
         rep.pieces.push_back({piece.name, to_string(regions[i]), m.uv.size(), m.triangles.size()});
     }
+    // The open waist edges held at their height during the drape (waistband.h).
+    const std::vector<std::uint32_t> waist =
+        o.waistband ? waistband_vertices(pattern, pm, offsets) : std::vector<std::uint32_t>{};
     rep.cloth_vertices = cloth.positions.size();
     rep.cloth_triangles = cloth.triangles.size();
     rep.placement_seconds = internal::seconds_since(t0);
@@ -389,6 +397,20 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             }
         }
         drape.set_stitches(stitches);
+        {
+            std::vector<std::uint32_t> held;
+            for (std::uint32_t v : waist) {
+                held.push_back(pre.weld_map[v]);
+            }
+            std::sort(held.begin(), held.end());
+            held.erase(std::unique(held.begin(), held.end()), held.end());
+            rep.waistband_vertices = held.size();
+            if (!placement_only && !held.empty()) {
+                drape.set_attachments(waistband_attachments(
+                    welded.positions, held,
+                    waistband_compliance(welded, o.fabric, held.size(), o.waistband_sag_mm)));
+            }
+        }
         const std::size_t n_settle = std::size_t(std::ceil(o.sewing.settle_seconds / frame));
         const std::size_t n_max =
             n_settle + std::size_t(std::ceil(o.sewing.max_extra_seconds / frame));

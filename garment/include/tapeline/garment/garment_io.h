@@ -288,7 +288,8 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
                  {"cloth_triangles", r.cloth_triangles},
                  {"garment_vertices", r.garment_vertices},
                  {"boundary_loops", r.boundary_loops},
-                 {"pairs_welded_before_drape", r.pairs_welded_before_drape}};
+                 {"pairs_welded_before_drape", r.pairs_welded_before_drape},
+                 {"waistband_vertices", r.waistband_vertices}};
     nlohmann::ordered_json openings = nlohmann::ordered_json::array();
     for (const Opening& op : r.openings) {
         nlohmann::ordered_json loop = nlohmann::ordered_json::array();
@@ -373,6 +374,8 @@ inline nlohmann::ordered_json dress_report_json(const DressReport& r, const Fabr
         {"body_points", o.body_points},
         {"fold_smoothing", o.smooth_folds},
         {"fold_cycles", o.fold_cycles},
+        {"waistband", o.waistband},
+        {"waistband_sag_mm", o.waistband_sag_mm},
         {"sdf_cell_mm", o.sdf_cell_mm},
         {"without", o.without_pieces},
         {"damping_per_second", o.drape.damping_per_second},

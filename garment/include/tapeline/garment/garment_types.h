@@ -154,6 +154,15 @@ struct DressOptions {
     /// fold-overs.
     int fold_cycles = 4;
     double sdf_cell_mm = 5;  ///< cell of the body's signed-distance grid
+    /// Hold the open waist edges the pattern labels (`waist`, GarmentCode's `lower_interface`) at
+    /// their height during the drape and the static solve, as a waistband does (waistband.h).
+    bool waistband = true;
+    /// How firmly: the band alone would carry the whole garment's weight this far below the
+    /// height it holds (mm, finite, > 0); a linear spring along the vertical, shared equally by
+    /// the held vertices, so the same at any resolution. The hips carry what they can: a waist
+    /// that sits on them is not pulled up, and the crotch of trousers whose rise is a little
+    /// short for the body pulls the waist down a little instead of stretching.
+    double waistband_sag_mm = 20;
 };
 
 /// Sewing quality of one seam at the end of the drape.
@@ -270,9 +279,11 @@ struct DressReport {
     ///@{
     std::size_t cloth_vertices = 0, cloth_triangles = 0;
     ///@}
-    std::size_t garment_vertices = 0;               ///< after welding
-    std::size_t boundary_loops = 0;                 ///< openings of the welded garment
-    std::size_t pairs_welded_before_drape = 0;      ///< stitch pairs closed by the sewing phase
+    std::size_t garment_vertices = 0;           ///< after welding
+    std::size_t boundary_loops = 0;             ///< openings of the welded garment
+    std::size_t pairs_welded_before_drape = 0;  ///< stitch pairs closed by the sewing phase
+    /// Vertices of the welded cloth the waistband holds at their height (0: none; waistband.h).
+    std::size_t waistband_vertices = 0;
     double body_clearance_mm = 0;                   ///< distance the cloth kept from the body, mm
     std::size_t placement_vertices_inside = 0;      ///< after placement (must be 0)
     std::size_t placement_piece_intersections = 0;  ///< after placement (must be 0)
