@@ -61,6 +61,7 @@ struct DressArgs {
     bool no_relax = false;
     bool no_fold_smoothing = false;
     bool no_waistband = false;
+    double waistband_sag = tg::DressOptions{}.waistband_sag_mm;
     bool no_body_points = false;
     int fold_cycles = tg::DressOptions{}.fold_cycles;
     int relax_iterations = tg::RelaxOptions{}.max_iterations;
@@ -154,6 +155,10 @@ void run_dress(const DressArgs& a) {
     o.relax_again_options.release_until_iteration = a.relax_again_releases;
     o.smooth_folds = !a.no_fold_smoothing;
     o.waistband = !a.no_waistband;
+    if (!(a.waistband_sag > 0)) {  // the parser refuses what is not a finite number
+        throw InvalidInput("--waistband-sag must be a number of mm > 0");
+    }
+    o.waistband_sag_mm = a.waistband_sag;
     o.body_points = !a.no_body_points;
     o.fold_cycles = a.fold_cycles;
     o.fold_options.max_rounds = a.fold_rounds;
@@ -385,6 +390,10 @@ void register_dress_commands(CLI::App& app) {
                   "Let the open waist of skirts and trousers slide (default: the edges the "
                   "pattern labels as its waist are held at their height, as a waistband holds "
                   "them)");
+    cmd->add_option("--waistband-sag", a->waistband_sag,
+                    "How firmly the waistband holds: it alone would carry the garment's weight "
+                    "this far below the height it holds, mm")
+        ->capture_default_str();
     cmd->add_flag("--no-fold-smoothing", a->no_fold_smoothing,
                   "Keep cloth folded over itself as the drape left it (default: flatten each "
                   "fold-over and solve again)");

@@ -8,7 +8,9 @@ an earlier run's --json file, without running anything.
 
 usage: drape_population.py TAPELINE DATA_DIR OUT.md [--bodies bundled|dev|holdout|all]
                            [--patterns NAME ...] [--resolution MM] [--threads N] [--substeps N]
-                           [--json OUT.jsonl] [--no-grading] [--table-only RUN.jsonl]
+                           [--json OUT.jsonl] [--no-grading] [--no-waistband]
+                           [--waistband-sag MM]
+                           [--table-only RUN.jsonl]
   DATA_DIR: ../shared/data (bodies/, bodies/population/, patterns/)
   --bodies: a body file, or bundled: the bundled MakeHuman bodies (nine); dev: mh_pop_000 ... mh_pop_029;
   holdout: mh_pop_030 ... mh_pop_039 (kept out of development).
@@ -74,6 +76,10 @@ def main():
     ap.add_argument("--json")
     ap.add_argument("--no-relax", action="store_true",
                     help="end with the drape's last frame (tapeline dress --no-relax)")
+    ap.add_argument("--waistband-sag", type=float,
+                    help="tapeline dress --waistband-sag MM (default: dress's own)")
+    ap.add_argument("--no-waistband", action="store_true",
+                    help="tapeline dress --no-waistband: open waists not held")
     ap.add_argument("--no-grading", action="store_true",
                     help="dress the FreeSewing drafts as drafted (default: --to-body)")
     ap.add_argument("--table-only", metavar="RUN_JSONL",
@@ -100,6 +106,10 @@ def main():
             cmd += ["--without", w]
         if a.no_relax:
             cmd += ["--no-relax"]
+        if a.no_waistband:
+            cmd += ["--no-waistband"]
+        if a.waistband_sag is not None:
+            cmd += ["--waistband-sag", "%g" % a.waistband_sag]
         if rel.startswith("patterns/freesewing/") and not a.no_grading:
             cmd += to_body_args(a.data)
         t0 = time.time()
@@ -146,7 +156,10 @@ def write_table(rows, a):
                  "build/apps/tapeline", "../shared/data", a.out, a.bodies, a.resolution,
                  a.threads, a.substeps, " ".join(a.patterns),
                  (" --no-grading" if a.no_grading else "") +
-                 (" --no-relax" if a.no_relax else "")), "",
+                 (" --no-relax" if a.no_relax else "") +
+                 (" --no-waistband" if getattr(a, "no_waistband", False) else "") +
+                 (" --waistband-sag %g" % a.waistband_sag
+                  if getattr(a, "waistband_sag", None) is not None else "")), "",
              "Success: %d of %d drapes (%.0f %%); median wall time of the drapes that ran: %s s." %
              (len(ok), len(rows), 100.0 * len(ok) / max(len(rows), 1),
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",

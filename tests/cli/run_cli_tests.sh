@@ -1120,6 +1120,10 @@ PY
     titan.json && ok "dress: --no-waistband holds no vertex" || fail "dress: --no-waistband"
 fi
 expect_fail "dress: missing body" "nope.obj" "$bin" dress nope.obj --units dm "$gc" --out x.obj
+expect_fail "dress: --waistband-sag 0" "waistband-sag must be a number of mm > 0" "$bin" dress "$body" \
+  --units dm "$gc" --out x.obj --waistband-sag 0
+expect_fail "dress: --waistband-sag nan" "waistband-sag: .nan. is not a finite number" "$bin" dress \
+  "$body" --units dm "$gc" --out x.obj --waistband-sag nan
 expect_fail "dress: --fold-cycles 0" "fold-cycles" "$bin" dress "$body" --units dm "$gc" --out x.obj \
   --fold-cycles 0
 expect_fail "dress: --relax-settle -1" "relax-settle" "$bin" dress "$body" --units dm "$gc" --out x.obj \
