@@ -111,6 +111,17 @@ inline Piece* find_design_piece(Pattern& p, const std::string& name) {
     return const_cast<Piece*>(find_design_piece(static_cast<const Pattern&>(p), name));
 }
 
+/// The outline edges of `piece` that chain `c` names (outline_chain between its named points);
+/// empty when the piece is missing, a named point is missing or not an outline vertex.
+inline std::vector<std::size_t> named_chain_edges(const Piece* piece, const NamedChain& c) {
+    if (!piece || !piece->points.count(c.from) || !piece->points.count(c.to) ||
+        (!c.via.empty() && !piece->points.count(c.via))) {
+        return {};
+    }
+    return outline_chain(piece->outline, piece->points.at(c.from), piece->points.at(c.to),
+                         c.via.empty() ? nullptr : &piece->points.at(c.via));
+}
+
 /// A label a design gives the outline chain `chain` of one of its pieces (FreeSewing drafts carry
 /// no edge labels: a trouser's waist is where dressing holds it up, garment/README.md).
 struct NamedLabelRule {
@@ -131,12 +142,7 @@ inline std::size_t apply_label_rules(Pattern& p, const std::vector<NamedLabelRul
         }
         const NamedChain& c = r.chain;
         Piece* piece = find_design_piece(p, c.piece);
-        std::vector<std::size_t> edges;
-        if (piece && piece->points.count(c.from) && piece->points.count(c.to) &&
-            (c.via.empty() || piece->points.count(c.via))) {
-            edges = outline_chain(piece->outline, piece->points.at(c.from), piece->points.at(c.to),
-                                  c.via.empty() ? nullptr : &piece->points.at(c.via));
-        }
+        const std::vector<std::size_t> edges = named_chain_edges(piece, c);
         if (edges.empty()) {
             if (skipped) {
                 skipped->push_back(r.design + " " + c.piece + " " + r.label);
@@ -170,14 +176,7 @@ inline std::vector<SeamSpec> named_seams(const Pattern& p, const std::vector<Nam
         for (int side = 0; side < 2 && ok; ++side) {
             for (const NamedChain& c : side == 0 ? r.a : r.b) {
                 const Piece* piece = find(c.piece);
-                if (!piece || !piece->points.count(c.from) || !piece->points.count(c.to) ||
-                    (!c.via.empty() && !piece->points.count(c.via))) {
-                    ok = false;
-                    break;
-                }
-                const std::vector<std::size_t> edges =
-                    outline_chain(piece->outline, piece->points.at(c.from), piece->points.at(c.to),
-                                  c.via.empty() ? nullptr : &piece->points.at(c.via));
+                const std::vector<std::size_t> edges = named_chain_edges(piece, c);
                 if (edges.empty()) {
                     ok = false;
                     break;
