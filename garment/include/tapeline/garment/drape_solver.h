@@ -220,6 +220,15 @@ public:
 
     /// Current vertex positions, mm, in the order of the model's vertices.
     const std::vector<Vec3>& positions() const { return x_; }
+    /// The cloth's mass, kg: its rest area times the fabric's areal density (the vertices'
+    /// lumped masses summed).
+    double total_mass_kg() const {
+        double m = 0;
+        for (double v : mass_) {
+            m += v;
+        }
+        return m;
+    }
     /// Current vertex velocities, mm/s.
     const std::vector<Vec3>& velocities() const { return v_; }
     /// The cloth as given to the constructor (reset() returns to its positions).

@@ -406,9 +406,12 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
             held.erase(std::unique(held.begin(), held.end()), held.end());
             rep.waistband_vertices = held.size();
             if (!placement_only && !held.empty()) {
+                // The garment's weight under the drape's gravity (mm/s² → m/s²).
+                const double weight_n =
+                    drape.total_mass_kg() * vec3::norm(drape_options.gravity) * 1e-3;
                 drape.set_attachments(waistband_attachments(
                     welded.positions, held,
-                    waistband_compliance(welded, o.fabric, held.size(), o.waistband_sag_mm)));
+                    waistband_compliance(weight_n, held.size(), o.waistband_sag_mm)));
             }
         }
         const std::size_t n_settle = std::size_t(std::ceil(o.sewing.settle_seconds / frame));

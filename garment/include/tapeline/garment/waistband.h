@@ -17,7 +17,6 @@
 #include <tapeline/pattern/pattern.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -66,16 +65,9 @@ inline std::vector<std::uint32_t> waistband_vertices(const pattern::Pattern& p,
 }
 
 /// The XPBD compliance (mm/N) of each of `held` vertices' holds such that together, springs in
-/// parallel, they carry the weight of `cloth` (its rest areas times the fabric's areal density)
-/// `sag_mm` below their height: held·sag / weight.
-inline double waistband_compliance(const ClothModel& cloth, const FabricParams& fabric,
-                                   std::size_t held, double sag_mm) {
-    double area_mm2 = 0;
-    for (const auto& t : cloth.rest_uv) {
-        area_mm2 += 0.5 * std::abs((t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) -
-                                   (t[2][0] - t[0][0]) * (t[1][1] - t[0][1]));
-    }
-    const double weight_n = area_mm2 * 1e-6 * fabric.density_g_m2 * 1e-3 * 9.81;
+/// parallel, they carry a garment weighing `weight_n` (N) `sag_mm` below their height:
+/// held·sag / weight (0 for a weightless garment: hard holds).
+inline double waistband_compliance(double weight_n, std::size_t held, double sag_mm) {
     return weight_n > 0 ? double(held) * sag_mm / weight_n : 0.0;
 }
 
