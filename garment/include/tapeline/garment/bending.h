@@ -18,7 +18,10 @@
 //    ½·B·κ²·area for a bend in any direction (Σ_k cos⁴(ψ − 60°k) = 9/8 and the heights work out
 //    to exactly one area; tests/garment/test_fabric.cpp checks it);
 //  - grids of right triangles: exact for bends along the grid lines; a bend along a diagonal
-//    is stiffer (≈ 1.5×), since both legs and one diagonal see it.
+//    is stiffer (≈ 1.5×), since both legs and one diagonal see it. With alternating diagonals
+//    the cylinder is exact but a loaded strip is not: each hinge's wings are every other vertex
+//    of the next grid line, and the strip sags through the zigzag between them (17 % beyond its
+//    beam; fabric_tests.h meshes its cantilever strip near-equilateral for that reason).
 // The weight |e|²/A_e is dimensionless, so the energy per area does not depend on the edge
 // length: the same fabric bends the same at 20, 10 or 5 mm on meshes of the same shape.
 // ARCSim (Narain et al. 2012) uses E_e = k_e·|e|²·θ²/(8·A_e); the same cylinder argument gives
