@@ -68,7 +68,7 @@ double discrete_beam_tip_angle(double length, int n, double c3) {
 // the beam of its six segments, computed above independently of the solver, within 3 % (it gives
 // +2.4 %). On right triangles with alternating diagonals, where only every other vertex of a
 // column is loaded by the next column's hinges (fabric_tests.h, lattice_strip_model), the same
-// strip sagged +17 % beyond the beam.
+// strip sags +17 % beyond the beam.
 TEST(GarmentFabricTests, ShortCantileverBendsAsItsBeam) {
     const tg::FabricParams f = tg::fabric_from("denim");
     tg::FabricTestOptions o;
@@ -89,8 +89,8 @@ TEST(GarmentFabricTests, ShortCantileverBendsAsItsBeam) {
 // A strip bent across its length does not shear, so its shear rigidity must play no part: the
 // Wang et al. denim over twice its bending length at 5 mm comes to the same tip angle with its own
 // shear rigidity (26.5 N/m) and with the denim class's (3000 N/m), within 1.5 % (42.7° and 42.4°),
-// and near the heavy elastica's 41.5°. On right triangles with alternating diagonals they were
-// 6.5 % apart (46.7° against 43.8°): the strip sagged through the in-plane zigzag those meshes
+// and near the heavy elastica's 41.5°. On right triangles with alternating diagonals they are
+// 6.5 % apart (46.7° against 43.8°): the strip sags through the in-plane zigzag those meshes
 // leave unloaded, the more the softer its shear.
 TEST(GarmentFabricTests, CantileverDoesNotBendThroughShear) {
     tg::FabricParams soft = tg::fabric_from("11oz-black-denim");
@@ -112,8 +112,8 @@ TEST(GarmentFabricTests, CantileverDoesNotBendThroughShear) {
 // Over twice its bending length the strip's tip must come to the heavy elastica's 41.49° from
 // above as the strip gets more segments, as the discrete elastica does (its error in C is
 // negative and shrinks with the segments): cotton jersey (C = 10.4 mm) at 10, 5 and 2.5 mm gives
-// 45.1°, 42.9°, 42.0°. With a table under the strip whose clearance reached the strip's first
-// edge at the clamp it gave 42.5°, 40.8°, 40.8°: below the elastica and not converging.
+// 45.1°, 42.9°, 42.0°. With a table under the strip, whose clearance reaches the strip's first
+// edge at the clamp, it gives 42.5°, 40.8°, 40.8°: below the elastica and not converging.
 TEST(GarmentFabricTests, CantileverConvergesToTheElasticaFromTheDiscreteSide) {
     const tg::FabricParams f = tg::fabric_from("cotton_jersey");
     const double overhang = 2 * std::cbrt(f.bending_un_m / (f.density_g_m2 * 9.81e-6));

@@ -133,7 +133,7 @@ inline ClothModel strip_model(int nx, int ny, double cell_x, double cell_z, doub
 // offset by half a row with the strip's two edges added; consecutive columns zipped in z. Every
 // vertex of a column is then the wing of the one edge of the next column it faces, so a bend
 // across the strip loads the whole width. On right triangles with alternating diagonals only
-// every other vertex of a column is a wing of the next column's edges, and the strip sagged
+// every other vertex of a column is a wing of the next column's edges, and the strip sags
 // through the zigzag that leaves: a short strip 17 % beyond the beam of its segments (this mesh:
 // 2.4 %), and over twice its bending length a tip 6.5 % lower with a shear rigidity of 26.5 N/m
 // than with 3000 (this mesh: 0.7 %; tests/garment/test_fabric_tests.cpp). `columns` receives each
@@ -317,7 +317,7 @@ inline double cantilever_tip_angle(const FabricParams& fabric, bool weft, double
     // No collider: the strip on the table is pinned, and beyond the edge it never comes back
     // over the table on its way to 41.5°. A table under the strip's mid-surface keeps the cloth
     // a clearance (the fabric's thickness) from its edge, and bending down at the clamp brings
-    // the strip's first edge within that of the corner at once: the edge contact then pushed it
+    // the strip's first edge within that of the corner at once: the edge contact then pushes it
     // up, a rounded edge instead of Peirce's clamp (cotton jersey over 2C at 5 mm: tip 40.8°
     // with a table, 42.9° without, 42.8° from the static solve of the strip's own energies;
     // tests/garment/test_fabric_tests.cpp).
