@@ -10,7 +10,10 @@
 #include <tapeline_test/fabric_records.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -185,6 +188,53 @@ TEST(GarmentFabricTests, CusickOrdersFabricsByBendingLength) {
     EXPECT_GT(silk.drape_coefficient, 0);
     EXPECT_GE(shirting.nodes, 3);
     EXPECT_TRUE(shirting.settled);
+}
+
+// The cloth leaving the Cusick clamp turns down at the clamp's edge whatever the fabric's
+// thickness (the solver's clearance to the pedestal): a limp cloth 0.3 and 3 mm thick, the
+// first edges out of the clamp descend alike (mean sine of their angle below the horizontal
+// within 0.05) and steeply (above 0.6). A pedestal rim under the clamp's edge fails both: its
+// clearance props up the thick cloth's first edges (0.21 against 0.67 at 20 mm).
+TEST(GarmentFabricTests, CusickClothTurnsDownAtTheClampsEdge) {
+    tg::FabricTestOptions o;
+    o.resolution_mm = 20;
+    o.max_seconds = 3;
+    auto first_edges_descent = [&](double thickness_mm) {
+        tg::FabricParams limp = tg::fabric_from("silk_charmeuse");
+        limp.thickness_mm = thickness_mm;
+        limp.bending_un_m *= 0.1;
+        const tg::CusickResult r = tg::cusick_test(limp, o);
+        // Pinned: still at the clamp's height inside the clamp's radius.
+        std::vector<char> pinned(r.positions.size(), 0);
+        for (std::size_t v = 0; v < r.positions.size(); ++v) {
+            const auto& p = r.positions[v];
+            pinned[v] = std::abs(p[1] - thickness_mm) < 1e-9 &&
+                        std::hypot(p[0], p[2]) <= r.pedestal_radius_mm + 1e-6;
+        }
+        double sum = 0;
+        int edges = 0;
+        for (const auto& t : r.triangles) {
+            for (int k = 0; k < 3; ++k) {
+                std::uint32_t a = t[k], b = t[(k + 1) % 3];
+                if (pinned[a] == pinned[b]) {
+                    continue;
+                }
+                if (pinned[b]) {
+                    std::swap(a, b);
+                }
+                const auto& p = r.positions[a];
+                const auto& q = r.positions[b];
+                sum += (p[1] - q[1]) / std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+                ++edges;
+            }
+        }
+        EXPECT_GT(edges, 50);
+        return edges > 0 ? sum / edges : 0.0;
+    };
+    const double thin = first_edges_descent(0.3), thick = first_edges_descent(3);
+    EXPECT_GT(thin, 0.6);
+    EXPECT_GT(thick, 0.6);
+    EXPECT_NEAR(thick, thin, 0.05);
 }
 
 TEST(GarmentFabricTests, RefusesBadOptions) {
