@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Virtual fabric tests (issue 20) for every library fabric: the Peirce cantilever at 20, 10 and
 # 5 mm, the tensile strip and the bias extension at 5 mm, the Cusick drape test at 20 mm and from
-# three perturbed starts at 10 mm (at 5 mm, about four minutes a run, for jersey, shirting and
+# three perturbed starts at 10 mm (at 5 mm, one to three minutes a run, for jersey, shirting and
 # denim only). Writes one report per run to docs/fabric/runs/ (a run whose report is there is
 # not run again: delete the directory for a fresh run), pictures to docs/fabric/, and prints the
 # Markdown tables of docs/fabric.md (target, simulated, error %).
