@@ -82,6 +82,7 @@ struct TestArgs {
     double perturbation = 0;
     int repeats = 1;
     int threads = 1;
+    bool no_static_solve = false;
 };
 
 void run_test(const TestArgs& a) {
@@ -104,6 +105,7 @@ void run_test(const TestArgs& a) {
     o.resolution_mm = a.resolution;
     o.perturbation_mm = a.perturbation;
     o.threads = a.threads;
+    o.static_solve = !a.no_static_solve;
     nlohmann::ordered_json j;
     j["fabric"] = fabric.params.name;
     j["test"] = a.test;
@@ -181,7 +183,9 @@ void run_test(const TestArgs& a) {
         std::vector<double> dcs;
         std::vector<int> nodes;
         tg::CusickResult first;
-        bool settled = true;
+        bool settled = true, equilibrium = true;
+        int relax_iterations = 0;
+        double residual = 0;
         double seconds = 0;
         for (int k = 0; k < a.repeats; ++k) {
             o.seed = static_cast<std::uint32_t>(k + 1);
@@ -189,6 +193,9 @@ void run_test(const TestArgs& a) {
             dcs.push_back(100 * r.drape_coefficient);
             nodes.push_back(r.nodes);
             settled = settled && r.settled;
+            equilibrium = equilibrium && o.static_solve && r.relax.converged;
+            relax_iterations = std::max(relax_iterations, r.relax.iterations);
+            residual = std::max(residual, r.relax.max_residual_of_weight);
             seconds += r.seconds;
             if (k == 0) {
                 first = std::move(r);
@@ -216,6 +223,10 @@ void run_test(const TestArgs& a) {
         j["substeps"] = first.substeps;
         j["frames"] = first.frames;
         j["settled"] = settled;
+        j["static_solve"] = !a.no_static_solve;
+        j["equilibrium"] = equilibrium;
+        j["relax_iterations_max"] = relax_iterations;
+        j["relax_max_residual_of_weight"] = residual;
         j["seconds"] = seconds;
         std::cout << p.name << " cusick: DC " << fmt("%.1f", mean) << " % (" << fmt("%.1f", lo)
                   << " to " << fmt("%.1f", hi) << " over " << a.repeats << " run(s)), nodes";
@@ -223,7 +234,8 @@ void run_test(const TestArgs& a) {
             std::cout << ' ' << n;
         }
         std::cout << ", bending length " << fmt("%.1f", c) << " mm"
-                  << (settled ? "" : ", NOT at rest") << '\n';
+                  << (settled ? "" : ", NOT at rest")
+                  << (equilibrium || !o.static_solve ? "" : ", static solve NOT converged") << '\n';
         if (!a.picture.empty()) {
             ppmm = 2;
             picture = tg::cusick_picture(first, p.name, ppmm);
@@ -290,6 +302,8 @@ void register_fabric_commands(CLI::App& app) {
     test->add_option("--repeats", ta->repeats, "Cusick: runs with seeds 1..N")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
+    test->add_flag("--no-static-solve", ta->no_static_solve,
+                   "Cusick: the sub-stepped drape's rest, without the Newton static solve");
     test->add_option("--threads", ta->threads, "Solver threads (0: all cores)")
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();
