@@ -101,7 +101,9 @@ def main():
             j["target_bias_extension_pct"]))
     print("\n### Cusick drape test: DC % (nodes)\n")
     print("10 mm: mean of three starts perturbed by ±0.5 mm (min–max; nodes of each). Spreads in "
-          "percentage points: over the three starts at 10 mm, and between resolutions.\n")
+          "percentage points: over the three starts at 10 mm, and between resolutions. † marks a "
+          "run whose static solve (or one of whose three) stopped at its iteration limit before "
+          "its 0.001 mm tolerance.\n")
     print("| fabric | bending length mm | 20 mm | 10 mm | 5 mm | starts pp | 10 vs 5 mm pp "
           "| 20 vs 10 mm pp |")
     print("|---|---:|---:|---:|---:|---:|---:|---:|")
@@ -110,19 +112,22 @@ def main():
         j20, j10, j5 = (r.get((f, "cusick", x)) for x in ("20", "10", "5"))
         if not (j20 and j10):
             continue
+        def dagger(j):
+            return "" if j.get("equilibrium", True) else " †"
         c5 = "–"
         if j5:
-            c5 = "%.1f (%s)" % (j5["drape_coefficient_pct"], j5["nodes"][0])
+            c5 = "%.1f (%s)%s" % (j5["drape_coefficient_pct"], j5["nodes"][0], dagger(j5))
         cs.append(j10["bending_length_mm"])
         dc20.append(j20["drape_coefficient_pct"])
         dc10.append(j10["drape_coefficient_pct"])
         starts = j10["drape_coefficient_max_pct"] - j10["drape_coefficient_min_pct"]
         d5 = abs(j5["drape_coefficient_pct"] - j10["drape_coefficient_pct"]) if j5 else None
         d20 = abs(j20["drape_coefficient_pct"] - j10["drape_coefficient_pct"])
-        print("| %s | %.1f | %.1f (%s) | %.1f (%.1f–%.1f; %s) | %s | %.1f%s | %s | %.1f%s |" % (
+        print("| %s | %.1f | %.1f (%s)%s | %.1f (%.1f–%.1f; %s)%s | %s | %.1f%s | %s | %.1f%s |" % (
             f, j10["bending_length_mm"], j20["drape_coefficient_pct"], j20["nodes"][0],
-            j10["drape_coefficient_pct"], j10["drape_coefficient_min_pct"],
-            j10["drape_coefficient_max_pct"], ",".join(str(n) for n in j10["nodes"]), c5,
+            dagger(j20), j10["drape_coefficient_pct"], j10["drape_coefficient_min_pct"],
+            j10["drape_coefficient_max_pct"], ",".join(str(n) for n in j10["nodes"]), dagger(j10),
+            c5,
             starts, mark(starts, 2), "–" if d5 is None else "%.1f%s" % (d5, mark(d5, 2)),
             d20, mark(d20, 2)))
     if len(cs) > 2:
