@@ -437,6 +437,72 @@ holder.execute("BEGIN EXCLUSIVE")
 holder.execute("ROLLBACK")
 holder.close()
 
+# --- whole bodies measured: the measuring code end to end (under the sanitizers, the stage's
+# check of it: landmarks, sections, tapes, self-checks, hole filling) -----------------------------
+
+
+def holed_body(src, dst, low=0.002, high=0.005):
+    """Writes the OBJ body SRC without its faces in the lowest LOW and the highest HIGH of its
+    height (soles and crown cut open, as scans have them); returns the number of faces cut."""
+    points, faces = [], []
+    for line in open(src):
+        t = line.split()
+        if t and t[0] == "v":
+            points.append([float(x) for x in t[1:4]])
+        elif t and t[0] == "f":
+            faces.append([int(x.split("/")[0]) for x in t[1:]])
+    ys = [p[1] for p in points]
+    y0, y1 = min(ys), max(ys)
+    lo, hi = y0 + low * (y1 - y0), y1 - high * (y1 - y0)
+    kept = [f for f in faces if not all(points[i - 1][1] < lo or points[i - 1][1] > hi
+                                        for i in f)]
+    with open(dst, "w") as out:
+        out.writelines("v %.9g %.9g %.9g\n" % tuple(p) for p in points)
+        out.writelines("f %s\n" % " ".join(map(str, f)) for f in kept)
+    return len(faces) - len(kept)
+
+
+bundled_body = os.path.join(data, "bodies", "mh_female_average.obj")
+holed = os.path.join(gen, "mh_female_average_holes.obj")
+faces_cut = holed_body(bundled_body, holed)
+body_runs = [("OBJ body", bundled_body, 0), ("PLY body, flat chest",
+                                             os.path.join(data, "bodies", "mh_thin_flat_chest.ply"),
+                                             0), ("body with holes at soles and crown", holed, 3)]
+
+
+measured = {}
+
+
+def measure_body(run_index):
+    name, path, least_holes = body_runs[run_index]
+    (rc, err), out = case("measure " + name, ["measure", path, "--units", "dm", "--out",
+                                              "{out}/m.json"], None, allow_success=True)
+    if rc != 0:
+        record_failure("case measure " + name, "exit %s: %s" % (rc, err.strip()[-300:]))
+        return
+    m = json.load(open(os.path.join(out, "m.json")))
+    holes = m["report"]["holes"]
+    if len(m["measurements"]) < 50 or m["missing"] or m["report"]["landmarks_missing"] or \
+            len(holes) < least_holes:
+        record_failure("case measure " + name,
+                       "%d measurements, missing %s, %d landmarks missing, %d holes filled"
+                       % (len(m["measurements"]), m["missing"],
+                          m["report"]["landmarks_missing"], len(holes)))
+    measured[path] = {x["name"]: x["value_mm"] for x in m["measurements"]}
+
+
+if faces_cut < 20:
+    record_failure("case body with holes", "only %d faces cut" % faces_cut)
+with ThreadPoolExecutor(max_workers=2) as pool:
+    list(pool.map(measure_body, range(len(body_runs))))
+# The holes lie far from the torso's tapes: its girths are the closed body's.
+if bundled_body in measured and holed in measured:
+    for girth in ("bust_girth", "waist_girth", "hip_girth"):
+        a, b = measured[bundled_body].get(girth), measured[holed].get(girth)
+        if a is None or b is None or abs(a - b) > 1:
+            record_failure("case body with holes", "%s %s mm closed, %s mm with holes"
+                           % (girth, a, b))
+
 # --- summary -------------------------------------------------------------------------------------
 results["corpus_files"] = len(inputs)
 results["commands"] = len(commands)
