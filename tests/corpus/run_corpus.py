@@ -214,14 +214,19 @@ no_leak_scan = None
 if sanitized:
     no_leak_scan = dict(os.environ)
     no_leak_scan["ASAN_OPTIONS"] += ":detect_leaks=0"
-# The distance methods other than the default read their input as it does and differ only once a
-# mesh is read: under the sanitizers they are swept over the mesh inputs only (the unsanitized
-# sweep runs them on every input).
+# The commands of a family read their input with the same reader and differ only once it is
+# read: under the sanitizers each family's other commands are swept over the inputs of its own
+# format only, and its first command over every input (the unsanitized sweep runs every command on
+# every input).
 MESH_SUFFIXES = (".off", ".obj", ".ply", ".stl")
-ALTERNATE_METHODS = ("distances heat", "distances gcf-window", "distances dijkstra")
+FAMILIES = [(MESH_SUFFIXES, ("distances exact-mmp", "distances heat", "distances gcf-window",
+                             "distances dijkstra", "path", "measure", "dress (body)")),
+            ((".json",), ("pattern show", "pattern export", "pattern import",
+                          "dress (pattern)"))]
 for c, (cname, template) in enumerate(commands.items()):
     for i, (iname, path) in enumerate(inputs.items()):
-        if sanitized and cname in ALTERNATE_METHODS and not path.lower().endswith(MESH_SUFFIXES):
+        if sanitized and any(cname in names and not path.lower().endswith(suffixes)
+                             for suffixes, names in FAMILIES):
             continue
         argv_base = [a.replace("{in}", path) for a in template]
         env = no_leak_scan if (c + i) % 4 != 0 else None
