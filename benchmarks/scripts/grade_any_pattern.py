@@ -32,6 +32,25 @@ PATTERNS = {
 }
 
 
+def edge_length(edge):
+    """Length of a tapeline pattern JSON outline edge (a line, or a cubic sampled 2000 times)."""
+    if edge["type"] == "line":
+        (ax, ay), (bx, by) = edge["a"], edge["b"]
+        return math.hypot(bx - ax, by - ay)
+    if edge["type"] != "cubic":
+        sys.exit("grade_any_pattern.py: an outline edge of type %r" % edge["type"])
+    (x0, y0), (x1, y1), (x2, y2), (x3, y3) = edge["p"]
+    total, px, py = 0.0, x0, y0
+    for k in range(1, 2001):
+        t = k / 2000.0
+        u = 1 - t
+        x = u * u * u * x0 + 3 * u * u * t * x1 + 3 * u * t * t * x2 + t * t * t * x3
+        y = u * u * u * y0 + 3 * u * u * t * y1 + 3 * u * t * t * y2 + t * t * t * y3
+        total += math.hypot(x - px, y - py)
+        px, py = x, y
+    return total
+
+
 def girth_check(graded, bindings, base, target):
     """Largest |graded span sum - (target + ease * target / base)| over the bindings, mm."""
     pieces = {p["name"]: p for p in graded["pieces"]}
@@ -40,6 +59,10 @@ def girth_check(graded, bindings, base, target):
         m = b["measurement"]
         got = 0.0
         for f in b["features"]:
+            if f.get("edges"):  # a length along outline edges
+                outline = pieces[f["piece"]]["outline"]
+                got += f["count"] * sum(edge_length(outline[e]) for e in f["edges"])
+                continue
             pts = pieces[f["piece"]]["points"]
             (ax, ay), (bx, by) = pts[f["from_point"]], pts[f["to_point"]]
             got += f["count"] * math.hypot(bx - ax, by - ay)

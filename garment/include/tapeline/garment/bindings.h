@@ -32,6 +32,18 @@
 // sits on the shoulder point. A sleeve goes round one arm: a piece counts once (twice when cut on
 // the fold), whatever its cut count (its copies dress the other arm).
 //
+// Trouser legs hang from the waist as dressing lays them (the top of the legs at the body's waist,
+// a gap above it): the waist binds the edges the pattern labels as its waist (FreeSewing's
+// trousers on import, GarmentCode's `lower_interface`); the high hip and the hip cut every leg
+// piece above its crotch (its `fork` point, else the lowest point of its seams to the other leg,
+// else the body's crotch), a piece sewn to its own mirror image (a one-leg draft) counting twice;
+// the thigh and the knee cut the pieces of one leg below the crotch, once each; their levels are
+// the declared waist-to-hip and waist-to-knee lengths below the top of the legs, else the body's.
+// The waist to the knee (and, for a draft that declares it, the waist to the floor, to the hem)
+// runs down each piece of that leg through the middle of its knee span, when the legs start at the
+// waist (not sewn below a bodice that binds it); the cross seam follows the centre seams of that
+// leg's front and back.
+//
 // Two girths are the garment's at the underarm, as garments are specified: the upper arm is the
 // sleeve's width at its underarm points (the top of its underarm seam, where the cap begins), and
 // a chest level above the bottom of the armhole (the top of the side seams), or less than
@@ -44,6 +56,7 @@
 
 #include <tapeline/core/errors.h>
 #include <tapeline/garment/placement.h>
+#include <tapeline/garment/waistband.h>
 #include <tapeline/measurement/measure.h>
 #include <tapeline/pattern/pattern.h>
 #include <tapeline/sizes/catalogue.h>
@@ -207,6 +220,410 @@ inline bool trunk_region(Region r) {
            r == Region::skirt_back;
 }
 
+/// The bindings of trouser legs (garment/README.md, "Bindings found on the body"): the waist on
+/// the edges labelled as the waist, the high hip and hip across every leg piece above its crotch,
+/// the thigh and knee round one leg below it, the waist to the knee (and, for a draft that
+/// declares it, to the floor) down each leg piece of that leg, the cross seam along the centre
+/// seams. Girths and lengths already bound (on a bodice or skirt) are left alone.
+inline void bind_trouser_legs(pattern::Pattern& base,
+                              const std::vector<std::optional<Region>>& placed,
+                              const std::vector<Region>& regions, const LayoutHeights& heights,
+                              const std::vector<PieceLayout>& outline_layout,
+                              const measurement::MeasurementSet& measurements,
+                              const measurement::LandmarkSet& landmarks,
+                              std::vector<pattern::MeasurementBinding>& bindings,
+                              std::vector<std::string>& notes) {
+    std::vector<std::size_t> legs;
+    for (std::size_t i = 0; i < base.pieces.size(); ++i) {
+        if (placed[i] && is_leg(*placed[i])) {
+            legs.push_back(i);
+        }
+    }
+    if (legs.empty()) {
+        return;
+    }
+    const auto mm = [](double v) { return std::to_string(int(std::lround(v))); };
+    // Legs drafted once and sewn to their mirror image at the crotch (pattern::
+    // freesewing_mirror_seam_rules): those centre edges are sewn, and the piece goes round the
+    // body twice above the crotch (once on each leg).
+    std::set<std::string> paired;
+    std::set<std::pair<std::string, std::size_t>> closed, centre;
+    for (const pattern::NamedSeamRule& rule : pattern::freesewing_mirror_seam_rules()) {
+        if (base.name.rfind(rule.design, 0) != 0) {
+            continue;
+        }
+        for (const pattern::NamedChain& c : rule.a) {
+            const pattern::Piece* piece = pattern::find_design_piece(base, c.piece);
+            for (const std::size_t e : pattern::named_chain_edges(piece, c)) {
+                closed.insert({piece->name, e});
+                centre.insert({piece->name, e});
+                paired.insert(piece->name);
+            }
+        }
+    }
+    const auto leg_of = [&](const std::string& name) -> std::optional<Region> {
+        for (const std::size_t i : legs) {
+            if (base.pieces[i].name == name) {
+                return placed[i];
+            }
+        }
+        return std::nullopt;
+    };
+    for (const std::size_t i : legs) {
+        const pattern::Piece& piece = base.pieces[i];
+        if (piece.fold && piece.fold->edge) {
+            closed.insert({piece.name, *piece.fold->edge});
+        }
+    }
+    for (const pattern::Seam& seam : base.seams) {
+        const auto ra = leg_of(seam.a.piece), rb = leg_of(seam.b.piece);
+        if (!ra || !rb) {
+            continue;
+        }
+        // A seam joining the two legs (left to right) is a centre seam.
+        const bool left_a = *ra == Region::leg_left_front || *ra == Region::leg_left_back;
+        const bool left_b = *rb == Region::leg_left_front || *rb == Region::leg_left_back;
+        for (const pattern::EdgeRange* r : {&seam.a, &seam.b}) {
+            const std::size_t n = pattern::find_piece(base, r->piece)->outline.edges.size();
+            for (std::size_t k = 0; k < r->count && n > 0; ++k) {
+                closed.insert({r->piece, (r->first_edge + k) % n});
+                if (left_a != left_b) {
+                    centre.insert({r->piece, (r->first_edge + k) % n});
+                }
+            }
+        }
+    }
+    // The top of the legs (where the waist is placed) and each leg's crotch: its fork point's
+    // height, else the lowest point of its centre seam (sewn to the other leg), else the body's
+    // crotch.
+    double top = -1e300;
+    for (const std::size_t i : legs) {
+        for (const double h : outline_layout[i].h) {
+            top = std::max(top, h);
+        }
+    }
+    const std::optional<Vec3> body_crotch = landmarks.point("crotch");
+    std::vector<std::optional<double>> crotch(base.pieces.size());
+    for (const std::size_t i : legs) {
+        const pattern::Piece& piece = base.pieces[i];
+        const auto fork = piece.points.find("fork");
+        if (fork != piece.points.end()) {
+            crotch[i] = layout_height(piece, regions[i], heights, fork->second);
+            continue;
+        }
+        for (std::size_t e = 0; e < piece.outline.edges.size(); ++e) {
+            if (centre.count({piece.name, e})) {
+                for (const pattern::Point2& q :
+                     {pattern::start_point(piece.outline.edges[e].curve),
+                      pattern::end_point(piece.outline.edges[e].curve)}) {
+                    const double h = layout_height(piece, regions[i], heights, q);
+                    crotch[i] = crotch[i] ? std::min(*crotch[i], h) : h;
+                }
+            }
+        }
+        if (!crotch[i] && body_crotch) {
+            crotch[i] = (*body_crotch)[1];
+        }
+    }
+    // One leg for the leg's girths and lengths: the body's left when the pattern has it.
+    bool has_left = false;
+    for (const std::size_t i : legs) {
+        has_left =
+            has_left || *placed[i] == Region::leg_left_front || *placed[i] == Region::leg_left_back;
+    }
+    const auto on_leg = [&](std::size_t i) {
+        const bool left =
+            *placed[i] == Region::leg_left_front || *placed[i] == Region::leg_left_back;
+        return left == has_left;
+    };
+    const auto bound = [&](const std::string& name) {
+        for (const pattern::MeasurementBinding& b : bindings) {
+            if (b.measurement == name) {
+                return true;
+            }
+        }
+        return false;
+    };
+    const auto pattern_name = [&base](const std::string& ours) {
+        const std::string fs = sizes::freesewing_name(ours);
+        return !fs.empty() && base.measurements_used.count(fs) > 0 ? fs : ours;
+    };
+    // The value a binding's ease is taken against: the draft's declared one, else the body's;
+    // nullopt (with a note) when the draft declares others only or the body has none.
+    const auto base_value = [&](const std::string& ours,
+                                const std::string& named) -> std::optional<double> {
+        if (!base.measurements_used.empty() && !base.measurements_used.count(named)) {
+            notes.push_back(ours + " (trouser legs): not bound (pattern '" + base.name +
+                            "' declares the measurements it was drafted for, not this one)");
+            return std::nullopt;
+        }
+        const auto declared = base.measurements_used.find(named);
+        if (declared != base.measurements_used.end()) {
+            return declared->second;
+        }
+        const measurement::Measurement* m = measurements.find(ours);
+        if (!m || m->value <= 0) {
+            notes.push_back(ours + " (trouser legs): not bound (the body has no " + ours + ")");
+            return std::nullopt;
+        }
+        return m->value;
+    };
+    // A declared length from the waist (the legs' top), else the body's distance from its waist.
+    const auto level = [&](const std::string& girth,
+                           const std::string& length) -> std::optional<double> {
+        const std::string named = sizes::freesewing_name(length);
+        for (const std::string& k : {length, named}) {
+            const auto it = base.measurements_used.find(k);
+            if (!k.empty() && it != base.measurements_used.end() && it->second > 0) {
+                return top - it->second;
+            }
+        }
+        const measurement::Measurement* g = measurements.find(girth);
+        if (!g || !g->closed || std::abs(g->plane_normal[1]) < 0.9) {
+            return std::nullopt;
+        }
+        return g->plane_point[1];
+    };
+    const auto finish = [&](pattern::MeasurementBinding& b, const std::string& ours, double value,
+                            double garment, const std::string& pieces, const std::string& at) {
+        const measurement::Measurement* body = measurements.find(ours);
+        if (body && body->value > 0 && garment < kLeastGirthRatio * body->value) {
+            notes.push_back(ours + " (trouser legs): not bound (" + pieces + " come to " +
+                            mm(garment) + " mm round a body of " + mm(body->value) + " mm" + at +
+                            ")");
+            for (const pattern::BoundFeature& f : b.features) {
+                pattern::Piece* piece = pattern::find_piece(base, f.piece);
+                piece->points.erase(f.from_point);
+                piece->points.erase(f.to_point);
+            }
+            return;
+        }
+        b.ease_mm = garment - value;
+        notes.push_back(b.measurement + ": " + pieces + "; garment " + mm(garment) + " mm, " +
+                        "base " + mm(value) + " mm, ease " + mm(b.ease_mm) + " mm" + at);
+        bindings.push_back(std::move(b));
+    };
+    const auto times = [](double c) { return c != 1 ? " ×" + std::to_string(int(c)) : ""; };
+    // Legs sewn below a bodice that holds the waist (a jumpsuit) do not start at the waist: no
+    // length is measured from their top.
+    const bool legs_at_waist = !bound(pattern_name("waist_girth"));
+    // The waist: the edges labelled as the waist (FreeSewing's trousers on import, GarmentCode's
+    // lower_interface), as a tape round the top of the trousers.
+    if (!bound(pattern_name("waist_girth"))) {
+        const std::string ours = "waist_girth", named = pattern_name(ours);
+        pattern::MeasurementBinding b{named, {}, 0};
+        double garment = 0;
+        std::string pieces;
+        for (const std::size_t i : legs) {
+            const pattern::Piece& piece = base.pieces[i];
+            std::vector<std::size_t> edges;
+            double len = 0;
+            for (std::size_t e = 0; e < piece.outline.edges.size(); ++e) {
+                if (is_waistband_label(piece.outline.edges[e].label)) {
+                    edges.push_back(e);
+                    len += pattern::length(piece.outline.edges[e]);
+                }
+            }
+            if (edges.empty()) {
+                continue;
+            }
+            const double count = girth_count(piece, false) * (paired.count(piece.name) ? 2 : 1);
+            garment += count * len;
+            pieces += (pieces.empty() ? "" : ", ") + piece.name + times(count);
+            b.features.push_back({piece.name, edges, {}, {}, count});
+        }
+        if (b.features.empty()) {
+            notes.push_back(ours +
+                            " (trouser legs): not bound (no leg piece has an edge labelled "
+                            "as the waist)");
+        } else if (const std::optional<double> value = base_value(ours, named)) {
+            finish(b, ours, *value, garment, pieces, ", along the edges labelled as the waist");
+        }
+    }
+    // Girths across the legs: round the body above the crotch (every leg piece), round one leg
+    // below it.
+    struct LegGirth {
+        const char* name;
+        const char* length;  ///< the declared length from the waist that gives its level
+        bool round_one_leg;
+    };
+    static const LegGirth leg_girths[] = {{"high_hip_girth", "waist_to_high_hip", false},
+                                          {"hip_girth", "waist_to_hips", false},
+                                          {"thigh_girth", "", true},
+                                          {"knee_girth", "waist_to_knee", true}};
+    std::optional<double> knee_level;
+    for (const LegGirth& lg : leg_girths) {
+        const std::string ours = lg.name, named = pattern_name(ours);
+        if (bound(named)) {
+            continue;
+        }
+        const std::optional<double> y = level(ours, lg.length);
+        if (!y) {
+            notes.push_back(ours + " (trouser legs): not bound (the body has no horizontal " +
+                            ours + ")");
+            continue;
+        }
+        const std::string at = ", " + mm(top - *y) + " mm below the top of the legs";
+        pattern::MeasurementBinding b{named, {}, 0};
+        double garment = 0;
+        std::string pieces, open;
+        for (const std::size_t i : legs) {
+            if (!crotch[i] ||
+                (lg.round_one_leg ? *y >= *crotch[i] || !on_leg(i) : *y <= *crotch[i])) {
+                continue;
+            }
+            pattern::Piece& piece = base.pieces[i];
+            const auto c = outline_crossings(piece, regions[i], heights, *y);
+            if (c.size() < 2) {
+                continue;
+            }
+            const auto [lo, hi] = std::minmax_element(
+                c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
+            for (const Crossing* x : {&*lo, &*hi}) {
+                if (!closed.count({piece.name, x->edge}) && open.empty()) {
+                    open = piece.name + " edge " + std::to_string(x->edge);
+                }
+            }
+            const std::string pa = "girth:" + ours + ":a", pb = "girth:" + ours + ":b";
+            piece.points[pa] = lo->p;
+            piece.points[pb] = hi->p;
+            const double count =
+                lg.round_one_leg ? girth_count(piece, true)
+                                 : girth_count(piece, false) * (paired.count(piece.name) ? 2 : 1);
+            garment += count * std::hypot(hi->p.x - lo->p.x, hi->p.y - lo->p.y);
+            pieces += (pieces.empty() ? "" : ", ") + piece.name + times(count);
+            b.features.push_back({piece.name, {}, pa, pb, count});
+        }
+        const auto drop = [&] {
+            for (const pattern::BoundFeature& f : b.features) {
+                pattern::Piece* piece = pattern::find_piece(base, f.piece);
+                piece->points.erase(f.from_point);
+                piece->points.erase(f.to_point);
+            }
+        };
+        if (b.features.empty()) {
+            notes.push_back(ours + " (trouser legs): not bound (no leg piece reaches it " +
+                            (lg.round_one_leg ? "below" : "above") + " the crotch" + at + ")");
+            continue;
+        }
+        if (!open.empty()) {
+            notes.push_back(ours + " (trouser legs): not bound (" + at.substr(2) + " it crosses " +
+                            open + ", which is sewn to no leg piece)");
+            drop();
+            continue;
+        }
+        const std::optional<double> value = base_value(ours, named);
+        if (!value) {
+            drop();
+            continue;
+        }
+        if (ours == "knee_girth") {
+            knee_level = y;
+        }
+        finish(b, ours, *value, garment, pieces, at);
+    }
+    // Lengths down each piece of one leg, along the vertical line through the middle of the knee
+    // span: from the top to the knee's level, and for a draft that declares its waist-to-floor
+    // length, to the hem.
+    for (const char* length : {"waist_to_knee", "outseam"}) {
+        const std::string ours = length, named = pattern_name(ours);
+        const bool floor = ours == "outseam";
+        if (bound(named) || (floor && !base.measurements_used.count(named))) {
+            continue;
+        }
+        if (!legs_at_waist) {
+            notes.push_back(ours +
+                            " (trouser legs): not bound (the legs are sewn below a bodice "
+                            "that holds the waist: their top is not the waist)");
+            continue;
+        }
+        const std::optional<double> knee =
+            knee_level ? knee_level : level("knee_girth", "waist_to_knee");
+        if (!knee) {
+            notes.push_back(ours + " (trouser legs): not bound (the body has no knee level)");
+            continue;
+        }
+        const std::optional<double> value = base_value(ours, named);
+        if (!value) {
+            continue;
+        }
+        pattern::MeasurementBinding b{named, {}, 0};
+        std::string pieces;
+        for (const std::size_t i : legs) {
+            if (!on_leg(i)) {
+                continue;
+            }
+            pattern::Piece& piece = base.pieces[i];
+            const auto c = outline_crossings(piece, regions[i], heights, *knee);
+            if (c.size() < 2) {
+                continue;
+            }
+            const auto [lo, hi] = std::minmax_element(
+                c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
+            auto v = outline_crossings(piece, regions[i], heights, 0.5 * (lo->s + hi->s), true);
+            if (v.size() < 2) {
+                continue;
+            }
+            std::sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.h < b.h; });
+            const Crossing &bottom = v.front(), &upper = v.back();
+            const double t = (*knee - bottom.h) / (upper.h - bottom.h);
+            const pattern::Point2 at_knee{bottom.p.x + t * (upper.p.x - bottom.p.x),
+                                          bottom.p.y + t * (upper.p.y - bottom.p.y)};
+            const pattern::Point2 end = floor ? bottom.p : at_knee;
+            const std::string pa = "length:" + ours + ":a", pb = "length:" + ours + ":b";
+            piece.points[pa] = upper.p;
+            piece.points[pb] = end;
+            const double len = std::hypot(end.x - upper.p.x, end.y - upper.p.y);
+            pattern::MeasurementBinding one{named, {{piece.name, {}, pa, pb, 1}}, len - *value};
+            bindings.push_back(std::move(one));
+            pieces += (pieces.empty() ? "" : ", ") + piece.name + " " + mm(len) + " mm";
+        }
+        notes.push_back(pieces.empty() ? ours +
+                                             " (trouser legs): not bound (no leg piece holds "
+                                             "the knee's level)"
+                                       : named + ": " + pieces + " (base " + mm(*value) +
+                                             " mm), one per piece");
+    }
+    // The cross seam: the centre seams of one leg's front and back, from the front waist
+    // through the crotch to the back waist.
+    {
+        const std::string ours = "cross_seam", named = pattern_name(ours);
+        pattern::MeasurementBinding b{named, {}, 0};
+        double garment = 0;
+        std::string pieces;
+        for (const std::size_t i : legs) {
+            if (!on_leg(i) || bound(named)) {
+                continue;
+            }
+            const pattern::Piece& piece = base.pieces[i];
+            std::vector<std::size_t> edges;
+            double len = 0;
+            for (std::size_t e = 0; e < piece.outline.edges.size(); ++e) {
+                if (centre.count({piece.name, e})) {
+                    edges.push_back(e);
+                    len += pattern::length(piece.outline.edges[e]);
+                }
+            }
+            if (!edges.empty()) {
+                garment += len;
+                pieces += (pieces.empty() ? "" : ", ") + piece.name;
+                b.features.push_back({piece.name, edges, {}, {}, 1});
+            }
+        }
+        if (!b.features.empty()) {
+            if (const std::optional<double> value = base_value(ours, named)) {
+                b.ease_mm = garment - *value;
+                notes.push_back(named + ": " + pieces + " along the centre seams; garment " +
+                                mm(garment) + " mm, base " + mm(*value) + " mm, ease " +
+                                mm(b.ease_mm) + " mm");
+                bindings.push_back(std::move(b));
+            }
+        } else if (!bound(named)) {
+            notes.push_back(ours + " (trouser legs): not bound (no centre seam joins the legs)");
+        }
+    }
+}
+
 }  // namespace internal
 
 /// Infers the girth and length bindings of `base` laid out on `body` (canonical frame; its
@@ -214,9 +631,9 @@ inline bool trunk_region(Region r) {
 /// A binding is named as the pattern's own measurements name it (FreeSewing's "chest" when the
 /// pattern uses FreeSewing names), else by our name. Girths and lengths the body lacks, that
 /// cut no piece, or that the pattern does not declare, girths whose pieces come to less than
-/// kLeastGirthRatio of the body's, pieces without a body region (bindings, collars, ...) and
-/// trouser legs (no girth of the legs is bound yet) are left out with a note. Throws InvalidInput
-/// when nothing was bound.
+/// kLeastGirthRatio of the body's, and pieces without a body region (bindings, collars, ...) are
+/// left out with a note; trouser legs bind as internal::bind_trouser_legs says. Throws
+/// InvalidInput when nothing was bound.
 inline BindingInference infer_girth_bindings(const measurement::Body& body,
                                              const measurement::LandmarkSet& landmarks,
                                              const measurement::MeasurementSet& measurements,
@@ -230,12 +647,6 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
     for (const pattern::Piece& p : base.pieces) {
         std::string why;
         placed.push_back(piece_region(p, why));
-        if (placed.back() && is_leg(*placed.back())) {
-            // Placement wraps trouser legs round the legs; no girth or length of a leg is bound
-            // to a pattern yet.
-            placed.back().reset();
-            why = "a trouser leg: no girth of the legs is bound yet";
-        }
         if (!placed.back()) {
             out.notes.push_back("piece " + p.name + ": in no girth (no body region: " + why + ")");
             unplaced += (unplaced.empty() ? "" : ", ") + p.name + " (" + why + ")";
@@ -907,12 +1318,15 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                        : bound_name + ": " + pieces + " (" + (own ? "drafted for " : "body ") +
                              std::to_string(int(std::lround(value))) + " mm), one per piece");
     }
+    internal::bind_trouser_legs(base, placed, regions, heights, outline_layout, measurements,
+                                landmarks, bindings, out.notes);
     if (bindings.empty()) {
-        throw InvalidInput("pattern '" + base.name +
-                           "': no girth of the body goes round its torso, skirt or sleeve "
-                           "pieces and no length lies on them, so no binding was found" +
-                           (unplaced.empty() ? std::string() : "; not placed: " + unplaced) +
-                           ": give the bindings (--bindings)");
+        throw InvalidInput(
+            "pattern '" + base.name +
+            "': no girth of the body goes round its torso, skirt, sleeve or "
+            "trouser-leg pieces and no length lies on them, so no binding was found" +
+            (unplaced.empty() ? std::string() : "; not placed: " + unplaced) +
+            ": give the bindings (--bindings)");
     }
     base.bindings = std::move(bindings);
     out.pattern = std::move(base);
