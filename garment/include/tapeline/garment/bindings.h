@@ -384,6 +384,14 @@ inline void bind_trouser_legs(pattern::Pattern& base,
         }
         return g->plane_point[1];
     };
+    // Removes the named points a binding left out added to its pieces.
+    const auto drop_points = [&base](const pattern::MeasurementBinding& b) {
+        for (const pattern::BoundFeature& f : b.features) {
+            pattern::Piece* piece = pattern::find_piece(base, f.piece);
+            piece->points.erase(f.from_point);
+            piece->points.erase(f.to_point);
+        }
+    };
     const auto finish = [&](pattern::MeasurementBinding& b, const std::string& ours, double value,
                             double garment, const std::string& pieces, const std::string& at) {
         const measurement::Measurement* body = measurements.find(ours);
@@ -391,11 +399,7 @@ inline void bind_trouser_legs(pattern::Pattern& base,
             notes.push_back(ours + " (trouser legs): not bound (" + pieces + " come to " +
                             mm(garment) + " mm round a body of " + mm(body->value) + " mm" + at +
                             ")");
-            for (const pattern::BoundFeature& f : b.features) {
-                pattern::Piece* piece = pattern::find_piece(base, f.piece);
-                piece->points.erase(f.from_point);
-                piece->points.erase(f.to_point);
-            }
+            drop_points(b);
             return;
         }
         b.ease_mm = garment - value;
@@ -494,13 +498,6 @@ inline void bind_trouser_legs(pattern::Pattern& base,
             pieces += (pieces.empty() ? "" : ", ") + piece.name + times(count);
             b.features.push_back({piece.name, {}, pa, pb, count});
         }
-        const auto drop = [&] {
-            for (const pattern::BoundFeature& f : b.features) {
-                pattern::Piece* piece = pattern::find_piece(base, f.piece);
-                piece->points.erase(f.from_point);
-                piece->points.erase(f.to_point);
-            }
-        };
         if (b.features.empty()) {
             notes.push_back(ours + " (trouser legs): not bound (no leg piece reaches it " +
                             (lg.round_one_leg ? "below" : "above") + " the crotch" + at + ")");
@@ -509,12 +506,12 @@ inline void bind_trouser_legs(pattern::Pattern& base,
         if (!open.empty()) {
             notes.push_back(ours + " (trouser legs): not bound (" + at.substr(2) + " it crosses " +
                             open + ", which is sewn to no leg piece)");
-            drop();
+            drop_points(b);
             continue;
         }
         const std::optional<double> value = base_value(ours, named);
         if (!value) {
-            drop();
+            drop_points(b);
             continue;
         }
         if (ours == "knee_girth") {
