@@ -48,6 +48,7 @@ struct MeasureArgs {
     std::string vit;
     std::vector<std::string> pictures;
     bool strict = false;
+    bool flat_facets = false;
 };
 
 std::string lower_extension(const std::string& path) {
@@ -101,7 +102,11 @@ void run_measure(const MeasureArgs& a) {
 
     const auto loaded = read_triangle_mesh<MeasureMesh>(a.body);
     const auto t1 = Clock::now();
-    bench::MeasureRun run = bench::measure_mesh(loaded.mesh, body, overrides);
+    bench::MeasureRun run = bench::measure_mesh(loaded.mesh, body, overrides, true, [&] {
+        tm::MeasureOptions o;
+        o.smooth_surface = !a.flat_facets;
+        return o;
+    }());
     tm::BodyMeasurements& r = run.result;
     const auto t2 = Clock::now();
 
@@ -178,6 +183,9 @@ void register_measure_commands(CLI::App& app) {
         ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
     cmd->add_flag("--strict", args->strict,
                   "Exit non-zero when a self-check warns (the JSON's \"warnings\")");
+    cmd->add_flag("--flat-facets", args->flat_facets,
+                  "Take the girths round the mesh's flat facets, not round the smooth surface its "
+                  "vertices and normals stand for (a coarse mesh then measures short)");
     cmd->callback([args] { run_measure(*args); });
 }
 

@@ -20,7 +20,7 @@ namespace tm = tapeline::measurement;
 py::dict measure_arrays(const py::object& V, const py::object& F,
                         const std::optional<std::string>& units, const std::string& up,
                         const std::string& front, const std::string& pose,
-                        const py::object& landmarks, const std::string& name) {
+                        const py::object& landmarks, const std::string& name, bool smooth_surface) {
     const tm::BodyOptions options =
         tm::parse_body_options(name, units.value_or(""), up, front, pose);
     tm::LandmarkOverrides overrides;
@@ -34,7 +34,9 @@ py::dict measure_arrays(const py::object& V, const py::object& F,
     {
         InterruptGuard interrupt_guard;
         py::gil_scoped_release release;
-        run = bench::measure_mesh(mesh->loaded.mesh, options, overrides);
+        tm::MeasureOptions measure;
+        measure.smooth_surface = smooth_surface;
+        run = bench::measure_mesh(mesh->loaded.mesh, options, overrides, true, measure);
     }
     const auto& r = run.result;
     nlohmann::ordered_json j = tm::body_measurements_json(name, r.frame, r.measurements,
@@ -57,17 +59,21 @@ sizes::MeasurementSet measurement_set_of(const py::handle& h, const char* what) 
 
 void bind_measurement(py::module_& m) {
     const tm::BodyOptions defaults;
-    m.def("measure", &measure_arrays, py::arg("V"), py::arg("F"), py::arg("units") = py::none(),
-          py::arg("up") = defaults.up.to_string(), py::arg("front") = defaults.front.to_string(),
-          py::arg("pose") = std::string(tm::to_string(defaults.pose)),
-          py::arg("landmarks") = py::none(), py::arg("name") = defaults.name,
-          "Measures the body mesh (V, F) as `tapeline measure` does: landmarks, tape girths and "
-          "lengths along the skin. units: 'm', 'dm', 'cm' or 'mm' (None: inferred from the "
-          "height); up, front: '+X' .. '-Z'; pose: 'A' or 'T'; landmarks: an override dict in "
-          "the format of `tapeline measure --landmarks`. Returns the measurement JSON as a dict: "
-          "'measurements' (each with its ISO 8559-1 number, FreeSewing and Seamly2D names, value "
-          "in mm and the tape loop or path), 'missing', 'landmarks', 'frame', 'report', "
-          "'warnings'.");
+    m.def(
+        "measure", &measure_arrays, py::arg("V"), py::arg("F"), py::arg("units") = py::none(),
+        py::arg("up") = defaults.up.to_string(), py::arg("front") = defaults.front.to_string(),
+        py::arg("pose") = std::string(tm::to_string(defaults.pose)),
+        py::arg("landmarks") = py::none(), py::arg("name") = defaults.name,
+        py::arg("smooth_surface") = tm::MeasureOptions{}.smooth_surface,
+        "Measures the body mesh (V, F) as `tapeline measure` does: landmarks, tape girths and "
+        "lengths along the skin. units: 'm', 'dm', 'cm' or 'mm' (None: inferred from the "
+        "height); up, front: '+X' .. '-Z'; pose: 'A' or 'T'; landmarks: an override dict in "
+        "the format of `tapeline measure --landmarks`; smooth_surface=False takes the girths round "
+        "the flat facets (`tapeline measure --flat-facets`). Returns the measurement JSON as a "
+        "dict: "
+        "'measurements' (each with its ISO 8559-1 number, FreeSewing and Seamly2D names, value "
+        "in mm and the tape loop or path), 'missing', 'landmarks', 'frame', 'report', "
+        "'warnings'.");
 }
 
 }  // namespace tapeline::python

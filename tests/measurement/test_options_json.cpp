@@ -37,7 +37,7 @@ TEST(MeasurementJson, BodyOptions) {
 TEST(MeasurementJson, MeasureOptions) {
     const MeasureOptions o;
     const Fields f = {FIELD(o, scan_step), FIELD(o, level_tolerance),
-                      FIELD(o, max_neck_tilt_degrees)};
+                      FIELD(o, max_neck_tilt_degrees), FIELD(o, smooth_surface)};
     EXPECT_EQ(tapeline::test::field_count<MeasureOptions>(), f.size());
     expect_fields(json(o), f, "MeasureOptions");
     EXPECT_EQ(json(o)["level_tolerance"], 0.1);
@@ -47,17 +47,11 @@ TEST(MeasurementJson, MeasureReport) {
     MeasureReport r;
     r.sections = 12;
     r.warnings = {"neck not found"};
-    const Fields f = {FIELD(r, vertices),
-                      FIELD(r, faces),
-                      FIELD(r, components),
-                      FIELD(r, sections),
-                      FIELD(r, frame_seconds),
-                      FIELD(r, landmark_seconds),
-                      FIELD(r, girth_seconds),
-                      FIELD(r, landmarks_found),
-                      FIELD(r, landmarks_missing),
-                      FIELD(r, warnings),
-                      FIELD(r, holes)};
+    const Fields f = {
+        FIELD(r, vertices),          FIELD(r, faces),          FIELD(r, components),
+        FIELD(r, sections),          FIELD(r, smooth_surface), FIELD(r, frame_seconds),
+        FIELD(r, landmark_seconds),  FIELD(r, girth_seconds),  FIELD(r, landmarks_found),
+        FIELD(r, landmarks_missing), FIELD(r, warnings),       FIELD(r, holes)};
     EXPECT_EQ(tapeline::test::field_count<MeasureReport>(), f.size());
     expect_fields(json(r), f, "MeasureReport");
     EXPECT_EQ(json(r)["warnings"][0], "neck not found");

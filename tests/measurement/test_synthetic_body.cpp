@@ -123,6 +123,49 @@ TEST_P(SyntheticBodyTest, GirthsMatchTheEllipsePerimetersAtTheConstructionsLevel
     }
     EXPECT_NEAR(r.measurements.value("stature").value(), SyntheticBody::kHeight, 1e-9);
     EXPECT_EQ(r.measurements.missing.size(), 0u);
+    // The underbust rule itself, apart from where the bust points were found (their own test
+    // holds them to a ring and a scan step): the truth at the measured bust points' level, within
+    // the polygon's bound and what one scan step of level changes.
+    const double bust_y =
+        0.5 * (r.landmarks.point("bust_left")->at(1) + r.landmarks.point("bust_right")->at(1));
+    const double y = synthetic_underbust_level(body, bust_y);
+    const double truth = body.torso_girth(y), step = SyntheticBody::kHeight / 400;
+    const double n = GetParam().options.around;
+    const double tol = 2 * truth * M_PI * M_PI / (6 * n * n) +
+                       std::max(std::abs(body.torso_girth(y + step) - truth),
+                                std::abs(body.torso_girth(y - step) - truth));
+    EXPECT_NEAR(r.measurements.value("underbust_girth").value(), truth, tol)
+        << "bust points at " << bust_y;
+}
+
+// The girths round the smooth surface against those round the flat facets (--flat-facets), both
+// against the closed form, on the coarse body: at every girth whose level is an extremum of the
+// construction (not a landmark's rule), the flat tape is the inscribed polygon, short by about
+// P·π²/(6n²), and the smooth one must close at least three quarters of that gap.
+TEST(SyntheticBody, GirthsRoundTheSmoothSurfaceCloseThePolygonsShortfall) {
+    const SyntheticBodyOptions coarse{40, 10, 40};
+    const SyntheticBody body(coarse);
+    MeasureOptions flat_facets;
+    flat_facets.smooth_surface = false;
+    const Result smooth = measure_synthetic(coarse);
+    const Result flat = measure_synthetic(coarse, {}, "", flat_facets);
+    EXPECT_TRUE(smooth.report.smooth_surface);
+    EXPECT_FALSE(flat.report.smooth_surface);
+    std::size_t checked = 0;
+    for (const auto& c : synthetic_girth_truth(body)) {
+        if (c.from_landmarks) {
+            continue;
+        }
+        const double shortfall = c.value * M_PI * M_PI / (6.0 * coarse.around * coarse.around);
+        const double es = smooth.measurements.value(c.name).value() - c.value;
+        const double ef = flat.measurements.value(c.name).value() - c.value;
+        std::printf("  %-22s shortfall %.2f  flat %+.3f  smooth %+.3f\n", c.name.c_str(), shortfall,
+                    ef, es);
+        EXPECT_LT(ef, 0.05) << c.name;  // inscribed: never longer (0.05: the level's tolerance)
+        EXPECT_LE(std::abs(es), 0.25 * shortfall + 0.05) << c.name;
+        ++checked;
+    }
+    EXPECT_EQ(checked, 5u + 2 * 5u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Resolutions, SyntheticBodyTest, ::testing::ValuesIn(kResolutions),

@@ -70,7 +70,7 @@ Result measure_mesh(const std::vector<Vec3>& points, const Triangles& triangles,
 }
 
 Result measure_synthetic(const SyntheticBodyOptions& synthetic, const BodyOptions& options,
-                         const std::string& overrides) {
+                         const std::string& overrides, const MeasureOptions& measure) {
     const meas::SyntheticBody body(synthetic);
     BodyOptions o = options;
     if (!o.unit) {
@@ -78,7 +78,7 @@ Result measure_synthetic(const SyntheticBodyOptions& synthetic, const BodyOption
     }
     const auto t0 = std::chrono::steady_clock::now();
     const meas::Body b = meas::make_body(body.points(), body.triangles(), o);
-    auto m = meas::measure_body(b, {}, overrides_from(overrides));
+    auto m = meas::measure_body(b, measure, overrides_from(overrides));
     return to_result(std::move(m),
                      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }

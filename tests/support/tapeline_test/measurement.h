@@ -94,7 +94,7 @@ Result measure_mesh(const std::vector<Vec3>& points, const Triangles& triangles,
 
 /// The synthetic body measured through the plain make_body overload.
 Result measure_synthetic(const SyntheticBodyOptions& synthetic, const BodyOptions& options = {},
-                         const std::string& overrides = "");
+                         const std::string& overrides = "", const MeasureOptions& measure = {});
 
 /// One plane section of the synthetic body by our cut and by CGAL::Polygon_mesh_slicer.
 struct SliceComparison {

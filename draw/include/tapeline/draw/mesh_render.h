@@ -20,6 +20,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/phong.h>
 #include <tapeline/core/vec2.h>
 #include <tapeline/core/vec3.h>
 #include <tapeline/draw/canvas.h>
@@ -165,26 +166,8 @@ inline void check_triangles(std::size_t points, const MeshTriangles& tris,
     }
 }
 
-/// Area-weighted vertex normals (zero for a vertex on no face of positive area).
-inline std::vector<Vec3> vertex_normals(const std::vector<Vec3>& pts, const MeshTriangles& tris) {
-    std::vector<Vec3> n(pts.size(), Vec3{0, 0, 0});
-    for (const auto& t : tris) {
-        const Vec3 &a = pts[t[0]], &b = pts[t[1]], &c = pts[t[2]];
-        const Vec3 e1{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-        const Vec3 e2{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-        const Vec3 f{e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                     e1[0] * e2[1] - e1[1] * e2[0]};  // area-weighted
-        for (std::uint32_t v : t) {
-            for (int k = 0; k < 3; ++k) {
-                n[v][k] += f[k];
-            }
-        }
-    }
-    for (auto& v : n) {
-        v = internal::unit(v);
-    }
-    return n;
-}
+/// Area-weighted vertex normals (tapeline/core/phong.h).
+using tapeline::vertex_normals;
 
 /// The mesh z-buffered and shaded in `view` over the view-local box width_mm × height_mm at
 /// `pixels_per_mm` (see the file comment). `normals`: one per point (vertex_normals). Throws

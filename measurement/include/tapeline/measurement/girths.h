@@ -31,6 +31,9 @@ public:
                   CutWorkspace& ws)
         : m_(body.mesh), L_(landmarks), options_(options), ws_(ws) {
         height_ = m_.max_y - m_.min_y;
+        if (options_.smooth_surface) {
+            normals_ = vertex_normals(m_.points, m_.triangles);
+        }
     }
 
     MeasurementSet run() {
@@ -54,12 +57,18 @@ private:
         std::vector<Vec3> loop;
         Plane plane;
         bool crosses_filled = false;
+        Vec3 seed{0, 0, 0};   // the point tape() located the section by
+        bool cut = false;     // made by tape(): record() takes it again on the smooth surface
+        bool smooth = false;  // taken on the smooth surface
     };
 
     const BodyMesh& m_;
     const LandmarkSet& L_;
     MeasureOptions options_;
     CutWorkspace& ws_;
+    std::vector<Vec3> normals_;  // vertex normals, for the smooth surface (phong.h)
+    /// Points per crossed face on the smooth surface: 4 leave a 20 mm chord's sagitta 1/16.
+    static constexpr int kSmoothSamples = 4;
     double height_ = 0;
     MeasurementSet out_;
     static constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -79,24 +88,36 @@ private:
     Vec3 axis_pt(const std::string& n) const { return L_.find(n)->axis_point; }
 
     /// Tape of the section containing (or nearest to) the seed; +inf perimeter when there is no
-    /// section within 5% of the height of the seed.
-    Tape tape(const Plane& plane, const Vec3& seed) {
+    /// section within 5% of the height of the seed. The section is found on the flat facets;
+    /// with `smooth` (and MeasureOptions::smooth_surface) its tape goes round the smooth surface
+    /// (smooth_points()). Searches compare flat tapes; record() takes the one it keeps again.
+    Tape tape(const Plane& plane, const Vec3& seed, bool smooth = false) {
         Tape t;
         t.plane = plane;
-        const PlaneSection ps = section(m_, plane, ws_);
+        t.seed = seed;
+        t.cut = true;
+        PlaneSection ps = section(m_, plane, ws_);
         double d = 0;
         const int s = ps.locate(plane.to2(seed), &d);
         if (s < 0 || d > 0.05 * height_) {
             return t;
         }
-        t.perimeter = ps.sections[static_cast<std::size_t>(s)].perimeter;
-        t.area = ps.sections[static_cast<std::size_t>(s)].area;
+        auto& sec = ps.sections[static_cast<std::size_t>(s)];
+        if (smooth && options_.smooth_surface) {
+            compute_tape(smooth_points(m_, normals_, ps, sec, kSmoothSamples), sec);
+            t.smooth = true;
+        }
+        t.perimeter = sec.perimeter;
+        t.area = sec.area;
         t.loop = ps.tape(static_cast<std::size_t>(s));
-        t.crosses_filled = ps.sections[static_cast<std::size_t>(s)].crosses_filled;
+        t.crosses_filled = sec.crosses_filled;
         return t;
     }
 
-    void record(const std::string& name, const Tape& t, const std::vector<std::string>& deps) {
+    void record(const std::string& name, Tape t, const std::vector<std::string>& deps) {
+        if (std::isfinite(t.perimeter) && t.cut && !t.smooth && options_.smooth_surface) {
+            t = tape(t.plane, t.seed, true);
+        }
         if (!std::isfinite(t.perimeter)) {
             out_.add_missing(name, name + ": no body section around the expected point");
             return;
@@ -289,7 +310,7 @@ private:
             const Vec3& apex = h == 0 ? cv : fn;
             const Vec3 nn = normalized(cross(sub(r, l), sub(apex, l)));
             const Vec3 seed = mul(add(add(l, r), apex), 1.0 / 3.0);
-            const Tape half = tape(Plane::make(seed, nn, {1, 0, 0}), seed);
+            const Tape half = tape(Plane::make(seed, nn, {1, 0, 0}), seed, true);
             std::vector<Vec3>& arc = h == 0 ? back : front;
             len += std::isfinite(half.perimeter) ? half_tape(half, l, r, apex, arc) : kInf;
             t.crosses_filled = t.crosses_filled || half.crosses_filled;

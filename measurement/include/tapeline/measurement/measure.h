@@ -73,6 +73,7 @@ inline BodyMeasurements measure_body(const Body& body, const MeasureOptions& opt
     out.report.landmark_seconds = std::chrono::duration<double>(t1 - t0).count();
     out.report.girth_seconds = std::chrono::duration<double>(t2 - t1).count();
     out.report.sections = lr.sections + cuts;
+    out.report.smooth_surface = options.smooth_surface;
     out.report.warnings = lr.warnings;
     out.report.landmarks_found = out.landmarks.available_count();
     out.report.landmarks_missing = out.landmarks.landmarks.size() - out.report.landmarks_found;

@@ -137,6 +137,7 @@ inline nlohmann::ordered_json body_measurements_json(
                    {"faces", report.faces},
                    {"components", report.components},
                    {"sections", report.sections},
+                   {"smooth_surface", report.smooth_surface},
                    {"landmarks_found", report.landmarks_found},
                    {"landmarks_missing", report.landmarks_missing},
                    {"warnings", report.warnings},
@@ -169,6 +170,7 @@ inline void to_json(nlohmann::json& j, const MeasureOptions& o) {
     j["scan_step"] = o.scan_step;
     j["level_tolerance"] = o.level_tolerance;
     j["max_neck_tilt_degrees"] = o.max_neck_tilt_degrees;
+    j["smooth_surface"] = o.smooth_surface;
 }
 
 inline void to_json(nlohmann::json& j, const BodyHole& h) {
@@ -189,6 +191,7 @@ inline void to_json(nlohmann::json& j, const MeasureReport& r) {
     j["faces"] = r.faces;
     j["components"] = r.components;
     j["sections"] = r.sections;
+    j["smooth_surface"] = r.smooth_surface;
     j["frame_seconds"] = r.frame_seconds;
     j["landmark_seconds"] = r.landmark_seconds;
     j["girth_seconds"] = r.girth_seconds;

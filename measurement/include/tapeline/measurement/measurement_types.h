@@ -254,6 +254,11 @@ struct MeasureOptions {
     /// The neck girth plane may tilt forward or backward by up to this (the neck leans forward;
     /// ISO takes the girth perpendicular to the neck's axis).
     double max_neck_tilt_degrees = 30;
+    /// Girths go round the smooth surface the mesh's vertices and normals stand for (Phong
+    /// tessellation, tapeline/core/phong.h), so that a coarse mesh of a body measures as a fine
+    /// one does; false: round its flat facets, whose chords cut inside a convex part by their
+    /// sagitta (a wrist meshed with 20 mm edges measures about 4 mm short).
+    bool smooth_surface = true;
 };
 
 /// What one measuring run did. Times are wall-clock seconds.
@@ -263,6 +268,7 @@ struct MeasureReport {
     std::size_t vertices = 0, faces = 0, components = 0;
     ///@}
     std::size_t sections = 0;     ///< plane sections cut (scan, refinements, girths)
+    bool smooth_surface = true;   ///< MeasureOptions::smooth_surface the girths were taken with
     double frame_seconds = 0;     ///< mesh to canonical frame and adjacency
     double landmark_seconds = 0;  ///< scan and landmark search
     double girth_seconds = 0;     ///< girth levels, sections and hulls

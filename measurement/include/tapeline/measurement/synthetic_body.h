@@ -337,6 +337,30 @@ private:
     }
 };
 
+/// The underbust rule (girths.h) on the synthetic body with its bust points at height `bust_y`:
+/// on the front profile at the bust point's x (0.1 of the half-width), the level between the
+/// waist and the bust deepest behind the chord from the bust point to the waist's front; with no
+/// level 0.2 % of the height behind it, 2.5 % of the height under the bust points.
+inline double synthetic_underbust_level(const SyntheticBody& body, double bust_y) {
+    using B = SyntheticBody;
+    const double bx = 0.1 * body.torso_half_width(B::kBust);
+    auto front = [&](double y) {
+        const double u = bx / body.torso_half_width(y);
+        return body.torso_depth(y) * std::sqrt(1 - u * u);
+    };
+    const double y1 = bust_y, y0 = B::kWaist, z1 = front(y1), z0 = front(y0);
+    const double chord = std::hypot(y0 - y1, z0 - z1);
+    double deepest = -INFINITY, level = y1;
+    for (double y = y1; y >= y0; y -= 0.01) {
+        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1)) / chord;
+        if (behind > deepest) {
+            deepest = behind;
+            level = y;
+        }
+    }
+    return deepest < 0.002 * B::kHeight ? y1 - 0.025 * B::kHeight : level;
+}
+
 /// One girth's exact value on the synthetic body, and how far a measurement of it may be off.
 struct SyntheticTruth {
     std::string name;  ///< measurement name (measurement_types.h)
@@ -344,7 +368,8 @@ struct SyntheticTruth {
     double value = 0;  ///< the perimeter of the analytic section there, mm
     /// What the mesh resolves: twice the polygon's shortfall P·π²/(6n²) (n vertices around),
     /// plus, where the level comes from landmarks (`from_landmarks`), what one scan step of level
-    /// changes the truth.
+    /// changes the truth (the underbust: what moving the bust points a ring and a scan step up or
+    /// down does to its level's girth).
     double tolerance = 0;
     bool from_landmarks = false;  ///< the level follows a rule from landmarks, not an extremum
 };
@@ -378,26 +403,7 @@ inline std::vector<SyntheticTruth> synthetic_girth_truth(const SyntheticBody& bo
     const std::function<double(double)> head = [&](double y) { return body.head_girth(y); };
     const std::function<double(double)> arm = [&](double t) { return body.arm_girth(t); };
 
-    // Underbust: on the front profile at the bust point's x (0.1 of the half-width), the level
-    // between waist and bust deepest behind the chord from the bust point to the waist's front.
-    const double bx = 0.1 * body.torso_half_width(B::kBust);
-    auto front = [&](double y) {
-        const double u = bx / body.torso_half_width(y);
-        return body.torso_depth(y) * std::sqrt(1 - u * u);
-    };
-    const double y1 = B::kBust, y0 = B::kWaist, z1 = front(y1), z0 = front(y0);
-    const double chord = std::hypot(y0 - y1, z0 - z1);
-    double deepest = -INFINITY, underbust = y1;
-    for (double y = y1; y >= y0; y -= 0.01) {
-        const double behind = -((y - y1) * (z0 - z1) - (front(y) - z1) * (y0 - y1)) / chord;
-        if (behind > deepest) {
-            deepest = behind;
-            underbust = y;
-        }
-    }
-    if (deepest < 0.002 * B::kHeight) {
-        underbust = y1 - 0.025 * B::kHeight;
-    }
+    const double underbust = synthetic_underbust_level(body, B::kBust);
 
     const double armpit = body.armpit_height();
     add("head_girth", head, B::kHead, false);
@@ -406,6 +412,15 @@ inline std::vector<SyntheticTruth> synthetic_girth_truth(const SyntheticBody& bo
     add("bust_girth", torso, B::kBust, false);
     add("high_bust_girth", torso, armpit - 0.005 * B::kHeight, true);
     add("underbust_girth", torso, underbust, true);
+    // The underbust's level follows the bust points', which the landmark search places within a
+    // ring and a scan step of the bust's level (the rings are the bust point's vertex choices).
+    for (double dy : {-1.0, 1.0}) {
+        const double moved =
+            synthetic_underbust_level(body, B::kBust + dy * (body.options().ring_step + step));
+        out.back().tolerance = std::max(out.back().tolerance,
+                                        2 * out.back().value * M_PI * M_PI / (6 * n * n) +
+                                            std::abs(body.torso_girth(moved) - out.back().value));
+    }
     add("waist_girth", torso, B::kWaist, false);
     add("high_hip_girth", torso, 0.5 * (B::kWaist + B::kHip), true);
     add("hip_girth", torso, B::kHip, false);

@@ -28,6 +28,7 @@
 #pragma once
 
 #include <tapeline/core/errors.h>
+#include <tapeline/core/phong.h>
 #include <tapeline/draw/mesh_render.h>
 #include <tapeline/garment/garment_types.h>
 
@@ -76,18 +77,7 @@ inline constexpr double kPieceGap = 1e7;
 /// comment): Phong tessellation with shape factor 1/2 over the vertex normals `n`.
 inline Vec3 smooth_coarse_point(const std::vector<Vec3>& x, const garment::Tri& t,
                                 const std::vector<Vec3>& n, const std::array<double, 3>& b) {
-    Vec3 p{0, 0, 0};
-    for (int i = 0; i < 3; ++i) {
-        p = vec3::add(p, vec3::scale(x[t[std::size_t(i)]], b[std::size_t(i)]));
-    }
-    Vec3 q{0, 0, 0};
-    for (int i = 0; i < 3; ++i) {
-        const Vec3& xi = x[t[std::size_t(i)]];
-        const Vec3& ni = n[t[std::size_t(i)]];
-        const Vec3 proj = vec3::sub(p, vec3::scale(ni, vec3::dot(vec3::sub(p, xi), ni)));
-        q = vec3::add(q, vec3::scale(proj, b[std::size_t(i)]));
-    }
-    return vec3::scale(vec3::add(p, q), 0.5);
+    return phong_point(x, t, n, b, 0.5);
 }
 
 /// The interpolated coarse normal at barycentric `b` of triangle `t` (unit; zero when the

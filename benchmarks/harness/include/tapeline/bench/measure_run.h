@@ -26,11 +26,11 @@ struct MeasureRun {
     double length_seconds = 0;  ///< measure_skin_lengths (0 without them)
 };
 
-/// make_body(mesh, options), measure_body with `overrides`, and measure_skin_lengths when
-/// `skin_lengths`; throws as those do.
+/// make_body(mesh, options), measure_body with `measure` and `overrides`, and
+/// measure_skin_lengths when `skin_lengths`; throws as those do.
 MeasureRun measure_mesh(const Mesh& mesh, const measurement::BodyOptions& options,
                         const measurement::LandmarkOverrides& overrides = {},
-                        bool skin_lengths = true);
+                        bool skin_lengths = true, const measurement::MeasureOptions& measure = {});
 
 /// The measurement JSON `tapeline measure --out` writes: measurement::body_measurements_json of
 /// `run` for `body`, with the stage times under "timings_seconds" (`load_seconds`: reading the
