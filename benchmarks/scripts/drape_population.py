@@ -9,11 +9,14 @@ an earlier run's --json file, without running anything.
 usage: drape_population.py TAPELINE DATA_DIR OUT.md [--bodies bundled|dev|holdout|all]
                            [--patterns NAME ...] [--resolution MM] [--threads N] [--substeps N]
                            [--json OUT.jsonl] [--no-grading] [--no-waistband]
-                           [--waistband-sag MM]
+                           [--waistband-sag MM] [--grade-from-body BODY]
                            [--table-only RUN.jsonl]
   DATA_DIR: ../shared/data (bodies/, bodies/population/, patterns/)
   --bodies: a body file, or bundled: the bundled MakeHuman bodies (nine); dev: mh_pop_000 ... mh_pop_029;
   holdout: mh_pop_030 ... mh_pop_039 (kept out of development).
+  --grade-from-body BODY: grade the GarmentCode patterns to each body first too, from the body
+           they are laid on (tapeline dress --to-body --base-body BODY --base-units dm: bindings
+           found on that body); BODY is relative to DATA_DIR (e.g. bodies/mh_female_average.obj).
 """
 import argparse
 import json
@@ -82,6 +85,8 @@ def main():
                     help="tapeline dress --no-waistband: open waists not held")
     ap.add_argument("--no-grading", action="store_true",
                     help="dress the FreeSewing drafts as drafted (default: --to-body)")
+    ap.add_argument("--grade-from-body", metavar="BODY",
+                    help="grade the GarmentCode patterns from this body (DATA_DIR-relative)")
     ap.add_argument("--table-only", metavar="RUN_JSONL",
                     help="write the table from this earlier --json output; run nothing")
     a = ap.parse_args()
@@ -112,6 +117,9 @@ def main():
             cmd += ["--waistband-sag", "%g" % a.waistband_sag]
         if rel.startswith("patterns/freesewing/") and not a.no_grading:
             cmd += to_body_args(a.data)
+        if rel.startswith("patterns/garmentcode/") and a.grade_from_body:
+            cmd += ["--to-body", "--base-body", os.path.join(a.data, a.grade_from_body),
+                    "--base-units", "dm"]
         t0 = time.time()
         p = subprocess.run(cmd, capture_output=True, text=True)
         wall = time.time() - t0
@@ -159,7 +167,9 @@ def write_table(rows, a):
                  (" --no-relax" if a.no_relax else "") +
                  (" --no-waistband" if getattr(a, "no_waistband", False) else "") +
                  (" --waistband-sag %g" % a.waistband_sag
-                  if getattr(a, "waistband_sag", None) is not None else "")), "",
+                  if getattr(a, "waistband_sag", None) is not None else "") +
+                 (" --grade-from-body %s" % a.grade_from_body
+                  if getattr(a, "grade_from_body", None) else "")), "",
              "Success: %d of %d drapes (%.0f %%); median wall time of the drapes that ran: %s s." %
              (len(ok), len(rows), 100.0 * len(ok) / max(len(rows), 1),
               "%.1f" % statistics.median([r["wall_seconds"] for r in ran]) if ran else "-"), "",
