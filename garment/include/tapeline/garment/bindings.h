@@ -148,6 +148,20 @@ inline std::vector<Crossing> outline_crossings(const pattern::Piece& piece, Regi
     return out;
 }
 
+/// The outermost crossings across the piece (least and greatest `s`) of the outline with the
+/// layout's level h = `y`: the span a girth or a length takes at that level. nullopt when the
+/// level crosses the outline fewer than twice.
+inline std::optional<std::pair<Crossing, Crossing>> outermost_crossings(
+    const pattern::Piece& piece, Region region, const LayoutHeights& heights, double y) {
+    const auto c = outline_crossings(piece, region, heights, y);
+    if (c.size() < 2) {
+        return std::nullopt;
+    }
+    const auto [lo, hi] = std::minmax_element(
+        c.begin(), c.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
+    return std::make_pair(*lo, *hi);
+}
+
 /// The layout height of point `p` of `piece` (a drafted piece's layout is relative to its
 /// outline's extent: the point is laid out with the outline's samples, `outline` when given,
 /// else sampled here every 0.25 mm).
@@ -477,24 +491,23 @@ inline void bind_trouser_legs(pattern::Pattern& base,
                 continue;
             }
             pattern::Piece& piece = base.pieces[i];
-            const auto c = outline_crossings(piece, regions[i], heights, *y);
-            if (c.size() < 2) {
+            const auto span = outermost_crossings(piece, regions[i], heights, *y);
+            if (!span) {
                 continue;
             }
-            const auto [lo, hi] = std::minmax_element(
-                c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
-            for (const Crossing* x : {&*lo, &*hi}) {
+            const auto& [lo, hi] = *span;
+            for (const Crossing* x : {&lo, &hi}) {
                 if (!closed.count({piece.name, x->edge}) && open.empty()) {
                     open = piece.name + " edge " + std::to_string(x->edge);
                 }
             }
             const std::string pa = "girth:" + ours + ":a", pb = "girth:" + ours + ":b";
-            piece.points[pa] = lo->p;
-            piece.points[pb] = hi->p;
+            piece.points[pa] = lo.p;
+            piece.points[pb] = hi.p;
             const double count =
                 lg.round_one_leg ? girth_count(piece, true)
                                  : girth_count(piece, false) * (paired.count(piece.name) ? 2 : 1);
-            garment += count * std::hypot(hi->p.x - lo->p.x, hi->p.y - lo->p.y);
+            garment += count * std::hypot(hi.p.x - lo.p.x, hi.p.y - lo.p.y);
             pieces += (pieces.empty() ? "" : ", ") + piece.name + times(count);
             b.features.push_back({piece.name, {}, pa, pb, count});
         }
@@ -551,13 +564,12 @@ inline void bind_trouser_legs(pattern::Pattern& base,
                 continue;
             }
             pattern::Piece& piece = base.pieces[i];
-            const auto c = outline_crossings(piece, regions[i], heights, *knee);
-            if (c.size() < 2) {
+            const auto span = outermost_crossings(piece, regions[i], heights, *knee);
+            if (!span) {
                 continue;
             }
-            const auto [lo, hi] = std::minmax_element(
-                c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
-            auto v = outline_crossings(piece, regions[i], heights, 0.5 * (lo->s + hi->s), true);
+            const auto& [lo, hi] = *span;
+            auto v = outline_crossings(piece, regions[i], heights, 0.5 * (lo.s + hi.s), true);
             if (v.size() < 2) {
                 continue;
             }
@@ -933,26 +945,25 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                 continue;
             }
             pattern::Piece& piece = base.pieces[i];
-            const auto c = internal::outline_crossings(piece, regions[i], heights, y);
-            if (c.size() < 2) {
+            const auto span = internal::outermost_crossings(piece, regions[i], heights, y);
+            if (!span) {
                 continue;
             }
-            const auto [lo, hi] = std::minmax_element(
-                c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
-            for (const internal::Crossing* x : {&*lo, &*hi}) {
+            const auto& [lo, hi] = *span;
+            for (const internal::Crossing* x : {&lo, &hi}) {
                 if (!closed_edges.count({piece.name, x->edge}) && open.empty()) {
                     open = "piece " + piece.name + " edge " + std::to_string(x->edge);
                 }
             }
             const std::string pa = "girth:" + name + ":a", pb = "girth:" + name + ":b";
-            piece.points[pa] = lo->p;
-            piece.points[pb] = hi->p;
+            piece.points[pa] = lo.p;
+            piece.points[pb] = hi.p;
             pattern::BoundFeature f;
             f.piece = piece.name;
             f.from_point = pa;
             f.to_point = pb;
             f.count = internal::girth_count(piece, arm);
-            garment += f.count * std::hypot(hi->p.x - lo->p.x, hi->p.y - lo->p.y);
+            garment += f.count * std::hypot(hi.p.x - lo.p.x, hi.p.y - lo.p.y);
             pieces += (pieces.empty() ? "" : ", ") + piece.name +
                       (f.count != 1 ? " ×" + std::to_string(int(f.count)) : "");
             b.features.push_back(std::move(f));
@@ -1246,19 +1257,18 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                 const PieceLayout& l = outline_layout[i];
                 s_c = l.s[std::min_element(l.h.begin(), l.h.end()) - l.h.begin()] + 0.01;
             } else {
-                const auto c = internal::outline_crossings(piece, regions[i], heights, *lower);
-                if (c.size() < 2) {
+                const auto span = internal::outermost_crossings(piece, regions[i], heights, *lower);
+                if (!span) {
                     continue;
                 }
-                const auto [lo, hi] = std::minmax_element(
-                    c.begin(), c.end(), [](const auto& a, const auto& b) { return a.s < b.s; });
-                if (hi->s - lo->s < 4) {
+                const auto& [lo, hi] = *span;
+                if (hi.s - lo.s < 4) {
                     continue;
                 }
                 if (rule.side) {
                     // Up the side seam the level crosses, from the level to the seam's top end
                     // (the bottom of the armhole).
-                    const internal::Crossing& x = std::abs(hi->s) >= std::abs(lo->s) ? *hi : *lo;
+                    const internal::Crossing& x = std::abs(hi.s) >= std::abs(lo.s) ? hi : lo;
                     const std::optional<pattern::Point2> top =
                         internal::seam_top(piece, regions[i], heights, x.edge, side_seams);
                     if (!top) {
@@ -1270,7 +1280,7 @@ inline BindingInference infer_girth_bindings(const measurement::Body& body,
                     add_length(piece, x.p, *top);
                     continue;
                 }
-                s_c = std::clamp(0.0, lo->s + 1, hi->s - 1);
+                s_c = std::clamp(0.0, lo.s + 1, hi.s - 1);
             }
             auto v = internal::outline_crossings(piece, regions[i], heights, s_c, true);
             std::sort(v.begin(), v.end(), [](const auto& a, const auto& b) { return a.h < b.h; });
