@@ -89,6 +89,35 @@ TEST(GarmentPlacement, ArmAxisFollowsTheUpperArmOfABentArm) {
 // The whole chain on the bundled body in the bundled GarmentCode shirt: the placement leaves no
 // cloth inside the body, the run ends without a solver failure, every seam is closable and the
 // welded garment's openings are its neck, hem and two cuffs.
+// Three triangles of a 2 × 1 strip over the vertices 0-1-2 (bottom) and 3-4-5 (top): (0, 1, 4),
+// (0, 4, 3), (1, 2, 5). A pair sewn shut inside one piece (as at a dart's tip) welds 1 to 4:
+// triangle (0, 1, 4) collapses and is left out; the weld class sits at its members' mean and the
+// kept triangles keep their pattern coordinates, grain and piece.
+TEST(Dress, WeldedGarmentLeavesOutTrianglesTheSeamsCollapse) {
+    tg::ClothModel c;
+    c.positions = {{0, 0, 0}, {10, 0, 0}, {20, 0, 0}, {0, 10, 0}, {10, 10, 0}, {20, 10, 0}};
+    c.triangles = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}};
+    c.rest_uv = {{tg::UV{0, 0}, tg::UV{10, 0}, tg::UV{10, 10}},
+                 {tg::UV{0, 0}, tg::UV{10, 10}, tg::UV{0, 10}},
+                 {tg::UV{10, 0}, tg::UV{20, 0}, tg::UV{20, 10}}};
+    c.grain = {tg::UV{0, 1}, tg::UV{1, 0}, tg::UV{0, -1}};
+    const std::vector<std::uint32_t> piece = {7, 8, 9};
+    const tg::Welding w = tg::weld_pairs(6, {{1, 4, 0, 0}});
+    const tg::GarmentMesh g = tg::internal::welded_garment(c, c.positions, w, piece);
+    ASSERT_EQ(g.positions.size(), 5u);
+    ASSERT_EQ(g.triangles.size(), 2u);
+    EXPECT_EQ(g.triangle_piece, (std::vector<std::uint32_t>{8, 9}));
+    EXPECT_EQ(g.grain[0], (tg::UV{1, 0}));
+    EXPECT_EQ(g.grain[1], (tg::UV{0, -1}));
+    EXPECT_EQ(g.uv[0][1], (tg::UV{10, 10}));
+    EXPECT_EQ(g.uv[1][1], (tg::UV{20, 0}));
+    for (const tg::Tri& t : g.triangles) {
+        EXPECT_TRUE(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+    }
+    EXPECT_EQ(g.positions[w.weld_map[0]], (tg::Vec3{0, 0, 0}));
+    EXPECT_EQ(g.positions[w.weld_map[4]], (tg::Vec3{10, 5, 0}));
+}
+
 TEST(Dress, ShirtOnTheBundledBody) {
     const MeasuredBody b = load_dm_body(bundled_path("bodies/mh_female_average.obj"));
     const tp::Pattern shirt =
@@ -141,6 +170,14 @@ TEST(Dress, ShirtOnTheBundledBody) {
         together += r.draped[s.a] == r.draped[s.b] ? 1 : 0;
     }
     EXPECT_GE(together, rep.pairs_welded_before_drape);
+    // The welded garment has no triangle two of whose corners the weld merged, and each kept
+    // triangle has its pattern coordinates and piece.
+    ASSERT_EQ(r.garment.uv.size(), r.garment.triangles.size());
+    ASSERT_EQ(r.garment.triangle_piece.size(), r.garment.triangles.size());
+    ASSERT_EQ(r.stretch.size(), r.garment.triangles.size());
+    for (const tg::Tri& t : r.garment.triangles) {
+        EXPECT_TRUE(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]);
+    }
     // At 20 mm the shirt passes every gate on this body (docs/garment.md): the drape leaves
     // fold-overs (cloth compressed under the arms), flattened before and after the static solve;
     // the quality report counts none left with its own exact test.

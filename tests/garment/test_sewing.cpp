@@ -280,6 +280,37 @@ TEST(GarmentQuality, CountsAndLocatesSelfIntersectionsByPieces) {
     EXPECT_TRUE(apart.self_crossings_by_pieces.empty());
 }
 
+// A seam pulled shut across a triangle welds two of its corners: the triangle collapses to a
+// segment. The crossing test never reports one: CGAL's segment–triangle test is undefined for it,
+// and compiled without its checks it reported an edge 2 mm from the collapsed triangle (0, 0, 1)
+// as crossing it (two such on a draped pencil dress failed its self-intersection gate). A
+// triangle of three distinct collinear corners crosses nothing either (before: both edges of
+// 8-9-10 that pass beside the line 5-7); real crossings beside them still count.
+TEST(GarmentQuality, CollapsedTrianglesCrossNothing) {
+    const auto body = capped_cylinder(v3(0, 0, -5000), 50, 100, 24, 4);
+    tg::GarmentMesh g;
+    g.positions = {
+        v3(0, 0, 200),    v3(10, 10, 210),                    // 0, 1: collapsed
+        v3(2, 8, 203),    v3(8, 2, 203),   v3(5, 5, 180),     // 2-4: 2 mm from its line
+        v3(0, 0, 100),    v3(10, 0, 100),  v3(20, 0, 100),    // 5-7: collinear
+        v3(10, -5, 95),   v3(10, 5, 95),   v3(10, 0, 105),    // 8-10: x = 10, round (10, 0, 100)
+        v3(-10, 0, -210), v3(30, 0, -210), v3(-10, 0, -170),  // 11-13: y = 0
+        v3(0, -5, -205),  v3(0, 5, -205),  v3(0, 5, -195)};   // 14-16: x = 0
+    g.triangles = {{0, 0, 1}, {2, 3, 4}, {5, 6, 7}, {8, 9, 10}, {11, 12, 13}, {14, 15, 16}};
+    g.uv.assign(g.triangles.size(), {tg::UV{0, 0}, tg::UV{1, 0}, tg::UV{0, 1}});
+    g.triangle_piece.assign(g.triangles.size(), 0);
+    // Counted: the collinear triangle's three edges on 8-10 (5-7 through (10, 0, 100), 5-6 and
+    // 6-7 touching it there); 14-15 through (0, 0, -205) and 14-16 through (0, 0, -200), both
+    // inside 11-13. Not counted: anything on the collapsed or the collinear triangle.
+    std::vector<std::size_t> crossed;
+    tg::internal::for_each_edge_triangle_crossing(
+        g.positions, g.triangles,
+        [&](std::uint32_t, std::uint32_t, std::size_t t) { crossed.push_back(t); });
+    EXPECT_EQ(crossed, (std::vector<std::size_t>{3, 3, 3, 4, 4}));
+    const auto q = tg::garment_quality(body.points, body.triangles, g, 0, 0);
+    EXPECT_EQ(q.self_intersections, 5u);
+}
+
 // Flat cloth is the common case of a drape (a back panel, a skirt) and the hard case for the
 // crossing test: every edge lies in the plane of its neighbours' triangles. A 60 × 60 grid of
 // 20 mm cells in a tilted plane far from the origin, and the same grid folded along a line into

@@ -107,6 +107,29 @@ inline ClothModel welded_cloth(const ClothModel& cloth, const Welding& w) {
     return m;
 }
 
+/// The garment of `cloth` at positions `x` (per cloth vertex) with the vertices of each weld
+/// class merged at their mean. A triangle two of whose corners the weld merges (a seam pulled
+/// shut across it, where two stitch pairs share a triangle's edge) is left out: it has no area,
+/// and kept it would be a degenerate face in the files written and in every check of the mesh.
+/// Pattern coordinates, grain and piece stay with each triangle kept.
+inline GarmentMesh welded_garment(const ClothModel& cloth, const std::vector<Vec3>& x,
+                                  const Welding& w, const std::vector<std::uint32_t>& tri_piece) {
+    GarmentMesh g;
+    g.positions = welded_positions(x, w);
+    for (std::size_t t = 0; t < cloth.triangles.size(); ++t) {
+        const Tri& c = cloth.triangles[t];
+        const Tri r{w.weld_map[c[0]], w.weld_map[c[1]], w.weld_map[c[2]]};
+        if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
+            continue;
+        }
+        g.triangles.push_back(r);
+        g.uv.push_back(cloth.rest_uv[t]);
+        g.grain.push_back(cloth.grain[t]);
+        g.triangle_piece.push_back(tri_piece[t]);
+    }
+    return g;
+}
+
 }  // namespace internal
 
 /// Dresses `body` (canonical mm, closed: make_body fills small holes) whose landmarks are
@@ -505,14 +528,7 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
     const Welding w =
         weld_pairs(out.draped.size(), placement_only ? std::vector<Stitch>{} : plan.pairs);
     GarmentMesh& g = out.garment;
-    g.positions = internal::welded_positions(out.draped, w);
-    for (std::size_t f = 0; f < cloth.triangles.size(); ++f) {
-        const Tri& t = cloth.triangles[f];
-        g.triangles.push_back({w.weld_map[t[0]], w.weld_map[t[1]], w.weld_map[t[2]]});
-    }
-    g.uv = cloth.rest_uv;
-    g.grain = cloth.grain;
-    g.triangle_piece = tri_piece;
+    g = internal::welded_garment(cloth, out.draped, w, tri_piece);
     for (const auto& p : pattern.pieces) {
         g.piece_names.push_back(p.name);
     }
