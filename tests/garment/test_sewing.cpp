@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <string>
 
 namespace tg = tapeline::garment;
@@ -133,6 +134,61 @@ TEST(GarmentStrings, PointsAlongAndSewingTargets) {
     const auto t1 = tg::sewing_targets(plan, 1.0, 0.0);
     EXPECT_NEAR(t1[0].target[1], 10, 1e-12);  // both at the middle, arc 20
     EXPECT_NEAR(t1[1].target[1], 10, 1e-12);
+}
+
+// A corner vertex sewn in two pairs is pulled to the mean of its two string points; where that
+// mean lies inside the body it is lifted out. A box 600 × 100 × 300 mm (x, y, z): one point 5 mm
+// off its side face (0, 0, 155), the other 5 mm over its top (0, 55, z2), z2 swept from 140 to
+// 60 mm. The mean (0, 27.5, (155 + z2)/2) lies inside, nearest the side while z2 > 100 and the
+// top after: lifted along the nearest skin's normal, frame by frame, the target jumps 39 mm at
+// z2 = 100. Given the state of the frames before, it moves with the mean instead: the same
+// targets up to the jump, then none moves more than 1 mm a step (the mean moves 0.5 mm), and
+// every one lies outside at least half the offset.
+TEST(GarmentStrings, CornerTargetsMoveWithTheirMeanWithoutJumps) {
+    tapeline_test::GarmentTriMesh box;
+    for (int k = 0; k < 8; ++k) {
+        box.points.push_back(v3(k & 1 ? 300 : -300, k & 2 ? 50 : -50, k & 4 ? 150 : -150));
+    }
+    box.triangles = {{0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                     {2, 6, 7}, {2, 7, 3}, {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}};
+    ASSERT_GT(tapeline_test::signed_volume(box), 0);
+    const tg::SignedDistanceGrid sdf(box.points, box.triangles);
+    const double offset = 5;
+    const auto string_to = [](const tg::Vec3& p) {  // a string whose middle is p
+        tg::StringPath s;
+        s.points = {tapeline::vec3::sub(p, v3(1, 0, 0)), tapeline::vec3::add(p, v3(1, 0, 0))};
+        s.arc = {0, 2};
+        return s;
+    };
+    tg::SewingTargetState state;
+    std::optional<tg::Vec3> last, last_alone;
+    double largest_move = 0, largest_move_alone = 0;
+    for (double z2 = 140; z2 >= 60; z2 -= 1) {
+        tg::SewingPlan plan;
+        plan.pairs = {{0, 1, 0, 0}, {0, 2, 0, 0}};
+        plan.strings = {string_to(v3(0, 0, 155)), string_to(v3(0, 55, z2))};
+        const auto alone = tg::sewing_targets(plan, 1.0, 0.0, &sdf, offset);
+        const auto kept = tg::sewing_targets(plan, 1.0, 0.0, &sdf, offset, &state);
+        ASSERT_EQ(kept.size(), 3u);
+        ASSERT_EQ(kept[0].vertex, 0u);
+        const tg::Vec3 t = kept[0].target, a = alone[0].target;
+        if (z2 > 100) {
+            EXPECT_EQ(t, a) << z2;
+        }
+        const double d = sdf.exact_signed_distance(t, nullptr);
+        EXPECT_GE(d, 0.5 * offset - 1e-9) << z2;
+        EXPECT_LE(d, offset + 1e-9) << z2;
+        if (last) {
+            largest_move =
+                std::max(largest_move, tapeline::vec3::norm(tapeline::vec3::sub(t, *last)));
+            largest_move_alone = std::max(
+                largest_move_alone, tapeline::vec3::norm(tapeline::vec3::sub(a, *last_alone)));
+        }
+        last = t;
+        last_alone = a;
+    }
+    EXPECT_GT(largest_move_alone, 35.0);  // the jump, frame by frame
+    EXPECT_LT(largest_move, 1.0);
 }
 
 // A capsule along z (radius 100 mm, its cylinder from z = −100 to 100, hemispheres beyond) with

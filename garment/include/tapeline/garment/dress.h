@@ -343,10 +343,11 @@ inline DressResult dress(const measurement::Body& body, const measurement::Landm
         // Each frame's targets against the last: a target that jumps (more than a stitch pull
         // moves in a frame) makes a hard pull, and is named when the sewing blows up.
         std::map<std::uint32_t, Vec3> previous;
+        SewingTargetState target_state;  // a lifted target moves with its mean (no jumps)
         for (std::size_t f = 0; f < n; ++f) {
             const double sigma = double(f + 1) / double(n);
-            const std::vector<Attachment> targets =
-                sewing_targets(plan, sigma, o.sewing.compliance, &sdf, o.sewing.string_offset_mm);
+            const std::vector<Attachment> targets = sewing_targets(
+                plan, sigma, o.sewing.compliance, &sdf, o.sewing.string_offset_mm, &target_state);
             double jump = 0;
             std::uint32_t jumper = 0;
             for (const Attachment& at : targets) {

@@ -215,17 +215,33 @@ inline void compute_strings(SewingPlan& plan, const std::vector<Vec3>& positions
     }
 }
 
+/// What sewing_targets() keeps from one frame to the next: each corner's mean of its string
+/// points and the target it was given.
+struct SewingTargetState {
+    std::map<std::uint32_t, Vec3> mean;
+    std::map<std::uint32_t, Vec3> target;
+};
+
 /// The pull targets at sewing fraction `sigma` ∈ [0, 1]: a towards arc σ·L/2, b towards
 /// arc L − σ·L/2 of its string. A vertex in several pairs (a corner where seams meet) gets one
 /// attachment, to the mean of its targets: two hard pulls to different points would fight. That
 /// mean lies inside the body when the strings run over different sides of a limb or the neck;
 /// given the `body`, a target closer to its skin than half `offset_mm` (the strings' offset) is
-/// lifted back out to `offset_mm` (by the exact distance: the grid's is a bound away from the
-/// skin).
+/// lifted back out to `offset_mm` along the normal of the skin nearest it (by the exact distance:
+/// the grid's is a bound away from the skin).
+///
+/// Given a `state` (the same one every frame), a lifted target moves with its mean: where the
+/// lift would take it farther from its last target than the mean moved plus `offset_mm` (the mean
+/// passed the middle of a limb, and the skin nearest it changed sides), it is the last target
+/// moved as the mean moved and put back at `offset_mm` from the skin nearest it. On a shirt's
+/// shoulder corner whose two strings ran over the front and the back of the shoulder, the nearest
+/// skin changed from the top of the shoulder to its side and the target jumped 64 mm in one frame:
+/// the sewing blew up.
 inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sigma,
                                               double compliance,
                                               const SignedDistanceGrid* body = nullptr,
-                                              double offset_mm = 0) {
+                                              double offset_mm = 0,
+                                              SewingTargetState* state = nullptr) {
     std::map<std::uint32_t, std::pair<Vec3, int>> sum;
     const auto add_target = [&](std::uint32_t v, const Vec3& p) {
         auto& e = sum[v];
@@ -238,16 +254,31 @@ inline std::vector<Attachment> sewing_targets(const SewingPlan& plan, double sig
         add_target(plan.pairs[k].a, s.at(half));
         add_target(plan.pairs[k].b, s.at(s.length() - half));
     }
+    // To the offset along the normal of the nearest skin: always, or (lift) only when closer
+    // than half of it.
+    const auto to_offset = [&](const Vec3& p, bool only_below_half) {
+        Vec3 n;
+        const double d = body->exact_signed_distance(p, &n);
+        return d < 0.5 * offset_mm || !only_below_half ? vec3::add(p, vec3::scale(n, offset_mm - d))
+                                                       : p;
+    };
     std::vector<Attachment> out;
     out.reserve(sum.size());
     for (const auto& [v, e] : sum) {
-        Vec3 target = vec3::scale(e.first, 1.0 / e.second);
-        if (body) {
-            Vec3 n;
-            const double d = body->exact_signed_distance(target, &n);
-            if (d < 0.5 * offset_mm) {
-                target = vec3::add(target, vec3::scale(n, offset_mm - d));
+        const Vec3 mean = vec3::scale(e.first, 1.0 / e.second);
+        Vec3 target = body ? to_offset(mean, true) : mean;
+        if (body && state) {
+            const auto last_mean = state->mean.find(v);
+            const auto last_target = state->target.find(v);
+            if (last_mean != state->mean.end() && last_target != state->target.end()) {
+                const Vec3 moved = vec3::sub(mean, last_mean->second);
+                if (vec3::norm(vec3::sub(target, last_target->second)) >
+                    vec3::norm(moved) + offset_mm) {
+                    target = to_offset(vec3::add(last_target->second, moved), false);
+                }
             }
+            state->mean[v] = mean;
+            state->target[v] = target;
         }
         out.push_back({v, target, compliance});
     }
