@@ -89,17 +89,30 @@ inline std::vector<Vec3> welded_positions(const std::vector<Vec3>& x, const Weld
     return out;
 }
 
-/// The cloth with the vertices of each weld class merged at their mean; triangles that collapse
-/// (two corners in one class) are left out. Rest shapes and grain stay per triangle.
+/// Each triangle of `triangles` with its corners' weld classes, those whose corners stay in three
+/// classes only: a triangle two of whose corners the weld merges (a seam pulled shut across it,
+/// where two stitch pairs share a triangle's edge) has no area, and kept it would be a degenerate
+/// face in the solver, in the files written and in every check of the mesh.
+inline std::vector<std::pair<std::size_t, Tri>> welded_triangles(const std::vector<Tri>& triangles,
+                                                                 const Welding& w) {
+    std::vector<std::pair<std::size_t, Tri>> out;
+    out.reserve(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+        const Tri& c = triangles[t];
+        const Tri r{w.weld_map[c[0]], w.weld_map[c[1]], w.weld_map[c[2]]};
+        if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) {
+            out.push_back({t, r});
+        }
+    }
+    return out;
+}
+
+/// The cloth with the vertices of each weld class merged at their mean, its collapsed triangles
+/// left out (welded_triangles). Rest shapes and grain stay per triangle.
 inline ClothModel welded_cloth(const ClothModel& cloth, const Welding& w) {
     ClothModel m;
     m.positions = welded_positions(cloth.positions, w);
-    for (std::size_t t = 0; t < cloth.triangles.size(); ++t) {
-        const Tri& c = cloth.triangles[t];
-        const Tri r{w.weld_map[c[0]], w.weld_map[c[1]], w.weld_map[c[2]]};
-        if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
-            continue;
-        }
+    for (const auto& [t, r] : welded_triangles(cloth.triangles, w)) {
         m.triangles.push_back(r);
         m.rest_uv.push_back(cloth.rest_uv[t]);
         m.grain.push_back(cloth.grain[t]);
@@ -108,20 +121,13 @@ inline ClothModel welded_cloth(const ClothModel& cloth, const Welding& w) {
 }
 
 /// The garment of `cloth` at positions `x` (per cloth vertex) with the vertices of each weld
-/// class merged at their mean. A triangle two of whose corners the weld merges (a seam pulled
-/// shut across it, where two stitch pairs share a triangle's edge) is left out: it has no area,
-/// and kept it would be a degenerate face in the files written and in every check of the mesh.
-/// Pattern coordinates, grain and piece stay with each triangle kept.
+/// class merged at their mean, its collapsed triangles left out (welded_triangles). Pattern
+/// coordinates, grain and piece stay with each triangle kept.
 inline GarmentMesh welded_garment(const ClothModel& cloth, const std::vector<Vec3>& x,
                                   const Welding& w, const std::vector<std::uint32_t>& tri_piece) {
     GarmentMesh g;
     g.positions = welded_positions(x, w);
-    for (std::size_t t = 0; t < cloth.triangles.size(); ++t) {
-        const Tri& c = cloth.triangles[t];
-        const Tri r{w.weld_map[c[0]], w.weld_map[c[1]], w.weld_map[c[2]]};
-        if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
-            continue;
-        }
+    for (const auto& [t, r] : welded_triangles(cloth.triangles, w)) {
         g.triangles.push_back(r);
         g.uv.push_back(cloth.rest_uv[t]);
         g.grain.push_back(cloth.grain[t]);
